@@ -1,0 +1,84 @@
+!> Status codes returned by every library routine, with their words and messages.
+!!
+!! The library never prints or stops: each routine returns one of these codes and
+!! leaves its outputs defined (zero, or the best value it has). `status_word` gives the
+!! short word used in the CSV `status` column, `status_message` a sentence for humans.
+module brachistochrone_status
+    implicit none
+    private
+
+    public :: status_ok, status_inaccessible, status_rho_out_of_range, &
+              status_psi_out_of_range, status_not_finite, status_no_convergence, &
+              status_outside_domain, status_invalid_argument, status_bad_estimates
+    public :: status_word, status_message
+
+    !> Success.
+    integer, parameter :: status_ok = 0
+    !> Endpoint in the sector of inaccessibility (psi >= 2 pi/3): no brachistochrone.
+    integer, parameter :: status_inaccessible = 1
+    !> Endpoint radius outside 0 < rho <= 1.
+    integer, parameter :: status_rho_out_of_range = 2
+    !> Endpoint angle outside 0 <= psi <= pi.
+    integer, parameter :: status_psi_out_of_range = 3
+    !> An input was NaN or infinite.
+    integer, parameter :: status_not_finite = 4
+    !> An iteration did not converge within its step limit.
+    integer, parameter :: status_no_convergence = 5
+    !> The paper's secant iteration stepped outside 0 < R <= rho.
+    integer, parameter :: status_outside_domain = 6
+    !> A routine was called with arguments outside its domain (for example r < R).
+    integer, parameter :: status_invalid_argument = 7
+    !> Initial estimates for the secant method are unusable (equal, or outside (0, rho]).
+    integer, parameter :: status_bad_estimates = 8
+
+contains
+
+    !> Short lowercase word for a status code, as written in the CSV `status` column.
+    pure function status_word(code) result(word)
+        integer, intent(in) :: code !! status code
+        character(len=:), allocatable :: word
+        select case (code)
+        case (status_ok);               word = 'ok'
+        case (status_inaccessible);     word = 'inaccessible'
+        case (status_rho_out_of_range); word = 'rho_out_of_range'
+        case (status_psi_out_of_range); word = 'psi_out_of_range'
+        case (status_not_finite);       word = 'not_finite'
+        case (status_no_convergence);   word = 'no_convergence'
+        case (status_outside_domain);   word = 'secant_left_domain'
+        case (status_invalid_argument); word = 'invalid_argument'
+        case (status_bad_estimates);    word = 'bad_estimates'
+        case default;                   word = 'unknown_status'
+        end select
+    end function status_word
+
+    !> One-sentence explanation of a status code, for error messages.
+    pure function status_message(code) result(message)
+        integer, intent(in) :: code !! status code
+        character(len=:), allocatable :: message
+        select case (code)
+        case (status_ok)
+            message = 'solved'
+        case (status_inaccessible)
+            message = 'endpoint lies in the sector of inaccessibility (psi >= 2*pi/3): no '// &
+                      'brachistochrone exists; t is the greatest lower bound kappa(rho)'
+        case (status_rho_out_of_range)
+            message = 'rho must satisfy 0 < rho <= 1 (the start A is at radius 1)'
+        case (status_psi_out_of_range)
+            message = 'psi must satisfy 0 <= psi <= pi (use 2*pi - psi by symmetry)'
+        case (status_not_finite)
+            message = 'an input value is NaN or infinite'
+        case (status_no_convergence)
+            message = 'the iteration did not converge within its step limit'
+        case (status_outside_domain)
+            message = 'the secant iteration stepped outside 0 < R <= rho; give other r0, r1 '// &
+                      'or leave them out to use the bracketing solver'
+        case (status_invalid_argument)
+            message = 'arguments outside the domain 0 < R <= r <= 1, R < 1'
+        case (status_bad_estimates)
+            message = 'initial estimates r0, r1 must differ and lie in 0 < R <= rho'
+        case default
+            message = 'unknown status'
+        end select
+    end function status_message
+
+end module brachistochrone_status

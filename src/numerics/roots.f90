@@ -1,0 +1,158 @@
+!> Root finders for a scalar function given as an extensible derived type.
+!!
+!! - `newton_bracketed`: Newton's method kept inside a bracket [lo, hi] on which f
+!!   changes sign; a step that leaves the bracket, or that does not at least halve |f|'s
+!!   predicted progress, is replaced by bisection (after Numerical Recipes' rtsafe). It
+!!   stops when the predicted error of the last iterate is below the tolerance: with
+!!   quadratic convergence the error after a step dx_k is about |dx_k|^2 |dx_k| /
+!!   |dx_{k-1}|^2, which saves the confirming evaluation a plain |dx| test needs.
+!! - `secant`: the paper's secant method (Tee 1998, sec. 5.1) with its stopping rule
+!!   |x_n - x_(n-1)| < tol and a count of the steps, for reproducing Table 1.
+module roots
+    use brachistochrone_kinds, only: qp
+    use brachistochrone_status, only: status_ok, status_no_convergence, &
+                                      status_outside_domain, status_bad_estimates
+    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+    implicit none
+    private
+
+    public :: root_function, newton_bracketed, secant
+
+    !> A scalar function f(x) with derivative; extend it to carry the problem's data.
+    type, abstract :: root_function
+    contains
+        procedure(evaluate_interface), deferred :: evaluate
+    end type root_function
+
+    abstract interface
+        !> f(x) and f'(x); status /= 0 where f is undefined at x.
+        pure subroutine evaluate_interface(self, x, f, df, status)
+            import :: root_function, qp
+            class(root_function), intent(in) :: self
+            real(qp), intent(in) :: x
+            real(qp), intent(out) :: f, df
+            integer, intent(out) :: status
+        end subroutine evaluate_interface
+    end interface
+
+contains
+
+    !> Safeguarded Newton iteration for f(x) = 0 on a bracket.
+    !!
+    !! Needs f(lo) and f(hi) of opposite signs (or one of them zero); only their signs are
+    !! used. Converged when the predicted error is <= rel_tol*|x| + abs_tol.
+    pure subroutine newton_bracketed(fun, lo, f_lo, hi, f_hi, x0, rel_tol, abs_tol, &
+                                     max_steps, x, steps, status)
+        class(root_function), intent(in) :: fun !! the function
+        real(qp), intent(in) :: lo, hi          !! bracket, lo < hi
+        real(qp), intent(in) :: f_lo, f_hi      !! f at the bracket ends (signs only)
+        real(qp), intent(in) :: x0              !! first iterate (clipped into the bracket)
+        real(qp), intent(in) :: rel_tol         !! relative tolerance on x
+        real(qp), intent(in) :: abs_tol         !! absolute tolerance on x
+        integer, intent(in) :: max_steps        !! limit on evaluations of f
+        real(qp), intent(out) :: x              !! the root
+        integer, intent(out) :: steps           !! evaluations of f made
+        integer, intent(out) :: status          !! status_ok, status_no_convergence, ...
+        real(qp) :: a, b, fx, dfx, dx, dx_previous, x_new, tolerance, predicted
+        logical :: increasing
+
+        steps = 0
+        a = lo
+        b = hi
+        increasing = f_lo < 0.0_qp .or. f_hi > 0.0_qp
+        x = min(max(x0, a), b)
+        if (.not. ieee_is_finite(x)) x = 0.5_qp*(a + b)
+        dx_previous = huge(1.0_qp)
+        status = status_no_convergence
+        do while (steps < max_steps)
+            call fun%evaluate(x, fx, dfx, status)
+            steps = steps + 1
+            if (status /= status_ok) return
+            if (fx == 0.0_qp) return
+            ! shrink the bracket
+            if ((fx < 0.0_qp) .eqv. increasing) then
+                a = x
+            else
+                b = x
+            end if
+            ! Newton step, or bisection when it leaves the bracket or is not finite
+            x_new = x - fx/dfx
+            if (.not. ieee_is_finite(x_new) .or. x_new <= a .or. x_new >= b) then
+                x_new = 0.5_qp*(a + b)
+            end if
+            dx = x_new - x
+            x = x_new
+            tolerance = rel_tol*abs(x) + abs_tol
+            if (abs(dx) <= tolerance .or. b - a <= tolerance) then
+                status = status_ok
+                return
+            end if
+            ! quadratic convergence seen: the error of x is about |dx|^3/|dx_previous|^2
+            if (steps > 1 .and. abs(dx) <= 1.0e-4_qp*abs(dx_previous)) then
+                predicted = abs(dx)*(abs(dx)/abs(dx_previous))**2
+                if (predicted <= tolerance) then
+                    status = status_ok
+                    return
+                end if
+            end if
+            dx_previous = dx
+            status = status_no_convergence
+        end do
+    end subroutine newton_bracketed
+
+    !> The secant method from x0, x1, stopping when |x_n - x_(n-1)| < tol.
+    !!
+    !! `steps` counts the new iterates x_2, x_3, ... computed. Iterates must stay in
+    !! [domain_lo, domain_hi] (f is evaluated only there); leaving it ends the iteration
+    !! with status_outside_domain and x the last iterate inside.
+    pure subroutine secant(fun, x0, x1, tol, domain_lo, domain_hi, max_steps, x, steps, &
+                           status)
+        class(root_function), intent(in) :: fun   !! the function (its df is not used)
+        real(qp), intent(in) :: x0, x1            !! the two initial estimates
+        real(qp), intent(in) :: tol               !! stop when |x_n - x_(n-1)| < tol
+        real(qp), intent(in) :: domain_lo, domain_hi !! where f may be evaluated
+        integer, intent(in) :: max_steps          !! limit on steps
+        real(qp), intent(out) :: x                !! last iterate
+        integer, intent(out) :: steps             !! number of secant steps
+        integer, intent(out) :: status            !! status_ok or the reason
+        real(qp) :: x_previous, f_previous, fx, dfx, x_new
+
+        steps = 0
+        x = x1
+        if (x0 == x1 .or. min(x0, x1) < domain_lo .or. max(x0, x1) > domain_hi &
+            .or. .not. (ieee_is_finite(x0) .and. ieee_is_finite(x1))) then
+            status = status_bad_estimates
+            return
+        end if
+        x_previous = x0
+        call fun%evaluate(x_previous, f_previous, dfx, status)
+        if (status /= status_ok) return
+        call fun%evaluate(x, fx, dfx, status)
+        if (status /= status_ok) return
+        status = status_no_convergence
+        do while (steps < max_steps)
+            if (fx == 0.0_qp) then
+                status = status_ok
+                return
+            end if
+            if (fx == f_previous) return
+            x_new = x - fx*(x - x_previous)/(fx - f_previous)
+            steps = steps + 1
+            if (.not. ieee_is_finite(x_new) .or. x_new < domain_lo .or. x_new > domain_hi) then
+                status = status_outside_domain
+                return
+            end if
+            x_previous = x
+            f_previous = fx
+            x = x_new
+            if (abs(x - x_previous) < tol) then
+                status = status_ok
+                return
+            end if
+            call fun%evaluate(x, fx, dfx, status)
+            if (status /= status_ok) return
+            status = status_no_convergence
+        end do
+    end subroutine secant
+
+end module roots

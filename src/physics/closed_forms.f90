@@ -1,0 +1,80 @@
+!> Closed forms of the attractive inverse-square problem (Tee 1998, section 3-4).
+!!
+!! Units of the paper: mu = 1, the start A at radius 1, released from rest. These are
+!! used by the solver and are also the test suite's oracles for the limits the theory
+!! proves. Every `acos` of the paper is written as an `atan2` of square roots, which
+!! keeps full relative precision at both ends of the range.
+module closed_forms
+    use brachistochrone_kinds, only: qp, pi
+    use brachistochrone_status, only: status_ok, status_invalid_argument, &
+                                      status_not_finite
+    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+    implicit none
+    private
+
+    public :: fall_to_centre_time, apse_angle_limit, inaccessible_angle
+    public :: radial_fall_time, kappa_bound
+    public :: radial_time, kappa_time
+
+    !> t(0) = pi/sqrt(8), eq. (47): time of radial fall from rest at radius 1 to the centre.
+    real(qp), parameter :: fall_to_centre_time = pi/sqrt(8.0_qp)
+    !> Least upper bound pi/3 of the apse angle Theta(R,R), eq. (74).
+    real(qp), parameter :: apse_angle_limit = pi/3.0_qp
+    !> Angle 2 pi/3 where the sector of inaccessibility begins (section 4.2.2).
+    real(qp), parameter :: inaccessible_angle = 2.0_qp*pi/3.0_qp
+
+contains
+
+    !> Time t(r) to fall radially from rest at radius 1 to radius r, eq. (46):
+    !! t(r) = [acos(2r-1)/2 + sqrt(r(1-r))]/sqrt(2), with acos(2r-1)/2 written as
+    !! atan2(sqrt(1-r), sqrt(r)). Precondition 0 <= r <= 1 (not checked: use
+    !! `radial_fall_time` for a checked call).
+    elemental function radial_time(r) result(t)
+        real(qp), intent(in) :: r !! radius, 0 <= r <= 1
+        real(qp) :: t
+        t = (atan2(sqrt(1.0_qp - r), sqrt(r)) + sqrt(r*(1.0_qp - r)))/sqrt(2.0_qp)
+    end function radial_time
+
+    !> kappa(rho) = 2 t(0) - t(rho), eq. (75): the greatest lower bound of the time from A
+    !! to any point at radius rho in the sector of inaccessibility. Precondition
+    !! 0 <= rho <= 1 (not checked: use `kappa_bound` for a checked call).
+    elemental function kappa_time(rho) result(kappa)
+        real(qp), intent(in) :: rho !! radius, 0 <= rho <= 1
+        real(qp) :: kappa
+        kappa = (pi - atan2(sqrt(1.0_qp - rho), sqrt(rho)) - sqrt(rho*(1.0_qp - rho))) &
+                /sqrt(2.0_qp)
+    end function kappa_time
+
+    !> Checked radial fall time t(r), eq. (46). On a bad argument t = 0 and status is set.
+    elemental subroutine radial_fall_time(r, t, status)
+        real(qp), intent(in) :: r       !! radius, 0 <= r <= 1
+        real(qp), intent(out) :: t      !! time to fall from radius 1 to r
+        integer, intent(out) :: status  !! status_ok, status_not_finite, status_invalid_argument
+        t = 0.0_qp
+        if (.not. ieee_is_finite(r)) then
+            status = status_not_finite
+        else if (r < 0.0_qp .or. r > 1.0_qp) then
+            status = status_invalid_argument
+        else
+            t = radial_time(r)
+            status = status_ok
+        end if
+    end subroutine radial_fall_time
+
+    !> Checked kappa(rho), eq. (75). On a bad argument kappa = 0 and status is set.
+    elemental subroutine kappa_bound(rho, kappa, status)
+        real(qp), intent(in) :: rho     !! radius, 0 <= rho <= 1
+        real(qp), intent(out) :: kappa  !! greatest lower bound of the time to radius rho
+        integer, intent(out) :: status  !! status_ok, status_not_finite, status_invalid_argument
+        kappa = 0.0_qp
+        if (.not. ieee_is_finite(rho)) then
+            status = status_not_finite
+        else if (rho < 0.0_qp .or. rho > 1.0_qp) then
+            status = status_invalid_argument
+        else
+            kappa = kappa_time(rho)
+            status = status_ok
+        end if
+    end subroutine kappa_bound
+
+end module closed_forms

@@ -1,0 +1,353 @@
+!> The two-point problem: the brachistochrone from A = (1, 0) to B = (rho, psi).
+!!
+!! Tee 1998, sec. 5: the brachistochrone through B is found from its apse radius R-bar,
+!! the root in (0, rho] of Upsilon(R) = psi, where Upsilon(R) = Theta(rho,R) if B is on
+!! the first half-arch (psi <= Theta(rho,rho)) and 2 Theta(R,R) - Theta(rho,R) on the
+!! second. The half-arch is decided once, from the endpoint (see ERRATA.md).
+!!
+!! Two solvers:
+!! - `solve_endpoint` (default, no guesses): (0, rho] brackets the root. It is split at
+!!   rho/2. In the upper part the unknown is u = sqrt(rho - R): near the apse Upsilon
+!!   behaves like c -+ k sqrt(rho - R), which is linear in u, and R-bar = rho - u^2, r - R =
+!!   u^2 keep full precision for endpoints next to the apse. In the lower part the unknown
+!!   is R itself (second half-arch: Upsilon = 2 pi/3 - 1.619 R + O(R^(3/2))) or log R
+!!   (first half-arch: Theta(rho,R) ~ C R^(3/2)), so tiny R-bar keeps its relative
+!!   precision. Safeguarded Newton on 15-digit rules, then on full quad-precision rules;
+!!   the derivative is differentiated under the integral sign (eq. 67-71) plus the
+!!   boundary term of the moving limit L(R).
+!! - `solve_endpoint_secant`: the paper's secant method from R0, R1 with its stopping
+!!   rule |R_n - R_(n-1)| < tol and a step count, which reproduces Table 1.
+module two_point
+    use brachistochrone_kinds, only: qp, pi, eps_qp
+    use brachistochrone_status, only: status_ok, status_inaccessible, &
+                                      status_rho_out_of_range, status_psi_out_of_range, &
+                                      status_not_finite, status_outside_domain
+    use closed_forms, only: radial_time, kappa_time, inaccessible_angle
+    use inverse_square, only: inverse_square_model, arch_values, level_fine, level_coarse
+    use roots, only: root_function, newton_bracketed, secant
+    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+    implicit none
+    private
+
+    public :: endpoint_solution, solve_endpoint, solve_endpoint_secant
+    public :: arch_none, arch_first, arch_second, arch_complete, arch_radial, &
+              arch_inaccessible, arch_word
+
+    !> No answer (bad input).
+    integer, parameter :: arch_none = 0
+    !> B is on the first half-arch, before the apse.
+    integer, parameter :: arch_first = 1
+    !> B is on the second half-arch, after the apse.
+    integer, parameter :: arch_second = 2
+    !> rho = 1: B is the end of a complete brachistochrone (the particle stops at B).
+    integer, parameter :: arch_complete = 3
+    !> psi = 0: radial fall along OA (K = 0, R = 0).
+    integer, parameter :: arch_radial = 4
+    !> psi >= 2 pi/3: no brachistochrone; t is the greatest lower bound kappa(rho).
+    integer, parameter :: arch_inaccessible = 5
+
+    !> Limit on root-finder evaluations per phase.
+    integer, parameter :: max_steps = 200
+
+    !> Unknowns of the default solver.
+    integer, parameter :: unknown_u = 1, unknown_r = 2, unknown_log_r = 3
+
+    !> Everything known about one endpoint after solving.
+    type :: endpoint_solution
+        real(qp) :: rho = 0.0_qp          !! endpoint radius
+        real(qp) :: psi = 0.0_qp          !! endpoint angle (radians)
+        integer :: arch = arch_none       !! arch_first, arch_second, ...
+        real(qp) :: apse_radius = 0.0_qp  !! R-bar (0 for radial fall)
+        real(qp) :: arclength = 0.0_qp    !! s, arclength from A to B
+        real(qp) :: time = 0.0_qp         !! t, time from A to B (kappa when inaccessible)
+        integer :: steps = 0              !! root-finder evaluations (secant steps)
+        integer :: status = status_ok     !! status code
+        logical :: has_apse_radius = .false. !! R-bar exists
+        logical :: has_arclength = .false.   !! s exists
+        logical :: has_time = .false.        !! t exists
+    end type endpoint_solution
+
+    !> Upsilon(R) - psi in one of the unknowns, for the root finders.
+    type, extends(root_function) :: upsilon_function
+        type(inverse_square_model) :: model
+        integer :: level = level_fine
+        logical :: second = .false.
+        integer :: unknown = unknown_r
+        real(qp) :: rho = 0.0_qp
+        real(qp) :: psi = 0.0_qp
+    contains
+        procedure :: evaluate => upsilon_evaluate
+    end type upsilon_function
+
+contains
+
+    !> Word for an arch code, as written in the CSV `arch` column.
+    pure function arch_word(arch) result(word)
+        integer, intent(in) :: arch !! arch code
+        character(len=:), allocatable :: word
+        select case (arch)
+        case (arch_first);        word = 'first'
+        case (arch_second);       word = 'second'
+        case (arch_complete);     word = 'complete'
+        case (arch_radial);       word = 'radial'
+        case (arch_inaccessible); word = 'inaccessible'
+        case default;             word = 'none'
+        end select
+    end function arch_word
+
+    !> Checks and the special endpoints shared by both solvers. Sets `done` when the
+    !! solution is complete without a root finder; otherwise sets the arch and Theta(rho,rho).
+    pure subroutine classify(model, rho, psi, solution, apse_angle_rho, done)
+        type(inverse_square_model), intent(in) :: model
+        real(qp), intent(in) :: rho, psi
+        type(endpoint_solution), intent(out) :: solution
+        real(qp), intent(out) :: apse_angle_rho
+        logical, intent(out) :: done
+        integer :: status
+
+        solution%rho = rho
+        solution%psi = psi
+        apse_angle_rho = 0.0_qp
+        done = .true.
+        if (.not. (ieee_is_finite(rho) .and. ieee_is_finite(psi))) then
+            solution%status = status_not_finite
+        else if (rho <= 0.0_qp .or. rho > 1.0_qp) then
+            solution%status = status_rho_out_of_range
+        else if (psi < 0.0_qp .or. psi > pi) then
+            solution%status = status_psi_out_of_range
+        else if (psi >= inaccessible_angle) then
+            solution%arch = arch_inaccessible
+            solution%status = status_inaccessible
+            solution%time = kappa_time(rho)
+            solution%has_time = .true.
+        else if (psi == 0.0_qp) then
+            ! radial fall (eq. 45-46): K = 0, R = 0
+            solution%arch = arch_radial
+            solution%apse_radius = 0.0_qp
+            solution%arclength = 1.0_qp - rho
+            solution%time = radial_time(rho)
+            solution%has_apse_radius = .true.
+            solution%has_arclength = .true.
+            solution%has_time = .true.
+        else
+            done = .false.
+            if (rho < 1.0_qp) then
+                call model%apse_angle(rho, apse_angle_rho, status)
+            end if
+            if (rho == 1.0_qp) then
+                solution%arch = arch_complete
+            else if (psi <= apse_angle_rho) then
+                solution%arch = arch_first
+            else
+                solution%arch = arch_second
+            end if
+        end if
+    end subroutine classify
+
+    !> Upsilon - psi and its derivative in the chosen unknown.
+    pure subroutine upsilon_evaluate(self, x, f, df, status)
+        class(upsilon_function), intent(in) :: self
+        real(qp), intent(in) :: x
+        real(qp), intent(out) :: f, df
+        integer, intent(out) :: status
+        real(qp) :: big_r, d, slope
+        type(arch_values) :: values
+
+        f = 0.0_qp
+        df = 0.0_qp
+        select case (self%unknown)
+        case (unknown_u)
+            d = x*x
+            big_r = self%rho - d
+        case (unknown_log_r)
+            big_r = exp(x)
+            d = self%rho - big_r
+        case default
+            big_r = x
+            d = self%rho - big_r
+        end select
+        if (.not. (big_r > 0.0_qp .and. d >= 0.0_qp .and. big_r < 1.0_qp)) then
+            status = status_outside_domain
+            return
+        end if
+        status = status_ok
+        values = self%model%evaluate_arch(self%level, self%second, self%rho, big_r, d, &
+                                          .true., .false.)
+        select case (self%unknown)
+        case (unknown_u)
+            ! dUpsilon/du = -2u dUpsilon/dR, finite at u = 0
+            f = values%angle - self%psi
+            df = -2.0_qp*x*values%angle_dr_smooth &
+                 - 2.0_qp*values%boundary_sign*values%boundary
+        case (unknown_log_r)
+            f = log(values%angle/self%psi)
+            slope = values%angle_dr_smooth + values%boundary_sign*values%boundary/sqrt(d)
+            df = big_r*slope/values%angle
+        case default
+            f = values%angle - self%psi
+            df = values%angle_dr_smooth + values%boundary_sign*values%boundary/sqrt(d)
+        end select
+    end subroutine upsilon_evaluate
+
+    !> Solve the two-point problem for B = (rho, psi) to full quad precision, without
+    !! initial estimates. Never fails on an accessible endpoint 0 < rho <= 1,
+    !! 0 <= psi < 2 pi/3; other endpoints get a status (see `classify`).
+    pure function solve_endpoint(model, rho, psi) result(solution)
+        type(inverse_square_model), intent(in) :: model !! the evaluator
+        real(qp), intent(in) :: rho                     !! endpoint radius
+        real(qp), intent(in) :: psi                     !! endpoint angle
+        type(endpoint_solution) :: solution
+        type(upsilon_function) :: fun
+        type(arch_values) :: values
+        real(qp) :: apse_angle_rho, half, f_half, f_end, lo, hi, f_lo, f_hi, x, x0
+        real(qp) :: big_r, d, log_lo, theta_half
+        integer :: steps, status, probe
+        logical :: done, low_region
+
+        call classify(model, rho, psi, solution, apse_angle_rho, done)
+        if (done) return
+        fun%model = model
+        fun%rho = rho
+        fun%psi = psi
+        fun%second = solution%arch /= arch_first
+        fun%level = level_fine
+
+        if (psi == apse_angle_rho) then
+            ! B is the apse itself
+            big_r = rho
+            d = 0.0_qp
+        else
+            ! Which half of (0, rho] holds the root: Upsilon at R = rho/2
+            half = 0.5_qp*rho
+            values = model%evaluate_arch(level_fine, fun%second, rho, half, rho - half, &
+                                         .false., .false.)
+            f_half = values%angle - psi
+            theta_half = values%angle
+            if (fun%second) then
+                low_region = f_half <= 0.0_qp
+            else
+                low_region = f_half >= 0.0_qp
+            end if
+            solution%steps = 1
+            if (.not. low_region) then
+                ! unknown u = sqrt(rho - R) in [0, sqrt(rho/2)]; Upsilon(u=0) = Theta(rho,rho)
+                fun%unknown = unknown_u
+                lo = 0.0_qp
+                hi = sqrt(rho - half)
+                f_end = apse_angle_rho - psi
+                f_lo = f_end
+                f_hi = f_half
+                x0 = hi*f_end/(f_end - f_half)
+            else if (fun%second) then
+                ! unknown R in [0, rho/2]; Upsilon(0+) = 2 pi/3
+                fun%unknown = unknown_r
+                lo = 0.0_qp
+                hi = half
+                f_end = inaccessible_angle - psi
+                f_lo = f_end
+                f_hi = f_half
+                x0 = hi*f_end/(f_end - f_half)
+            else
+                ! first half-arch, small R: Theta(rho,R) ~ C R^(3/2); unknown log R first
+                fun%unknown = unknown_log_r
+                fun%level = level_coarse
+                hi = log(half)
+                x0 = hi + (2.0_qp/3.0_qp)*log(psi/theta_half)
+                log_lo = x0 - 2.0_qp
+                do probe = 1, 100
+                    call fun%evaluate(log_lo, f_lo, f_end, status)
+                    solution%steps = solution%steps + 1
+                    if (status == status_ok .and. f_lo < 0.0_qp) exit
+                    log_lo = log_lo - 4.0_qp
+                end do
+                call newton_bracketed(fun, log_lo, f_lo, hi, 1.0_qp, x0, 1.0e-13_qp, &
+                                      0.0_qp, max_steps, x, steps, status)
+                solution%steps = solution%steps + steps
+                ! then R itself at full precision, on the same bracket
+                fun%unknown = unknown_r
+                lo = exp(log_lo)
+                hi = half
+                f_lo = -1.0_qp
+                f_hi = f_half
+                x0 = exp(x)
+            end if
+            if (fun%unknown /= unknown_r .or. fun%second) then
+                ! 15-digit phase
+                fun%level = level_coarse
+                call newton_bracketed(fun, lo, f_lo, hi, f_hi, x0, 1.0e-13_qp, 0.0_qp, &
+                                      max_steps, x, steps, status)
+                solution%steps = solution%steps + steps
+                x0 = x
+            end if
+            ! full-precision phase
+            fun%level = level_fine
+            call newton_bracketed(fun, lo, f_lo, hi, f_hi, x0, 4.0_qp*eps_qp, &
+                                  tiny(1.0_qp), max_steps, x, steps, status)
+            solution%steps = solution%steps + steps
+            if (status /= status_ok) then
+                solution%status = status
+                return
+            end if
+            if (fun%unknown == unknown_u) then
+                d = x*x
+                big_r = rho - d
+            else
+                big_r = x
+                d = rho - big_r
+            end if
+        end if
+        call finish(model, solution, fun%second, big_r, d)
+    end function solve_endpoint
+
+    !> Arclength and time at B once R-bar is known.
+    pure subroutine finish(model, solution, second, big_r, d)
+        type(inverse_square_model), intent(in) :: model
+        type(endpoint_solution), intent(inout) :: solution
+        logical, intent(in) :: second
+        real(qp), intent(in) :: big_r, d
+        type(arch_values) :: values
+        values = model%evaluate_arch(level_fine, second, solution%rho, big_r, d, &
+                                     .false., .true.)
+        solution%apse_radius = big_r
+        solution%arclength = values%arclength
+        solution%time = values%time
+        solution%has_apse_radius = .true.
+        solution%has_arclength = .true.
+        solution%has_time = .true.
+        solution%status = status_ok
+    end subroutine finish
+
+    !> The paper's method (sec. 5.1): secant iteration on Upsilon(R) = psi from the
+    !! estimates R0, R1, stopping when |R_n - R_(n-1)| < tol (the paper: 1e-16).
+    !! `steps` counts the secant steps. An iterate outside 0 < R <= rho ends the run with
+    !! status_outside_domain (Theta(rho,R) does not exist there).
+    pure function solve_endpoint_secant(model, rho, psi, r0, r1, tol) result(solution)
+        type(inverse_square_model), intent(in) :: model !! the evaluator
+        real(qp), intent(in) :: rho       !! endpoint radius
+        real(qp), intent(in) :: psi       !! endpoint angle
+        real(qp), intent(in) :: r0, r1    !! initial estimates of R-bar
+        real(qp), intent(in) :: tol       !! stopping tolerance on |R_n - R_(n-1)|
+        type(endpoint_solution) :: solution
+        type(upsilon_function) :: fun
+        real(qp) :: apse_angle_rho, x
+        integer :: steps, status
+        logical :: done
+
+        call classify(model, rho, psi, solution, apse_angle_rho, done)
+        if (done) return
+        fun%model = model
+        fun%rho = rho
+        fun%psi = psi
+        fun%second = solution%arch /= arch_first
+        fun%level = level_fine
+        fun%unknown = unknown_r
+        call secant(fun, r0, r1, tol, 0.0_qp, rho, max_steps, x, steps, status)
+        solution%steps = steps
+        if (status /= status_ok) then
+            solution%status = status
+            return
+        end if
+        call finish(model, solution, fun%second, x, rho - x)
+    end function solve_endpoint_secant
+
+end module two_point
