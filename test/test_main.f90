@@ -1,0 +1,14 @@
+!> Test driver: runs every test group and ends with `N passed, N failed`.
+program test_main
+    use testing, only: summary
+    use test_numerics, only: run_numerics_tests
+    use test_physics, only: run_physics_tests
+    use test_io, only: run_io_tests
+    implicit none
+    integer :: code
+    call run_numerics_tests()
+    call run_io_tests()
+    call run_physics_tests()
+    code = summary()
+    if (code /= 0) error stop 1
+end program test_main

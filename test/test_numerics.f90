@@ -1,0 +1,142 @@
+!> Quadrature and root finders against known integrals and roots.
+module test_numerics
+    use brachistochrone_kinds, only: qp, pi, eps_qp
+    use brachistochrone_status, only: status_ok
+    use quadrature, only: gauss_legendre_rule, gauss_legendre, univariate_integrand, &
+                          integrate, integrate_adaptive, even_periodic_rule, &
+                          even_periodic_trapezoid
+    use roots, only: root_function, newton_bracketed, secant
+    use testing, only: check, check_close, section
+    implicit none
+    private
+
+    public :: run_numerics_tests
+
+    !> x^k
+    type, extends(univariate_integrand) :: power
+        integer :: k = 0
+    contains
+        procedure :: evaluate => power_evaluate
+    end type power
+
+    !> 1/(1 + a x^2)
+    type, extends(univariate_integrand) :: runge
+        real(qp) :: a = 1.0_qp
+    contains
+        procedure :: evaluate => runge_evaluate
+    end type runge
+
+    !> exp(x)
+    type, extends(univariate_integrand) :: exponential
+    contains
+        procedure :: evaluate => exponential_evaluate
+    end type exponential
+
+    !> x^3 - c
+    type, extends(root_function) :: cubic
+        real(qp) :: c = 2.0_qp
+    contains
+        procedure :: evaluate => cubic_evaluate
+    end type cubic
+
+contains
+
+    pure function power_evaluate(self, x) result(y)
+        class(power), intent(in) :: self
+        real(qp), intent(in) :: x
+        real(qp) :: y
+        y = x**self%k
+    end function power_evaluate
+
+    pure function runge_evaluate(self, x) result(y)
+        class(runge), intent(in) :: self
+        real(qp), intent(in) :: x
+        real(qp) :: y
+        y = 1.0_qp/(1.0_qp + self%a*x*x)
+    end function runge_evaluate
+
+    pure function exponential_evaluate(self, x) result(y)
+        class(exponential), intent(in) :: self
+        real(qp), intent(in) :: x
+        real(qp) :: y
+        y = exp(x)
+    end function exponential_evaluate
+
+    pure subroutine cubic_evaluate(self, x, f, df, status)
+        class(cubic), intent(in) :: self
+        real(qp), intent(in) :: x
+        real(qp), intent(out) :: f, df
+        integer, intent(out) :: status
+        f = x**3 - self%c
+        df = 3.0_qp*x*x
+        status = status_ok
+    end subroutine cubic_evaluate
+
+    subroutine run_numerics_tests()
+        type(gauss_legendre_rule) :: rule
+        type(even_periodic_rule) :: periodic
+        type(power) :: monomial
+        type(runge) :: bump
+        type(exponential) :: e
+        type(cubic) :: f
+        real(qp) :: value, error, x, total
+        integer :: k, status, steps
+        character(len=40) :: name
+
+        call section('numerics: Gauss-Legendre rule')
+        rule = gauss_legendre(20)
+        call check(rule%n == 20, 'rule has 20 nodes')
+        call check(all(rule%node(2:) > rule%node(:19)), 'nodes ascending')
+        call check_close(sum(rule%weight), 2.0_qp, 8.0_qp, 'weights sum to 2')
+        ! exact for polynomials of degree <= 2n - 1: int_0^1 x^k = 1/(k+1)
+        do k = 0, 39, 3
+            monomial%k = k
+            write (name, '(a,i0)') 'exact on [0,1] for x^', k
+            call check_close(integrate(monomial, 0.0_qp, 1.0_qp, rule), &
+                             1.0_qp/real(k + 1, qp), 16.0_qp, trim(name))
+        end do
+        rule = gauss_legendre(48)
+        call check_close(integrate(e, 0.0_qp, 1.0_qp, rule), exp(1.0_qp) - 1.0_qp, &
+                         8.0_qp, 'int_0^1 exp = e - 1 (48 nodes)')
+        bump%a = 1.0_qp
+        call check_close(integrate(bump, 0.0_qp, 1.0_qp, rule), pi/4.0_qp, 8.0_qp, &
+                         'int_0^1 1/(1+x^2) = pi/4 (48 nodes)')
+        rule = gauss_legendre(7)
+        call check(abs(rule%node(4)) == 0.0_qp, 'odd rule has the node 0')
+
+        call section('numerics: adaptive Gauss-Legendre with error estimate')
+        rule = gauss_legendre(16)
+        bump%a = 2500.0_qp    ! Runge function with poles at +-i/50
+        call integrate_adaptive(bump, -1.0_qp, 1.0_qp, rule, 1.0e-32_qp, 0.0_qp, value, &
+                                error, status)
+        call check(status == status_ok, 'adaptive converges')
+        call check_close(value, 2.0_qp*atan(50.0_qp)/50.0_qp, 64.0_qp, &
+                         'int 1/(1+2500x^2) = 2 atan(50)/50')
+        call check(abs(value - 2.0_qp*atan(50.0_qp)/50.0_qp) <= max(error, 8*eps_qp*value), &
+                   'error estimate bounds the true error')
+        call check(error <= 1.0e-32_qp*value, 'error estimate within tolerance')
+
+        call section('numerics: periodic trapezoid rule')
+        ! int_0^pi d theta/(2 + cos theta) = pi/sqrt(3)
+        periodic = even_periodic_trapezoid(40)
+        total = 0.0_qp
+        do k = 0, periodic%m
+            total = total + periodic%weight(k)/(2.0_qp + cos(periodic%angle(k)))
+        end do
+        call check_close(total, pi/sqrt(3.0_qp), 16.0_qp, 'int d theta/(2+cos) = pi/sqrt 3')
+
+        call section('numerics: root finders')
+        f%c = 2.0_qp
+        call newton_bracketed(f, 0.0_qp, -2.0_qp, 2.0_qp, 6.0_qp, 1.9_qp, 4.0_qp*eps_qp, &
+                              0.0_qp, 100, x, steps, status)
+        call check(status == status_ok, 'newton converges on x^3 = 2')
+        call check_close(x, exp(log(2.0_qp)/3.0_qp), 8.0_qp, 'newton: cube root of 2')
+        call check(steps < 20, 'newton: fewer than 20 steps from a poor start')
+        call secant(f, 1.0_qp, 1.5_qp, 1.0e-30_qp, 0.0_qp, 2.0_qp, 100, x, steps, status)
+        call check(status == status_ok, 'secant converges on x^3 = 2')
+        call check_close(x, exp(log(2.0_qp)/3.0_qp), 8.0_qp, 'secant: cube root of 2')
+        call secant(f, 1.0_qp, 1.0_qp, 1.0e-30_qp, 0.0_qp, 2.0_qp, 100, x, steps, status)
+        call check(status /= status_ok, 'secant rejects equal estimates')
+    end subroutine run_numerics_tests
+
+end module test_numerics
