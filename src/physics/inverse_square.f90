@@ -29,9 +29,11 @@ module inverse_square
     use brachistochrone_status, only: status_ok, status_invalid_argument, &
                                       status_not_finite
     use closed_forms, only: radial_time
+    use fast_math, only: inverse_sqrt
     use quadrature, only: gauss_legendre_rule, gauss_legendre, even_periodic_rule, &
                           even_periodic_trapezoid
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+    use, intrinsic :: iso_fortran_env, only: real64
     implicit none
     private
 
@@ -43,28 +45,40 @@ module inverse_square
     !> Rule set selector: about 15 digits, for the first iterations of a root finder.
     integer, parameter :: level_coarse = 2
 
-    !> Nodes of the fine Gauss rule: worst panel (R -> 0, a whole half-arch) 2e-37.
-    integer, parameter :: fine_nodes = 48
-    !> Intervals on [0, pi] of the fine periodic rule: relative error 2e-38 at R -> 0.
-    integer, parameter :: fine_intervals = 26
-    !> Nodes of the coarse Gauss rule: about 1e-15 on the worst panel.
-    integer, parameter :: coarse_nodes = 20
-    !> Intervals of the coarse periodic rule: about 1e-17.
-    integer, parameter :: coarse_intervals = 12
+    !> Most Gauss nodes on one panel: the worst panel (R -> 0, a whole half-arch in the
+    !! eta variable) needs 46 for Theta; the s and t pass always uses this many (its
+    !! extra singularities, zeros of D, are not located in closed form): 8e-36 there.
+    integer, parameter :: max_nodes = 48
+    !> Fewest Gauss nodes on a panel.
+    integer, parameter :: min_nodes = 6
+    !> Digits aimed at by the node choice: fine (with a margin over 34) and coarse.
+    real(qp), parameter :: fine_digits = 38.0_qp, coarse_digits = 17.0_qp
+    !> Intervals on [0, pi] of the periodic rules: relative error 2e-38 and 5e-18 at
+    !! R -> 0 (the worst case: the singularities then lie closest to the real axis).
+    integer, parameter :: fine_intervals = 26, coarse_intervals = 12
 
-    !> Quadrature rules for one precision level, with the periodic nodes tabulated.
-    type :: rule_set
-        type(gauss_legendre_rule) :: gauss
-        type(even_periodic_rule) :: periodic
-        real(qp), allocatable :: cos2(:)   !! cos^2(lambda_k) at the periodic nodes
-        real(qp), allocatable :: sin2(:)   !! sin^2(lambda_k) at the periodic nodes
-    end type rule_set
+    !> One Gauss-Legendre rule with the node data the sweeps use.
+    type :: gauss_nodes
+        integer :: n = 0                          !! number of nodes
+        real(qp), allocatable :: offset(:)        !! (1 + x_k)/2 for the nodes x_k
+        real(qp), allocatable :: double_weight(:) !! 2 w_k for the weights w_k
+    end type gauss_nodes
+
+    !> Trapezoid rule on the whole half-arch, tabulated.
+    type :: periodic_nodes
+        integer :: m = 0                          !! intervals on [0, pi] in 2 lambda
+        real(qp), allocatable :: cos2(:)          !! cos^2(lambda_k), k = 0..m
+        real(qp), allocatable :: sin2(:)          !! sin^2(lambda_k)
+        real(qp), allocatable :: weighted_cos2(:) !! trapezoid weight times cos2
+    end type periodic_nodes
 
     !> The inverse-square evaluator: quadrature rules built once, then used read-only
     !! (so one model can be shared by all threads).
     type :: inverse_square_model
-        type(rule_set) :: fine    !! full quad precision
-        type(rule_set) :: coarse  !! about 15 digits
+        !> Gauss rules with n = 2j nodes in element j (j = min_nodes/2 .. max_nodes/2)
+        type(gauss_nodes) :: gauss(max_nodes/2)
+        type(periodic_nodes) :: periodic_fine    !! full quad precision
+        type(periodic_nodes) :: periodic_coarse  !! about 17 digits
     contains
         procedure :: half_arch      !! Theta, S, T on the first or second half-arch
         procedure :: theta          !! Theta(r,R), eq. (55)
@@ -91,23 +105,78 @@ contains
     !> Build the quadrature rules (the only costly step; do it once and share the model).
     function new_inverse_square_model() result(model)
         type(inverse_square_model) :: model
-        model%fine = new_rule_set(fine_nodes, fine_intervals)
-        model%coarse = new_rule_set(coarse_nodes, coarse_intervals)
+        type(gauss_legendre_rule) :: rule
+        integer :: j
+        do j = min_nodes/2, max_nodes/2
+            rule = gauss_legendre(2*j)
+            model%gauss(j)%n = 2*j
+            model%gauss(j)%offset = 0.5_qp*(1.0_qp + rule%node)
+            model%gauss(j)%double_weight = 2.0_qp*rule%weight
+        end do
+        model%periodic_fine = new_periodic_nodes(fine_intervals)
+        model%periodic_coarse = new_periodic_nodes(coarse_intervals)
     end function new_inverse_square_model
 
-    pure function new_rule_set(nodes, intervals) result(rules)
-        integer, intent(in) :: nodes, intervals
-        type(rule_set) :: rules
+    pure function new_periodic_nodes(intervals) result(nodes)
+        integer, intent(in) :: intervals
+        type(periodic_nodes) :: nodes
+        type(even_periodic_rule) :: rule
         integer :: k
-        rules%gauss = gauss_legendre(nodes)
-        rules%periodic = even_periodic_trapezoid(intervals)
-        allocate (rules%cos2(0:rules%periodic%m), rules%sin2(0:rules%periodic%m))
-        do k = 0, rules%periodic%m
+        rule = even_periodic_trapezoid(intervals)
+        nodes%m = rule%m
+        allocate (nodes%cos2(0:rule%m), nodes%sin2(0:rule%m), nodes%weighted_cos2(0:rule%m))
+        do k = 0, rule%m
             ! lambda_k = angle_k / 2 covers [0, pi/2]
-            rules%cos2(k) = cos(0.5_qp*rules%periodic%angle(k))**2
-            rules%sin2(k) = sin(0.5_qp*rules%periodic%angle(k))**2
+            nodes%cos2(k) = cos(0.5_qp*rule%angle(k))**2
+            nodes%sin2(k) = sin(0.5_qp*rule%angle(k))**2
+            nodes%weighted_cos2(k) = rule%weight(k)*nodes%cos2(k)
         end do
-    end function new_rule_set
+    end function new_periodic_nodes
+
+    !> Gauss nodes needed on the panel v in [0, upper] for `digits` digits of Theta.
+    !!
+    !! The Theta integrand is analytic except at the zeros of q, where
+    !! cos(2 lambda) = w = 2 (z_s - R)/(1 - R) - 1, z_s = (-(1-R) +- i sqrt((1-R)(3+R)))/2,
+    !! and at the poles v = +-i of the half-angle substitution. In v = tan(lambda/2) the
+    !! zeros of q sit at +-t, +-1/t with t = tan(acos(w)/4) (w -> -w for the variable
+    !! from A). An n-point Gauss rule then errs by about rho^(-2n), rho the Bernstein
+    !! ellipse through the nearest of them (mapped to [-1, 1]). Double precision is
+    !! ample for choosing n; the test suite checks the result against the references.
+    pure function nodes_needed(big_r, upper, from_apse, digits) result(n)
+        real(qp), intent(in) :: big_r, upper, digits
+        logical, intent(in) :: from_apse
+        integer :: n
+        real(real64) :: r, omr, rho_min
+        complex(real64) :: z_s, w, t, candidates(5)
+        integer :: k
+        r = real(big_r, real64)
+        omr = 1.0_real64 - r
+        n = min_nodes
+        if (omr <= 0.0_real64 .or. upper <= 0.0_qp) return
+        z_s = cmplx(-omr, sqrt(omr*(3.0_real64 + r)), real64)/2.0_real64
+        w = 2.0_real64*(z_s - r)/omr - 1.0_real64
+        if (.not. from_apse) w = -w
+        t = tan(acos(w)/4.0_real64)
+        candidates = [t, -t, 1.0_real64/t, -1.0_real64/t, (0.0_real64, 1.0_real64)]
+        rho_min = huge(1.0_real64)
+        do k = 1, size(candidates)
+            rho_min = min(rho_min, bernstein(2.0_real64*candidates(k)/real(upper, real64) &
+                                             - 1.0_real64))
+        end do
+        if (rho_min <= 1.0_real64 + 1.0e-6_real64) then
+            n = max_nodes
+        else
+            n = ceiling(real(digits, real64)*log(10.0_real64)/(2.0_real64*log(rho_min))) + 2
+            n = min(max_nodes, max(min_nodes, n + mod(n, 2)))
+        end if
+    contains
+        pure real(real64) function bernstein(x)
+            complex(real64), intent(in) :: x
+            complex(real64) :: root
+            root = sqrt(x*x - 1.0_real64)
+            bernstein = max(abs(x + root), abs(x - root))
+        end function bernstein
+    end function nodes_needed
 
     !> The kernel: angle (and optionally arclength, time, d(angle)/dR) at radius r on the
     !! first (`second = .false.`) or second half-arch of the brachistochrone with apse R.
@@ -125,41 +194,47 @@ contains
         logical, intent(in) :: want_length_time !! compute arclength and time
         type(arch_values) :: values
 
-        if (level == level_coarse) then
-            values = arch_with_rules(self%coarse, second, r, big_r, d, want_derivative, &
-                                     want_length_time)
-        else
-            values = arch_with_rules(self%fine, second, r, big_r, d, want_derivative, &
-                                     want_length_time)
-        end if
+        values = arch_with_rules(self, level, second, r, big_r, d, want_derivative, &
+                                 want_length_time)
     end function evaluate_arch
 
-    !> `evaluate_arch` with the rule set chosen (passed by reference, never copied).
-    pure function arch_with_rules(rules, second, r, big_r, d, want_derivative, &
+    !> `evaluate_arch` for one precision level.
+    pure function arch_with_rules(model, level, second, r, big_r, d, want_derivative, &
                                   want_length_time) result(values)
-        type(rule_set), intent(in) :: rules
+        type(inverse_square_model), intent(in) :: model
+        integer, intent(in) :: level
         logical, intent(in) :: second, want_derivative, want_length_time
         real(qp), intent(in) :: r, big_r, d
         type(arch_values) :: values
         real(qp) :: one_minus_r, one_minus_big_r, cos_l, sin_l, z_l, q_l
-        real(qp) :: from_start(4), from_apse(4), periodic(2), correction_scale
+        real(qp) :: from_start(4), from_apse(4), periodic(2), correction_scale, digits
 
+        digits = merge(coarse_digits, fine_digits, level == level_coarse)
         one_minus_r = 1.0_qp - r
         one_minus_big_r = one_minus_r + d
         cos_l = sqrt(big_r*one_minus_r/(r*one_minus_big_r))
         sin_l = sqrt(d/(r*one_minus_big_r))
 
-        ! lambda in [L, pi/2]: from A to the point (the whole first half-arch part)
-        call sweep(rules, big_r, one_minus_big_r, &
-                   cos_l/(1.0_qp + sin_l), .false., want_derivative, want_length_time, &
-                   from_start)
+        ! lambda in [L, pi/2]: from A to the point (on the second half-arch only s and t
+        ! need this part)
+        if (.not. second .or. want_length_time) then
+            call sweep(model, digits, big_r, one_minus_big_r, cos_l/(1.0_qp + sin_l), &
+                       .false., want_derivative .and. .not. second, want_length_time, &
+                       from_start)
+        else
+            from_start = 0.0_qp
+        end if
         if (second) then
             ! lambda in [0, L]: from the apse back out to the point
-            call sweep(rules, big_r, one_minus_big_r, &
-                       sin_l/(1.0_qp + cos_l), .true., want_derivative, want_length_time, &
-                       from_apse)
-            call periodic_sweep(rules, big_r, one_minus_big_r, &
-                                want_derivative, periodic)
+            call sweep(model, digits, big_r, one_minus_big_r, sin_l/(1.0_qp + cos_l), &
+                       .true., want_derivative, want_length_time, from_apse)
+            if (level == level_coarse) then
+                call periodic_sweep(model%periodic_coarse, big_r, one_minus_big_r, &
+                                    want_derivative, periodic)
+            else
+                call periodic_sweep(model%periodic_fine, big_r, one_minus_big_r, &
+                                    want_derivative, periodic)
+            end if
             values%angle = periodic(1) + from_apse(1)
             values%angle_dr_smooth = periodic(2) + from_apse(2)
             values%boundary_sign = -1.0_qp
@@ -193,44 +268,51 @@ contains
     !> Gauss-Legendre sweep over v in [0, upper] of the four integrands
     !! (Theta, dTheta/dR, S correction, T correction); v = tau from the apse or
     !! v = eta from the start, both with d lambda = 2 dv/(1 + v^2).
-    pure subroutine sweep(rules, big_r, one_minus_big_r, upper, from_apse, &
+    pure subroutine sweep(model, digits, big_r, one_minus_big_r, upper, from_apse, &
                           want_derivative, want_length_time, sums)
-        type(rule_set), intent(in) :: rules
-        real(qp), intent(in) :: big_r, one_minus_big_r, upper
+        type(inverse_square_model), intent(in) :: model
+        real(qp), intent(in) :: digits, big_r, one_minus_big_r, upper
         logical, intent(in) :: from_apse, want_derivative, want_length_time
         real(qp), intent(out) :: sums(4)
-        real(qp) :: v, v2, jacobian, c, s, c2, z, q, root_q, weight, lengths
-        integer :: k
+        real(qp) :: v, v2, jacobian, c, s, c2, z, q, theta_term, lengths, inverse
+        integer :: k, j
 
         sums = 0.0_qp
         if (upper <= 0.0_qp) return
-        do k = 1, rules%gauss%n
-            v = 0.5_qp*upper*(1.0_qp + rules%gauss%node(k))
+        if (want_length_time) then
+            j = max_nodes/2
+        else
+            j = nodes_needed(big_r, upper, from_apse, digits)/2
+        end if
+        associate (rule => model%gauss(j))
+        do k = 1, rule%n
+            v = upper*rule%offset(k)
             v2 = v*v
             jacobian = 1.0_qp/(1.0_qp + v2)
             if (from_apse) then
                 c = (1.0_qp - v2)*jacobian
-                s = 2.0_qp*v*jacobian
+                s = (v + v)*jacobian
             else
-                c = 2.0_qp*v*jacobian
+                c = (v + v)*jacobian
                 s = (1.0_qp - v2)*jacobian
             end if
             c2 = c*c
             z = big_r + one_minus_big_r*c2
             q = z*z + one_minus_big_r*(1.0_qp + z)
-            root_q = sqrt(q)
-            weight = rules%gauss%weight(k)*2.0_qp*jacobian
-            sums(1) = sums(1) + weight*c2/root_q
+            inverse = inverse_sqrt(q)
+            theta_term = rule%double_weight(k)*jacobian*c2*inverse
+            sums(1) = sums(1) + theta_term
             if (want_derivative) then
-                sums(2) = sums(2) - weight*c2*(2.0_qp*z*z + one_minus_big_r* &
-                          (z + 1.0_qp + (2.0_qp*z + one_minus_big_r)*s*s))/(q*root_q)
+                sums(2) = sums(2) - theta_term*(inverse*inverse)*(z*(z + z) + &
+                          one_minus_big_r*(z + 1.0_qp + (z + z + one_minus_big_r)*(s*s)))
             end if
             if (want_length_time) then
-                lengths = weight*c2/(root_q*(1.0_qp + s*root_q))
+                lengths = theta_term/(1.0_qp + s*(q*inverse))
                 sums(3) = sums(3) + lengths*c
                 sums(4) = sums(4) + lengths
             end if
         end do
+        end associate
         ! common factors: Theta 2(1-R) c^2/Q; S 2(1-R) c^3/(QD); T 2 sqrt(1-R) c^2/(QD)
         sums(1) = sums(1)*upper*one_minus_big_r
         sums(2) = sums(2)*0.5_qp*upper
@@ -241,24 +323,25 @@ contains
     !> Trapezoid sweep of Theta(R,R) and its R-derivative over the whole half-arch
     !! lambda in [0, pi/2] (eq. 66-69): an even, pi-periodic integrand in lambda.
     pure subroutine periodic_sweep(rules, big_r, one_minus_big_r, want_derivative, sums)
-        type(rule_set), intent(in) :: rules
+        type(periodic_nodes), intent(in) :: rules
         real(qp), intent(in) :: big_r, one_minus_big_r
         logical, intent(in) :: want_derivative
         real(qp), intent(out) :: sums(2)
-        real(qp) :: z, q, root_q, c2
+        real(qp) :: z, q, c2, inverse, theta_term
         integer :: k
 
         sums = 0.0_qp
-        do k = 0, rules%periodic%m
+        do k = 0, rules%m
             c2 = rules%cos2(k)
             z = big_r + one_minus_big_r*c2
             q = z*z + one_minus_big_r*(1.0_qp + z)
-            root_q = sqrt(q)
-            sums(1) = sums(1) + rules%periodic%weight(k)*c2/root_q
+            inverse = inverse_sqrt(q)
+            theta_term = rules%weighted_cos2(k)*inverse
+            sums(1) = sums(1) + theta_term
             if (want_derivative) then
-                sums(2) = sums(2) - rules%periodic%weight(k)*c2*(2.0_qp*z*z &
-                          + one_minus_big_r*(z + 1.0_qp + (2.0_qp*z + one_minus_big_r) &
-                          *rules%sin2(k)))/(q*root_q)
+                sums(2) = sums(2) - theta_term*(inverse*inverse)*(z*(z + z) &
+                          + one_minus_big_r*(z + 1.0_qp + (z + z + one_minus_big_r) &
+                          *rules%sin2(k)))
             end if
         end do
         ! int_0^{pi/2} f d lambda = (1/2) int_0^pi f(angle/2) d angle; Theta factor 2(1-R)
@@ -354,7 +437,7 @@ contains
         else if (big_r <= 0.0_qp .or. big_r > 1.0_qp) then
             status = status_invalid_argument
         else
-            call periodic_sweep(self%fine, big_r, 1.0_qp - big_r, .false., sums)
+            call periodic_sweep(self%periodic_fine, big_r, 1.0_qp - big_r, .false., sums)
             value = sums(1)
             status = status_ok
         end if

@@ -179,13 +179,20 @@ contains
             f = values%angle - self%psi
             df = -2.0_qp*x*values%angle_dr_smooth &
                  - 2.0_qp*values%boundary_sign*values%boundary
-        case (unknown_log_r)
-            f = log(values%angle/self%psi)
-            slope = values%angle_dr_smooth + values%boundary_sign*values%boundary/sqrt(d)
-            df = big_r*slope/values%angle
         case default
-            f = values%angle - self%psi
-            df = values%angle_dr_smooth + values%boundary_sign*values%boundary/sqrt(d)
+            ! dUpsilon/dR is infinite at the apse (R = rho)
+            if (d > 0.0_qp) then
+                slope = values%angle_dr_smooth + values%boundary_sign*values%boundary/sqrt(d)
+            else
+                slope = values%boundary_sign*huge(1.0_qp)
+            end if
+            if (self%unknown == unknown_log_r) then
+                f = log(values%angle/self%psi)
+                df = big_r*slope/values%angle
+            else
+                f = values%angle - self%psi
+                df = slope
+            end if
         end select
     end subroutine upsilon_evaluate
 
@@ -217,10 +224,15 @@ contains
             big_r = rho
             d = 0.0_qp
         else
-            ! Which half of (0, rho] holds the root: Upsilon at R = rho/2
+            ! Which half of (0, rho] holds the root: Upsilon at R = rho/2, on the coarse
+            ! rules unless the sign is in doubt
             half = 0.5_qp*rho
-            values = model%evaluate_arch(level_fine, fun%second, rho, half, rho - half, &
+            values = model%evaluate_arch(level_coarse, fun%second, rho, half, rho - half, &
                                          .false., .false.)
+            if (abs(values%angle - psi) < 1.0e-10_qp*psi) then
+                values = model%evaluate_arch(level_fine, fun%second, rho, half, &
+                                             rho - half, .false., .false.)
+            end if
             f_half = values%angle - psi
             theta_half = values%angle
             if (fun%second) then
