@@ -54,7 +54,7 @@ contains
         integer, intent(out) :: steps           !! evaluations of f made
         integer, intent(out) :: status          !! status_ok, status_no_convergence, ...
         real(qp) :: a, b, fx, dfx, dx, dx_previous, x_new, tolerance, predicted
-        logical :: increasing
+        logical :: increasing, newton_step, previous_newton
 
         steps = 0
         a = lo
@@ -63,6 +63,7 @@ contains
         x = min(max(x0, a), b)
         if (.not. ieee_is_finite(x)) x = 0.5_qp*(a + b)
         dx_previous = huge(1.0_qp)
+        previous_newton = .false.
         status = status_no_convergence
         do while (steps < max_steps)
             call fun%evaluate(x, fx, dfx, status)
@@ -75,20 +76,29 @@ contains
             else
                 b = x
             end if
-            ! Newton step, or bisection when it leaves the bracket or is not finite
             x_new = x - fx/dfx
-            if (.not. ieee_is_finite(x_new) .or. x_new <= a .or. x_new >= b) then
-                x_new = 0.5_qp*(a + b)
-            end if
-            dx = x_new - x
-            x = x_new
             tolerance = rel_tol*abs(x) + abs_tol
-            if (abs(dx) <= tolerance .or. b - a <= tolerance) then
+            ! a Newton correction below the tolerance ends the iteration, even where
+            ! rounding puts x_new on the bracket end just moved to x
+            if (ieee_is_finite(x_new) .and. abs(x_new - x) <= tolerance) then
+                x = x_new
                 status = status_ok
                 return
             end if
-            ! quadratic convergence seen: the error of x is about |dx|^3/|dx_previous|^2
-            if (steps > 1 .and. abs(dx) <= 1.0e-4_qp*abs(dx_previous)) then
+            ! otherwise bisect when the Newton step leaves the bracket
+            newton_step = ieee_is_finite(x_new) .and. x_new > a .and. x_new < b
+            if (.not. newton_step) x_new = 0.5_qp*(a + b)
+            dx = x_new - x
+            x = x_new
+            tolerance = rel_tol*abs(x) + abs_tol
+            if (b - a <= tolerance) then
+                status = status_ok
+                return
+            end if
+            ! two Newton steps in a row converging quadratically: the error of x is
+            ! about |dx|^3/|dx_previous|^2, so the confirming evaluation can be skipped
+            if (newton_step .and. previous_newton .and. &
+                abs(dx) <= 1.0e-4_qp*abs(dx_previous)) then
                 predicted = abs(dx)*(abs(dx)/abs(dx_previous))**2
                 if (predicted <= tolerance) then
                     status = status_ok
@@ -96,6 +106,7 @@ contains
                 end if
             end if
             dx_previous = dx
+            previous_newton = newton_step
             status = status_no_convergence
         end do
     end subroutine newton_bracketed

@@ -46,8 +46,7 @@ module inverse_square
     integer, parameter :: level_coarse = 2
 
     !> Most Gauss nodes on one panel: the worst panel (R -> 0, a whole half-arch in the
-    !! eta variable) needs 46 for Theta; the s and t pass always uses this many (its
-    !! extra singularities, zeros of D, are not located in closed form): 8e-36 there.
+    !! eta variable) needs 46 for Theta, 48 for s and t (8e-36 there).
     integer, parameter :: max_nodes = 48
     !> Fewest Gauss nodes on a panel.
     integer, parameter :: min_nodes = 6
@@ -279,11 +278,10 @@ contains
 
         sums = 0.0_qp
         if (upper <= 0.0_qp) return
-        if (want_length_time) then
-            j = max_nodes/2
-        else
-            j = nodes_needed(big_r, upper, from_apse, digits)/2
-        end if
+        j = nodes_needed(big_r, upper, from_apse, digits)/2
+        ! s and t converge at the rate Theta does (their extra zeros, of D, lie farther
+        ! out: at tau = -1 as R -> 0); 4 more nodes cover their larger constants
+        if (want_length_time) j = min(max_nodes/2, j + 2)
         associate (rule => model%gauss(j))
         do k = 1, rule%n
             v = upper*rule%offset(k)

@@ -1,0 +1,184 @@
+#!/usr/bin/env python3
+"""Benchmark: the quad-precision solver against SciPy and mpmath, in one run.
+
+Usage::
+
+    .venv/bin/python scripts/bench.py [--n 10000] [--repeats 5] [--scipy 40]
+                                      [--mpmath 3] [--seed 2026]
+
+1. Generates N random accessible endpoints (rho uniform in [0.01, 1], psi uniform in
+   (0, 2 pi/3)) into bench-out/bench.nml.
+2. Times the Fortran default solver on all of them with `brachistochrone-bench`
+   (release build, one thread, median of REPEATS passes over the table).
+3. Times SciPy in double precision (QUADPACK on the paper's transformed integrals
+   (65), (77), (81), brentq on the bracket (0, rho]) on the first K endpoints, and
+   mpmath at 34 digits (mp.quad on the same integrals, findroot with a bracket) on
+   the first M.
+4. Prints time per endpoint, endpoints per second and the ratios, plus the digits
+   to which SciPy and mpmath agree with the Fortran results on their samples.
+The machine is shared: compare ratios measured in the same run, not absolute times.
+"""
+import argparse
+import math
+import pathlib
+import random
+import statistics
+import subprocess
+import sys
+import time
+
+import mpmath as mp
+from scipy.optimize import brentq
+
+ROOT = pathlib.Path(__file__).resolve().parents[1]
+FPM = str(ROOT / ".venv" / "bin" / "fpm")
+
+
+def endpoints(n, seed):
+    rng = random.Random(seed)
+    return [(f"{rng.uniform(0.01, 1.0):.17g}", f"{rng.uniform(1e-9, 2 * math.pi / 3 - 1e-9):.17g}")
+            for _ in range(n)]
+
+
+def write_nml(path, rows):
+    path.write_text("&endpoints\n n = %d\n rho = %s\n psi = %s\n/\n" % (
+        len(rows), ",\n  ".join(r for r, _ in rows), ",\n  ".join(p for _, p in rows)))
+
+
+def fpm_exe(name):
+    out = subprocess.run([FPM, "run", "--profile", "release", "--runner", "echo", name],
+                         cwd=ROOT, check=True, capture_output=True, text=True).stdout
+    return str(ROOT / out.strip().splitlines()[-1])
+
+
+# The alternatives are written as a careful Python user would: the paper's smooth
+# transformed integrals (65), (77), (81) with the limits as atan2 of square roots,
+# adaptive quadrature, and a bracketed root finder on (0, rho].
+def paper_integrals(lib, quad, r, big_r):
+    """Theta(r,R) (65), S(r,R) (77), T(r,R) (81) with math/mpmath `lib` and `quad`."""
+    omr = 1 - big_r
+    lower = lib.atan2(lib.sqrt(r - big_r), lib.sqrt(big_r * (1 - r)))
+    zeta = 2 * lib.atan2(lib.sqrt(1 - r), lib.sqrt(r - big_r))
+
+    def f_theta(lam):
+        z = lib.cos(lam) ** 2 + big_r * lib.sin(lam) ** 2
+        return 2 * (z - big_r) / lib.sqrt(z * z + omr * z + omr)
+
+    def f_s(y):
+        x = y * y + big_r
+        return 2 * x / lib.sqrt(x + big_r + big_r ** 2 / (omr * x))
+
+    def f_t(angle):
+        x = (1 + big_r + omr * lib.cos(angle)) / 2
+        return x * x / lib.sqrt(2 * (x * x + big_r * x + big_r ** 2 / omr))
+
+    return (quad(f_theta, lower, lib.pi / 2), quad(f_s, lib.sqrt(r - big_r), lib.sqrt(omr)),
+            quad(f_t, 0, zeta))
+
+
+def solve_with(lib, quad, root, rho, psi):
+    second = rho == 1 or psi > paper_integrals(lib, quad, rho, rho)[0]
+
+    def f(big_r):
+        value = paper_integrals(lib, quad, rho, big_r)[0]
+        if second:
+            value = 2 * paper_integrals(lib, quad, big_r, big_r)[0] - value
+        return value - psi
+
+    big_r = root(f, rho)
+    _, s, t = paper_integrals(lib, quad, rho, big_r)
+    if second:
+        _, s_apse, t_apse = paper_integrals(lib, quad, big_r, big_r)
+        s, t = 2 * s_apse - s, 2 * t_apse - t
+    return big_r, s, t
+
+
+def scipy_solve(rho_s, psi_s):
+    """Double precision: QUADPACK (epsrel 1e-13) and brentq."""
+    from scipy.integrate import quad
+    quad13 = lambda f, a, b: quad(f, a, b, epsabs=0, epsrel=1e-13, limit=200)[0]
+    root = lambda f, rho: brentq(f, 1e-12 * rho, rho, xtol=1e-17, rtol=1e-15)
+    return solve_with(math, quad13, root, float(rho_s), float(psi_s))
+
+
+def mp_solve(rho_s, psi_s):
+    """34 digits: mp.quad (tanh-sinh) and findroot (Anderson-Bjorck on the bracket)."""
+    root = lambda f, rho: mp.findroot(f, (rho * mp.mpf("1e-12"), rho), solver="anderson",
+                                      tol=mp.mpf(10) ** (-2 * mp.mp.dps + 4))
+    return solve_with(mp, lambda f, a, b: mp.quad(f, [a, b]), root, mp.mpf(rho_s),
+                      mp.mpf(psi_s))
+
+
+def timed(function, rows):
+    times, results = [], []
+    for rho_s, psi_s in rows:
+        start = time.perf_counter()
+        results.append(function(rho_s, psi_s))
+        times.append(time.perf_counter() - start)
+    return statistics.median(times), results
+
+
+def fortran_results(rows, out_dir):
+    nml = out_dir / "sample.nml"
+    write_nml(nml, rows)
+    csv = out_dir / "sample.csv"
+    subprocess.run([fpm_exe("brachistochrone"), str(nml), "--csv", str(csv), "--force"],
+                   check=True, capture_output=True)
+    lines = [l for l in csv.read_text().splitlines() if not l.startswith("#")][1:]
+    return [tuple(mp.mpf(x) for x in l.split(",")[3:6]) for l in lines]
+
+
+def agreement(reference, other):
+    worst = 99.0
+    for ref, oth in zip(reference, other):
+        for a, b in zip(ref, oth):
+            diff = abs(mp.mpf(b) / a - 1)
+            worst = min(worst, 99.0 if diff == 0 else float(-mp.log10(diff)))
+    return worst
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--n", type=int, default=10000, help="endpoints in the batch")
+    parser.add_argument("--repeats", type=int, default=5, help="passes of the Fortran timing")
+    parser.add_argument("--scipy", type=int, default=40, help="endpoints timed with SciPy")
+    parser.add_argument("--mpmath", type=int, default=3, help="endpoints timed with mpmath")
+    parser.add_argument("--seed", type=int, default=2026)
+    args = parser.parse_args(argv)
+
+    out_dir = ROOT / "bench-out"
+    out_dir.mkdir(exist_ok=True)
+    rows = endpoints(args.n, args.seed)
+    write_nml(out_dir / "bench.nml", rows)
+    subprocess.run([FPM, "build", "--profile", "release"], cwd=ROOT, check=True,
+                   capture_output=True)
+    bench = subprocess.run([fpm_exe("brachistochrone-bench"), str(out_dir / "bench.nml"),
+                            str(args.repeats)], check=True, capture_output=True, text=True)
+    report = dict(line.split(" = ") for line in bench.stdout.splitlines())
+    fortran_us = float(report["median_us_per_endpoint"])
+
+    scipy_s, scipy_results = timed(scipy_solve, rows[:args.scipy])
+    mp.mp.dps = 34
+    mp_s, mp_results = timed(mp_solve, rows[:args.mpmath])
+    sample = fortran_results(rows[:max(args.scipy, args.mpmath)], out_dir)
+
+    print(f"batch: {args.n} random accessible endpoints (seed {args.seed}), "
+          f"{report['failed']} failed; {report['mean_upsilon_evaluations']} "
+          f"Upsilon evaluations per endpoint")
+    print(f"{'method':34} {'us/endpoint':>12} {'endpoints/s':>12} {'ratio':>8} {'digits':>7}")
+    rows_out = [
+        ("Fortran real(16), this program", fortran_us, 1.0, "32+"),
+        (f"SciPy double (median of {args.scipy})", scipy_s * 1e6, scipy_s * 1e6 / fortran_us,
+         f"{agreement(sample, scipy_results):.1f}"),
+        (f"mpmath 34 digits (median of {args.mpmath})", mp_s * 1e6, mp_s * 1e6 / fortran_us,
+         f"{agreement(sample, mp_results):.1f}"),
+    ]
+    for name, us, ratio, digits in rows_out:
+        print(f"{name:34} {us:12.1f} {1e6 / us:12.1f} {ratio:8.1f} {digits:>7}")
+    print("ratio = time per endpoint / Fortran's; digits = fewest significant digits of "
+          "R, s, t agreeing with the Fortran results on that sample")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
