@@ -42,7 +42,7 @@ contains
     !! Needs f(lo) and f(hi) of opposite signs (or one of them zero); only their signs are
     !! used. Converged when the predicted error is <= rel_tol*|x| + abs_tol.
     pure subroutine newton_bracketed(fun, lo, f_lo, hi, f_hi, x0, rel_tol, abs_tol, &
-                                     max_steps, x, steps, status)
+                                     max_steps, x, steps, status, curvature)
         class(root_function), intent(in) :: fun !! the function
         real(qp), intent(in) :: lo, hi          !! bracket, lo < hi
         real(qp), intent(in) :: f_lo, f_hi      !! f at the bracket ends (signs only)
@@ -53,7 +53,12 @@ contains
         real(qp), intent(out) :: x              !! the root
         integer, intent(out) :: steps           !! evaluations of f made
         integer, intent(out) :: status          !! status_ok, status_no_convergence, ...
-        real(qp) :: a, b, fx, dfx, dx, dx_previous, x_new, tolerance, predicted
+        !> In: a bound on K = |f''/(2f')| near the root, measured by an earlier run on a
+        !! nearby function (0 if unknown); then one Newton step dx leaves an error of
+        !! about K dx^2 and the run may stop after it. Out: the largest K measured here
+        !! from consecutive Newton steps well above the tolerance.
+        real(qp), intent(inout), optional :: curvature
+        real(qp) :: a, b, fx, dfx, dx, dx_previous, x_new, tolerance, predicted, known_k
         logical :: increasing, newton_step, previous_newton
 
         steps = 0
@@ -64,6 +69,11 @@ contains
         if (.not. ieee_is_finite(x)) x = 0.5_qp*(a + b)
         dx_previous = huge(1.0_qp)
         previous_newton = .false.
+        known_k = 0.0_qp
+        if (present(curvature)) then
+            known_k = max(curvature, 0.0_qp)
+            curvature = 0.0_qp
+        end if
         status = status_no_convergence
         do while (steps < max_steps)
             call fun%evaluate(x, fx, dfx, status)
@@ -104,6 +114,18 @@ contains
                     status = status_ok
                     return
                 end if
+            end if
+            ! with the curvature known from an earlier run: error about K dx^2 (x4 margin)
+            if (newton_step .and. known_k > 0.0_qp) then
+                if (4.0_qp*known_k*dx*dx <= tolerance) then
+                    status = status_ok
+                    return
+                end if
+            end if
+            ! measure K = |dx|/|dx_previous|^2 while the steps are far above the noise
+            if (present(curvature) .and. newton_step .and. previous_newton .and. &
+                abs(dx) > 1.0e3_qp*tolerance) then
+                curvature = max(curvature, abs(dx)/dx_previous**2)
             end if
             dx_previous = dx
             previous_newton = newton_step

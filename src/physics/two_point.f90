@@ -207,7 +207,7 @@ contains
         type(upsilon_function) :: fun
         type(arch_values) :: values
         real(qp) :: apse_angle_rho, half, f_half, f_end, lo, hi, f_lo, f_hi, x, x0
-        real(qp) :: big_r, d, log_lo, theta_half
+        real(qp) :: big_r, d, log_lo, theta_half, slope, curvature
         integer :: steps, status, probe
         logical :: done, low_region
 
@@ -228,10 +228,10 @@ contains
             ! rules unless the sign is in doubt
             half = 0.5_qp*rho
             values = model%evaluate_arch(level_coarse, fun%second, rho, half, rho - half, &
-                                         .false., .false.)
+                                         .true., .false.)
             if (abs(values%angle - psi) < 1.0e-10_qp*psi) then
                 values = model%evaluate_arch(level_fine, fun%second, rho, half, &
-                                             rho - half, .false., .false.)
+                                             rho - half, .true., .false.)
             end if
             f_half = values%angle - psi
             theta_half = values%angle
@@ -241,24 +241,27 @@ contains
                 low_region = f_half >= 0.0_qp
             end if
             solution%steps = 1
+            curvature = 0.0_qp
             if (.not. low_region) then
                 ! unknown u = sqrt(rho - R) in [0, sqrt(rho/2)]; Upsilon(u=0) = Theta(rho,rho)
                 fun%unknown = unknown_u
                 lo = 0.0_qp
                 hi = sqrt(rho - half)
-                f_end = apse_angle_rho - psi
-                f_lo = f_end
+                f_lo = apse_angle_rho - psi
                 f_hi = f_half
-                x0 = hi*f_end/(f_end - f_half)
+                slope = -2.0_qp*hi*values%angle_dr_smooth &
+                        - 2.0_qp*values%boundary_sign*values%boundary
+                x0 = quadratic_start(f_lo, hi, f_hi, slope)
             else if (fun%second) then
                 ! unknown R in [0, rho/2]; Upsilon(0+) = 2 pi/3
                 fun%unknown = unknown_r
                 lo = 0.0_qp
                 hi = half
-                f_end = inaccessible_angle - psi
-                f_lo = f_end
+                f_lo = inaccessible_angle - psi
                 f_hi = f_half
-                x0 = hi*f_end/(f_end - f_half)
+                slope = values%angle_dr_smooth &
+                        + values%boundary_sign*values%boundary/sqrt(rho - half)
+                x0 = quadratic_start(f_lo, hi, f_hi, slope)
             else
                 ! first half-arch, small R: Theta(rho,R) ~ C R^(3/2); unknown log R first
                 fun%unknown = unknown_log_r
@@ -284,17 +287,17 @@ contains
                 x0 = exp(x)
             end if
             if (fun%unknown /= unknown_r .or. fun%second) then
-                ! 15-digit phase
+                ! 17-digit phase, which also measures the curvature of Upsilon - psi
                 fun%level = level_coarse
                 call newton_bracketed(fun, lo, f_lo, hi, f_hi, x0, 1.0e-13_qp, 0.0_qp, &
-                                      max_steps, x, steps, status)
+                                      max_steps, x, steps, status, curvature)
                 solution%steps = solution%steps + steps
                 x0 = x
             end if
-            ! full-precision phase
+            ! full-precision phase: usually one Newton step from the 17-digit root
             fun%level = level_fine
             call newton_bracketed(fun, lo, f_lo, hi, f_hi, x0, 4.0_qp*eps_qp, &
-                                  tiny(1.0_qp), max_steps, x, steps, status)
+                                  tiny(1.0_qp), max_steps, x, steps, status, curvature)
             solution%steps = solution%steps + steps
             if (status /= status_ok) then
                 solution%status = status
@@ -310,6 +313,31 @@ contains
         end if
         call finish(model, solution, fun%second, big_r, d)
     end function solve_endpoint
+
+    !> First iterate on [0, h]: the root of the quadratic through F(0) = f0, F(h) = fh
+    !! with F'(h) = slope (exact for rho = 1, where F(u) = pi u^2 - psi + O(u^4));
+    !! regula falsi when that root is not inside (0, h).
+    pure function quadratic_start(f0, h, fh, slope) result(x)
+        real(qp), intent(in) :: f0, h, fh, slope
+        real(qp) :: x
+        real(qp) :: a, b, c, discriminant, q
+        x = h*f0/(f0 - fh)
+        a = f0
+        c = (f0 + slope*h - fh)/(h*h)
+        b = slope - 2.0_qp*c*h
+        discriminant = b*b - 4.0_qp*a*c
+        if (discriminant < 0.0_qp) return
+        q = -0.5_qp*(b + sign(sqrt(discriminant), b))
+        if (q /= 0.0_qp) then
+            if (a/q > 0.0_qp .and. a/q < h) then
+                x = a/q
+                return
+            end if
+        end if
+        if (c /= 0.0_qp) then
+            if (q/c > 0.0_qp .and. q/c < h) x = q/c
+        end if
+    end function quadratic_start
 
     !> Arclength and time at B once R-bar is known.
     pure subroutine finish(model, solution, second, big_r, d)
