@@ -79,7 +79,7 @@ contains
         call expect_error('build/test_psi.nml', '&endpoints n = 1, rho = 0.5, psi = -1 /', &
                           'psi(1)', 'negative psi')
         call expect_error('build/test_name.nml', '&endpoints n = 1, rho = 0.5, psi = 1, '// &
-                          'phi = 2 /', 'could not be read', 'unknown variable')
+                          'phi = 2 /', 'unknown variable "phi"', 'unknown variable')
         call expect_error('build/test_r1.nml', '&endpoints n = 1, rho = 0.5, psi = 1, '// &
                           'r0 = 0.3 /', 'r1(1)', 'r0 without r1')
         call expect_error('build/test_bign.nml', '&endpoints n = 2000000000, rho = 0.5, '// &

@@ -1,6 +1,6 @@
 !> Reading and validating an endpoint table from a namelist file.
 !!
-!! The file holds one group (more may follow; they are ignored here):
+!! The file holds the group below (other groups may follow; they are ignored):
 !!
 !!     &endpoints
 !!       n   = 2                 ! number of endpoints, 1 <= n <= max_endpoints
@@ -11,32 +11,37 @@
 !!       secant_tolerance = 1e-16 ! optional: the secant stops at |R_n - R_(n-1)| < this
 !!     /
 !!
-!! gfortran's own namelist diagnostics are poor (a missing group, a missing '/' and an
-!! empty file all read as "End of file"), so the file is first scanned here: the group
-!! and `n` are located, the arrays are sized n+1 and filled with a sentinel, and after
-!! the read every array is checked for too few or too many values. Every problem found
-!! is reported (file, group, variable, line, what a valid value looks like); the caller
-!! decides what to do with them. Values are read straight into real(qp).
+!! The file is checked in three passes and every problem is reported (file, line,
+!! group, variable, row, and what a valid value looks like): (1) `namelist_scan` finds
+!! the group, its end, every name and value token, so unknown names, values that are not
+!! numbers and a missing '/' are named precisely; (2) `n` sizes the arrays (n + 1, filled
+!! with a sentinel) and gfortran's `read(nml=)` assigns the values, straight into
+!! real(qp); (3) the arrays are checked for too few or too many values, NaN, Infinity,
+!! ranges and r0/r1 pairs. Memory is proportional to the table.
 module endpoint_input
     use brachistochrone_kinds, only: qp, pi
+    use namelist_scan, only: group_scan, scan_group, lower
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     implicit none
     private
 
-    public :: endpoint_table, read_endpoint_file, max_endpoints, group_name
+    public :: endpoint_table, message, read_endpoint_file, max_endpoints, group_name
+    public :: variable_names
 
     !> Largest table accepted (memory grows linearly: about 100 bytes per endpoint).
     integer, parameter :: max_endpoints = 10000000
     !> The namelist group read.
     character(len=*), parameter :: group_name = 'endpoints'
+    !> Its variables.
+    character(len=*), parameter :: variable_names = 'n, rho, psi, r0, r1, secant_tolerance'
     !> Value no input can produce: marks an array element the namelist did not set.
     real(qp), parameter :: unset = -huge(1.0_qp)
-    !> At most this many per-row messages are listed; the rest are counted.
+    !> At most this many per-row messages are listed per variable; the rest are counted.
     integer, parameter :: max_row_messages = 20
 
     !> One message per problem found in the input.
     type :: message
-        character(len=:), allocatable :: text
+        character(len=:), allocatable :: text !! the complete message
     end type message
 
     !> The validated endpoint table.
@@ -55,12 +60,13 @@ module endpoint_input
 contains
 
     !> Read `path` into `table`. On return `size(table%errors) == 0` when the table is
-    !! valid; otherwise each element is one complete message and the arrays may be empty.
+    !! valid; otherwise each element is one complete message and the arrays are empty.
     subroutine read_endpoint_file(path, table)
-        character(len=*), intent(in) :: path      !! namelist file
+        character(len=*), intent(in) :: path       !! namelist file
         type(endpoint_table), intent(out) :: table !! the table and its problems
         character(len=:), allocatable :: text
-        integer :: unit, ios, n, n_line, group_line, i, rows
+        type(group_scan) :: scan
+        integer :: unit, ios, n, a_rho, a_psi, a_r0, a_r1
         character(len=512) :: io_message
         real(qp), allocatable :: rho(:), psi(:), r0(:), r1(:)
         real(qp) :: secant_tolerance
@@ -73,28 +79,26 @@ contains
             call add(table, path//': cannot read the file: '//trim(io_message))
             return
         end if
-        group_line = find_group(text)
-        if (group_line == 0) then
-            call add(table, path//': no namelist group &'//group_name//' found; the file '// &
-                     'must contain a group like  &'//group_name// &
+
+        ! pass 1: the group's syntax
+        scan = scan_group(text, group_name)
+        if (.not. scan%found) then
+            call add(table, path//': no namelist group &'//group_name//' found'// &
+                     trim(merge(' (the file is empty)', '                    ', &
+                                len_trim(text) == 0))// &
+                     '; the file must contain a group like  &'//group_name// &
                      ' n = 2, rho = 0.5, 0.9, psi = 1.0, 0.4 /')
             return
         end if
-        call find_integer(text, 'n', n, n_line, ios)
-        if (n_line == 0) then
-            call add(table, located(path, group_line, 'n')//'is missing; set it to the '// &
-                     'number of endpoints, for example  n = 5')
-            return
-        else if (ios /= 0) then
-            call add(table, located(path, n_line, 'n')//'is not a whole number; write '// &
-                     'for example  n = 5')
-            return
-        else if (n < 1 .or. n > max_endpoints) then
-            call add(table, located(path, n_line, 'n')//'= '//int_text(n)// &
-                     ' is out of range; it must be 1 <= n <= '//int_text(max_endpoints))
+        if (len(scan%problem) > 0) then
+            call add(table, at(path, scan%problem_line)//'group &'//group_name//': '// &
+                     scan%problem)
             return
         end if
+        call check_tokens(table, text, scan, n)
+        if (size(table%errors) > 0) return
 
+        ! pass 2: gfortran assigns the values
         allocate (rho(n + 1), psi(n + 1), r0(n + 1), r1(n + 1))
         rho = unset
         psi = unset
@@ -106,46 +110,31 @@ contains
         if (ios == 0) read (unit, nml=endpoints, iostat=ios, iomsg=io_message)
         close (unit)
         if (ios /= 0) then
-            call add(table, path//': group &'//group_name//' (line '// &
-                     int_text(group_line)//'): the namelist could not be read: '// &
-                     trim(io_message)//'. Check the names (n, rho, psi, r0, r1, '// &
-                     'secant_tolerance), that values are numbers separated by commas or '// &
-                     'blanks, and that the group ends with /')
+            call add(table, at(path, scan%line)//'group &'//group_name// &
+                     ': the namelist read failed: '//trim(io_message))
             return
         end if
 
-        call check_array(table, text, 'rho', rho, n, .true.)
-        call check_array(table, text, 'psi', psi, n, .true.)
-        call check_array(table, text, 'r0', r0, n, .false.)
-        call check_array(table, text, 'r1', r1, n, .false.)
+        ! pass 3: counts, values, ranges
+        a_rho = assignment_of(scan, 'rho')
+        a_psi = assignment_of(scan, 'psi')
+        a_r0 = assignment_of(scan, 'r0')
+        a_r1 = assignment_of(scan, 'r1')
+        call check_array(table, text, scan, 'rho', a_rho, rho, n, .true.)
+        call check_array(table, text, scan, 'psi', a_psi, psi, n, .true.)
+        call check_array(table, text, scan, 'r0', a_r0, r0, n, .false.)
+        call check_array(table, text, scan, 'r1', a_r1, r1, n, .false.)
         if (.not. ieee_is_finite(secant_tolerance) .or. secant_tolerance <= 0.0_qp) then
-            call add(table, located(path, find_line(text, 'secant_tolerance'), &
-                     'secant_tolerance')//'must be a positive number, for example 1e-16')
+            call add(table, at(path, line_of(scan, 'secant_tolerance'))//'group &'// &
+                     group_name//', variable secant_tolerance: must be a positive '// &
+                     'number, for example 1e-16')
         end if
-
-        rows = 0
-        do i = 1, n
-            if (rho(i) /= unset .and. ieee_is_finite(rho(i)) .and. &
-                (rho(i) <= 0.0_qp .or. rho(i) > 1.0_qp)) then
-                call add_row(table, text, 'rho', i, rho(i), &
-                             'must satisfy 0 < rho <= 1 (A is at radius 1)', rows)
-            end if
-            if (psi(i) /= unset .and. ieee_is_finite(psi(i)) .and. &
-                (psi(i) < 0.0_qp .or. psi(i) > pi)) then
-                call add_row(table, text, 'psi', i, psi(i), &
-                             'must satisfy 0 <= psi <= pi radians (by symmetry use '// &
-                             '2*pi - psi for an angle beyond pi)', rows)
-            end if
-            if ((r0(i) == unset) .neqv. (r1(i) == unset)) then
-                call add_row(table, text, merge('r1', 'r0', r1(i) == unset), i, 0.0_qp, &
-                             'is missing: give both r0 and r1 for a row (the paper''s '// &
-                             'secant method) or neither (the bracketing solver)', rows)
-            end if
-        end do
-        if (rows > max_row_messages) then
-            call add(table, path//': ... and '//int_text(rows - max_row_messages)// &
-                     ' more problems of this kind')
-        end if
+        call check_rows(table, text, scan, 'rho', a_rho, rho, n, &
+                        'must satisfy 0 < rho <= 1 (A is at radius 1)', in_rho_range)
+        call check_rows(table, text, scan, 'psi', a_psi, psi, n, &
+                        'must satisfy 0 <= psi <= pi radians (by symmetry use '// &
+                        '2*pi - psi for an angle beyond pi)', in_psi_range)
+        call check_pairs(table, text, scan, r0, r1, n, a_r0, a_r1)
         if (size(table%errors) > 0) return
 
         table%n = n
@@ -157,70 +146,257 @@ contains
         table%secant_tolerance = secant_tolerance
     end subroutine read_endpoint_file
 
-    !> Count, finiteness and presence of one array variable.
-    subroutine check_array(table, text, name, values, n, required)
+    !> Names known, value tokens well formed, n present and in range.
+    subroutine check_tokens(table, text, scan, n)
+        type(endpoint_table), intent(inout) :: table
+        character(len=*), intent(in) :: text
+        type(group_scan), intent(in) :: scan
+        integer, intent(out) :: n
+        integer :: a, t, ios, star, repeat, shown
+        character(len=:), allocatable :: name, token, value
+        real(qp) :: x
+        logical :: is_integer
+
+        n = 0
+        shown = 0
+        do a = 1, scan%count
+            name = trim(scan%name(a))
+            if (index(', '//variable_names//',', ', '//name//',') == 0) then
+                call add(table, at(table%path, scan%name_line(a))//'group &'//group_name// &
+                         ': unknown variable "'//name//'"; the variables are '// &
+                         variable_names)
+                cycle
+            end if
+            is_integer = name == 'n'
+            do t = scan%first(a), scan%last(a)
+                token = text(scan%start(t):scan%finish(t))
+                value = token
+                star = index(token, '*')
+                if (star > 0) then
+                    read (token(:star - 1), *, iostat=ios) repeat
+                    if (ios /= 0 .or. repeat < 1 .or. verify(token(:star - 1), '0123456789') /= 0) &
+                        then
+                        call bad_value('a repeat count r*value needs a whole number r >= 1')
+                        cycle
+                    end if
+                    value = token(star + 1:)
+                end if
+                if (len(value) == 0) cycle            ! null value: leaves the default
+                if (is_integer) then
+                    if (verify(value, '+-0123456789') /= 0) then
+                        call bad_value('write a whole number, for example  n = 5')
+                        cycle
+                    end if
+                else
+                    read (value, *, iostat=ios) x
+                    if (ios /= 0 .or. scan_bad_real(value)) then
+                        call bad_value('write a real number such as 0.25 or 1.5e-3')
+                        cycle
+                    end if
+                end if
+            end do
+        end do
+        if (size(table%errors) > 0) return
+
+        a = assignment_of(scan, 'n')
+        if (a == 0) then
+            call add(table, at(table%path, scan%line)//'group &'//group_name// &
+                     ', variable n: is missing; set it to the number of endpoints, for '// &
+                     'example  n = 5')
+            return
+        end if
+        if (scan%last(a) /= scan%first(a)) then
+            call add(table, at(table%path, scan%name_line(a))//'group &'//group_name// &
+                     ', variable n: needs exactly one value, for example  n = 5')
+            return
+        end if
+        token = text(scan%start(scan%first(a)):scan%finish(scan%first(a)))
+        read (token, *, iostat=ios) n
+        if (ios /= 0 .or. n < 1 .or. n > max_endpoints) then
+            call add(table, at(table%path, scan%name_line(a))//'group &'//group_name// &
+                     ', variable n: '//token//' is out of range; it must be 1 <= n <= '// &
+                     int_text(max_endpoints))
+        end if
+
+    contains
+
+        subroutine bad_value(advice)
+            character(len=*), intent(in) :: advice
+            shown = shown + 1
+            if (shown > max_row_messages) return
+            call add(table, at(table%path, scan%token_line(t))//'group &'//group_name// &
+                     ', variable '//name//': "'//token//'" is not a valid value; '//advice)
+        end subroutine bad_value
+
+    end subroutine check_tokens
+
+    !> Tokens list-directed input accepts as reals but no user means as one.
+    pure logical function scan_bad_real(value)
+        character(len=*), intent(in) :: value
+        scan_bad_real = verify(lower(value), '+-.0123456789edq') /= 0 .and. &
+                        .not. any(lower(value) == [character(len=9) :: 'nan', 'inf', &
+                                  'infinity', '+inf', '-inf', '+infinity', '-infinity'])
+    end function scan_bad_real
+
+    !> Count and finiteness of one array variable.
+    subroutine check_array(table, text, scan, name, a, values, n, required)
         type(endpoint_table), intent(inout) :: table
         character(len=*), intent(in) :: text, name
+        type(group_scan), intent(in) :: scan
+        integer, intent(in) :: a, n
         real(qp), intent(in) :: values(:)
-        integer, intent(in) :: n
         logical, intent(in) :: required
-        integer :: count_set, i, line, shown
+        integer :: count_set, i, shown
 
-        line = find_line(text, name)
         count_set = count(values(1:n) /= unset)
-        if (line == 0) then
-            if (required) call add(table, located(table%path, 0, name)//'is missing; '// &
-                                   'give n values, for example  '//name//' = 0.5, 0.9')
+        if (a == 0 .and. count_set == 0) then
+            if (required) call add(table, at(table%path, scan%line)//'group &'// &
+                                   group_name//', variable '//name//': is missing; give '// &
+                                   'n values, for example  '//name//' = 0.5, 0.9')
             return
         end if
         if (values(n + 1) /= unset) then
-            call add(table, located(table%path, line, name)//'has more than n = '// &
-                     int_text(n)//' values; give exactly n values or raise n')
+            call add(table, at(table%path, line_of(scan, name))//'group &'//group_name// &
+                     ', variable '//name//': has more than n = '//int_text(n)// &
+                     ' values; give exactly n values or raise n')
         end if
         if (required .and. count_set < n) then
-            call add(table, located(table%path, line, name)//'has '//int_text(count_set)// &
+            call add(table, at(table%path, line_of(scan, name))//'group &'//group_name// &
+                     ', variable '//name//': has '//int_text(count_set)// &
                      ' values but n = '//int_text(n)//'; give exactly n values')
         end if
         shown = 0
         do i = 1, n
-            if (values(i) /= unset .and. .not. ieee_is_finite(values(i))) then
-                call add_row(table, text, name, i, 0.0_qp, &
-                             'is not a finite number (NaN or Infinity); give a real number', &
-                             shown)
+            if (values(i) == unset .or. ieee_is_finite(values(i))) cycle
+            shown = shown + 1
+            if (shown <= max_row_messages) then
+                call add(table, at(table%path, row_line(text, scan, a, i))//'group &'// &
+                         group_name//', variable '//name//'('//int_text(i)//'): is not '// &
+                         'a finite number (NaN or Infinity); give a real number')
             end if
         end do
+        call add_more(table, name, shown)
     end subroutine check_array
 
-    !> Messages about single rows, at most `max_row_messages` of them per file.
-    subroutine add_row(table, text, name, row, value, problem, rows)
+    !> One range check over the rows of a variable.
+    subroutine check_rows(table, text, scan, name, a, values, n, rule, valid)
         type(endpoint_table), intent(inout) :: table
-        character(len=*), intent(in) :: text, name, problem
-        integer, intent(in) :: row
-        real(qp), intent(in) :: value
-        integer, intent(inout) :: rows
-        character(len=64) :: shown
-        rows = rows + 1
-        if (rows > max_row_messages) return
-        write (shown, '(g0.12)') value
-        if (value == 0.0_qp) shown = ''
-        call add(table, located(table%path, find_line(text, name), &
-                 name//'('//int_text(row)//')')// &
-                 trim(merge('= '//shown(1:40), repeat(' ', 42), len_trim(shown) > 0))// &
-                 ' '//problem)
-    end subroutine add_row
+        character(len=*), intent(in) :: text, name, rule
+        type(group_scan), intent(in) :: scan
+        integer, intent(in) :: a, n
+        real(qp), intent(in) :: values(:)
+        interface
+            pure logical function valid(x)
+                import :: qp
+                real(qp), intent(in) :: x
+            end function valid
+        end interface
+        integer :: i, shown
+        character(len=48) :: shown_value
+        shown = 0
+        do i = 1, n
+            if (values(i) == unset .or. .not. ieee_is_finite(values(i))) cycle
+            if (valid(values(i))) cycle
+            shown = shown + 1
+            if (shown > max_row_messages) cycle
+            write (shown_value, '(g0.12)') values(i)
+            call add(table, at(table%path, row_line(text, scan, a, i))//'group &'// &
+                     group_name//', variable '//name//'('//int_text(i)//') = '// &
+                     trim(adjustl(shown_value))//': '//rule)
+        end do
+        call add_more(table, name, shown)
+    end subroutine check_rows
 
-    !> "file:line: group &endpoints, variable v " prefix of a message.
-    pure function located(path, line, name) result(prefix)
-        character(len=*), intent(in) :: path, name
+    pure logical function in_rho_range(x)
+        real(qp), intent(in) :: x
+        in_rho_range = x > 0.0_qp .and. x <= 1.0_qp
+    end function in_rho_range
+
+    pure logical function in_psi_range(x)
+        real(qp), intent(in) :: x
+        in_psi_range = x >= 0.0_qp .and. x <= pi
+    end function in_psi_range
+
+    !> r0 and r1 come in pairs, per row.
+    subroutine check_pairs(table, text, scan, r0, r1, n, a_r0, a_r1)
+        type(endpoint_table), intent(inout) :: table
+        character(len=*), intent(in) :: text
+        type(group_scan), intent(in) :: scan
+        real(qp), intent(in) :: r0(:), r1(:)
+        integer, intent(in) :: n, a_r0, a_r1
+        integer :: i, shown
+        shown = 0
+        do i = 1, n
+            if ((r0(i) == unset) .eqv. (r1(i) == unset)) cycle
+            shown = shown + 1
+            if (shown > max_row_messages) cycle
+            if (r1(i) == unset) then
+                call add(table, at(table%path, row_line(text, scan, a_r0, i))//'group &'// &
+                         group_name//', variable r1('//int_text(i)//'): is missing; give '// &
+                         'both r0 and r1 for a row (the paper''s secant method) or neither '// &
+                         '(the bracketing solver)')
+            else
+                call add(table, at(table%path, row_line(text, scan, a_r1, i))//'group &'// &
+                         group_name//', variable r0('//int_text(i)//'): is missing; give '// &
+                         'both r0 and r1 for a row (the paper''s secant method) or neither '// &
+                         '(the bracketing solver)')
+            end if
+        end do
+        call add_more(table, 'r0, r1', shown)
+    end subroutine check_pairs
+
+    subroutine add_more(table, name, shown)
+        type(endpoint_table), intent(inout) :: table
+        character(len=*), intent(in) :: name
+        integer, intent(in) :: shown
+        if (shown > max_row_messages) then
+            call add(table, table%path//': group &'//group_name//', variable '//name// &
+                     ': ... and '//int_text(shown - max_row_messages)//' more rows like these')
+        end if
+    end subroutine add_more
+
+    !> The last unsubscripted assignment of a variable (0 if none).
+    pure integer function assignment_of(scan, name)
+        type(group_scan), intent(in) :: scan
+        character(len=*), intent(in) :: name
+        integer :: a
+        assignment_of = 0
+        do a = 1, scan%count
+            if (trim(scan%name(a)) == name .and. .not. scan%indexed(a)) assignment_of = a
+        end do
+    end function assignment_of
+
+    !> Line of the first assignment of a variable, subscripted or not (0 if none).
+    pure integer function line_of(scan, name)
+        type(group_scan), intent(in) :: scan
+        character(len=*), intent(in) :: name
+        integer :: a
+        line_of = 0
+        do a = scan%count, 1, -1
+            if (trim(scan%name(a)) == name) line_of = scan%name_line(a)
+        end do
+    end function line_of
+
+    !> Line holding row i of the variable assigned by assignment a (0 if unknown).
+    pure integer function row_line(text, scan, a, i)
+        character(len=*), intent(in) :: text
+        type(group_scan), intent(in) :: scan
+        integer, intent(in) :: a, i
+        row_line = 0
+        if (a > 0) row_line = scan%value_line(text, a, i)
+    end function row_line
+
+    !> "file:line: " (or "file: " when the line is unknown).
+    pure function at(path, line) result(prefix)
+        character(len=*), intent(in) :: path
         integer, intent(in) :: line
         character(len=:), allocatable :: prefix
         if (line > 0) then
-            prefix = path//':'//int_text(line)//': group &'//group_name//', variable '// &
-                     name//' '
+            prefix = path//':'//int_text(line)//': '
         else
-            prefix = path//': group &'//group_name//', variable '//name//' '
+            prefix = path//': '
         end if
-    end function located
+    end function at
 
     subroutine add(table, text)
         type(endpoint_table), intent(inout) :: table
@@ -246,149 +422,6 @@ contains
         end if
         close (unit)
     end subroutine read_text
-
-    !> Line (1-based) where `&endpoints` starts, 0 if absent. Comments are skipped.
-    pure function find_group(text) result(line)
-        character(len=*), intent(in) :: text
-        integer :: line
-        integer :: i, current
-        logical :: in_comment
-        line = 0
-        current = 1
-        in_comment = .false.
-        do i = 1, len(text)
-            if (text(i:i) == new_line('a')) then
-                current = current + 1
-                in_comment = .false.
-            else if (text(i:i) == '!') then
-                in_comment = .true.
-            else if (.not. in_comment .and. (text(i:i) == '&' .or. text(i:i) == '$')) then
-                if (i + len(group_name) <= len(text)) then
-                    if (lower(text(i + 1:i + len(group_name))) == group_name) then
-                        if (.not. is_name_char(text, i + len(group_name) + 1)) then
-                            line = current
-                            return
-                        end if
-                    end if
-                end if
-            end if
-        end do
-    end function find_group
-
-    !> Line of the first `name =` inside the group (0 if absent).
-    pure function find_line(text, name) result(line)
-        character(len=*), intent(in) :: text, name
-        integer :: line
-        integer :: position
-        call locate_assignment(text, name, position, line)
-    end function find_line
-
-    !> The integer after `name =`; line = 0 if there is no such assignment.
-    subroutine find_integer(text, name, value, line, ios)
-        character(len=*), intent(in) :: text, name
-        integer, intent(out) :: value, line, ios
-        integer :: position, finish
-        value = 0
-        ios = 0
-        call locate_assignment(text, name, position, line)
-        if (line == 0) return
-        finish = position
-        do while (finish <= len(text))
-            if (scan(text(finish:finish), ',/!'//new_line('a')) > 0) exit
-            finish = finish + 1
-        end do
-        read (text(position:finish - 1), *, iostat=ios) value
-        if (ios == 0 .and. verify(trim(adjustl(text(position:finish - 1))), &
-                                  '+-0123456789') /= 0) ios = 1
-    end subroutine find_integer
-
-    !> Position just after the '=' of `name =` (or `name(...) =`) within the group, and
-    !! its line; line = 0 when absent. Skips comments and quoted strings.
-    pure subroutine locate_assignment(text, name, position, line)
-        character(len=*), intent(in) :: text, name
-        integer, intent(out) :: position, line
-        integer :: i, j, current, group_start
-        logical :: in_comment, in_group
-        character :: quote
-        position = 0
-        line = 0
-        current = 1
-        in_comment = .false.
-        in_group = .false.
-        quote = ' '
-        group_start = 0
-        i = 1
-        do while (i <= len(text))
-            if (text(i:i) == new_line('a')) then
-                current = current + 1
-                in_comment = .false.
-            else if (in_comment) then
-                continue
-            else if (quote /= ' ') then
-                if (text(i:i) == quote) quote = ' '
-            else if (text(i:i) == '!') then
-                in_comment = .true.
-            else if (text(i:i) == '"' .or. text(i:i) == "'") then
-                quote = text(i:i)
-            else if (.not. in_group) then
-                if (text(i:i) == '&' .or. text(i:i) == '$') then
-                    if (i + len(group_name) <= len(text)) then
-                        if (lower(text(i + 1:i + len(group_name))) == group_name .and. &
-                            .not. is_name_char(text, i + len(group_name) + 1)) then
-                            in_group = .true.
-                            i = i + len(group_name)
-                        end if
-                    end if
-                end if
-            else if (text(i:i) == '/') then
-                return
-            else if (.not. is_name_char(text, i - 1) .and. i + len(name) - 1 <= len(text)) then
-                if (lower(text(i:i + len(name) - 1)) == name .and. &
-                    .not. is_name_char(text, i + len(name))) then
-                    j = i + len(name)
-                    do while (j <= len(text))
-                        if (text(j:j) /= ' ') exit
-                        j = j + 1
-                    end do
-                    if (j <= len(text)) then
-                        if (text(j:j) == '(') j = index(text(j:), ')') + j
-                    end if
-                    do while (j <= len(text))
-                        if (text(j:j) /= ' ') exit
-                        j = j + 1
-                    end do
-                    if (j <= len(text)) then
-                        if (text(j:j) == '=') then
-                            position = j + 1
-                            line = current
-                            return
-                        end if
-                    end if
-                end if
-            end if
-            i = i + 1
-        end do
-    end subroutine locate_assignment
-
-    pure logical function is_name_char(text, i)
-        character(len=*), intent(in) :: text
-        integer, intent(in) :: i
-        is_name_char = .false.
-        if (i < 1 .or. i > len(text)) return
-        is_name_char = scan(text(i:i), 'abcdefghijklmnopqrstuvwxyz' // &
-                            'ABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_') > 0
-    end function is_name_char
-
-    pure function lower(text) result(lowered)
-        character(len=*), intent(in) :: text
-        character(len=len(text)) :: lowered
-        integer :: i, code
-        lowered = text
-        do i = 1, len(text)
-            code = iachar(text(i:i))
-            if (code >= iachar('A') .and. code <= iachar('Z')) lowered(i:i) = achar(code + 32)
-        end do
-    end function lower
 
     pure function int_text(value) result(text)
         integer, intent(in) :: value

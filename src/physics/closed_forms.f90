@@ -27,12 +27,21 @@ contains
 
     !> Time t(r) to fall radially from rest at radius 1 to radius r, eq. (46):
     !! t(r) = [acos(2r-1)/2 + sqrt(r(1-r))]/sqrt(2), with acos(2r-1)/2 written as
-    !! atan2(sqrt(1-r), sqrt(r)). Precondition 0 <= r <= 1 (not checked: use
-    !! `radial_fall_time` for a checked call).
-    elemental function radial_time(r) result(t)
-        real(qp), intent(in) :: r !! radius, 0 <= r <= 1
+    !! atan2(sqrt(1-r), sqrt(r)). Pass `complement` = 1 - r when it is known more
+    !! accurately than 1 - r can be computed (r within a few ulps of 1 loses relative
+    !! precision in 1 - r, and t(r) ~ sqrt(2(1-r)) there). Precondition 0 <= r <= 1
+    !! (not checked: use `radial_fall_time` for a checked call).
+    elemental function radial_time(r, complement) result(t)
+        real(qp), intent(in) :: r                    !! radius, 0 <= r <= 1
+        real(qp), intent(in), optional :: complement !! 1 - r, if known exactly
         real(qp) :: t
-        t = (atan2(sqrt(1.0_qp - r), sqrt(r)) + sqrt(r*(1.0_qp - r)))/sqrt(2.0_qp)
+        real(qp) :: one_minus_r
+        if (present(complement)) then
+            one_minus_r = complement
+        else
+            one_minus_r = 1.0_qp - r
+        end if
+        t = (atan2(sqrt(one_minus_r), sqrt(r)) + sqrt(r*one_minus_r))/sqrt(2.0_qp)
     end function radial_time
 
     !> kappa(rho) = 2 t(0) - t(rho), eq. (75): the greatest lower bound of the time from A

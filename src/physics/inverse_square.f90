@@ -255,7 +255,7 @@ contains
             if (second) then
                 values%arclength = (one_minus_big_r + d) &
                                    + big_r*(from_start(3) + 2.0_qp*from_apse(3))
-                values%time = 2.0_qp*radial_time(big_r) - radial_time(r) &
+                values%time = 2.0_qp*radial_time(big_r, one_minus_big_r) - radial_time(r) &
                               + correction_scale*(from_start(4) + 2.0_qp*from_apse(4))
             else
                 values%arclength = one_minus_r + big_r*from_start(3)

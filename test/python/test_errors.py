@@ -18,9 +18,16 @@ CASES = [
     ("&endpoints n = 1, rho = 0.5, psi = -0.2 /\n", ["psi(1)", "0 <= psi <= pi"]),
     ("&endpoints n = 1, rho = 0.5, psi = Inf /\n", ["psi(1)", "not a finite number"]),
     ("&endpoints n = 1, rho = 0.5, psi = 1, r0 = 0.3 /\n", ["r1(1)", "give both r0 and r1"]),
-    ("&endpoints n = 1, rho = 0.5, psi = 1, speed = 2 /\n", ["could not be read"]),
+    ("&endpoints n = 1, rho = 0.5, psi = 1, speed = 2 /\n", ['unknown variable "speed"']),
+    ("&endpoints n = 2\n rho = 0.5, 0.6\n psi = 1, abc /\n",
+     [":3:", "variable psi", '"abc" is not a valid value']),
+    ("&endpoints n = 1, rho = 0.5, psi = 1\n", ["is not closed", "/"]),
+    ("&endpoints n = 1.5, rho = 0.5, psi = 1 /\n", ["variable n", "whole number"]),
+    ("&endpoints n = 1, rho = 0.5, psi = 1 = 2 /\n", ['"="']),
+    ("&endpoints n = 3, rho = 3*0.5, psi = 0.1, 0.2, 4.0 /\n", ["psi(3)", "0 <= psi <= pi"]),
     ("&endpoints n = 20000000, rho = 0.5, psi = 1 /\n", ["variable n", "out of range"]),
     ("&endpoints n = two, rho = 0.5, psi = 1 /\n", ["variable n", "whole number"]),
+    ("! only a comment\n", ["no namelist group &endpoints"]),
 ]
 
 
@@ -46,6 +53,23 @@ def test_all_problems_of_a_file_are_reported(run, tmp_path):
     assert result.returncode == 1
     for fragment in ("rho(2)", "rho(3)", "psi(2)", ":3:", ":4:"):
         assert fragment in result.stderr
+
+
+def test_rows_are_traced_to_their_lines(run, tmp_path):
+    nml = tmp_path / "long.nml"
+    nml.write_text("&endpoints\n n = 4\n rho = 0.5,\n       0.6,\n       0.7,\n"
+                   "       1.7\n psi = 4*0.1 /\n")
+    result = run(nml)
+    assert result.returncode == 1
+    assert f"{nml}:6: group &endpoints, variable rho(4) = 1.7" in result.stderr
+
+
+def test_repeat_counts_and_null_values_are_accepted(run, tmp_path):
+    nml = tmp_path / "ok.nml"
+    nml.write_text("&endpoints n = 3, rho = 3*0.5, psi = 2*0.1, 0.2,\n"
+                   " r0 = , 0.4, , r1 = , 0.2, /\n")
+    result = run(nml)
+    assert result.returncode == 0, result.stderr
 
 
 def test_missing_file(run, tmp_path):
