@@ -4,7 +4,7 @@ module test_io
     use brachistochrone_status, only: status_inaccessible
     use two_point, only: endpoint_solution, arch_inaccessible
     use endpoint_input, only: endpoint_table, read_endpoint_file
-    use result_output, only: format_real, csv_row
+    use result_output, only: format_real, csv_row, write_results_namelist
     use testing, only: check, section
     implicit none
     private
@@ -16,7 +16,45 @@ contains
     subroutine run_io_tests()
         call format_tests()
         call input_tests()
+        call namelist_round_trip()
     end subroutine run_io_tests
+
+    !> The namelist results read back with read(nml=) to the same bits.
+    subroutine namelist_round_trip()
+        type(endpoint_solution) :: written(4)
+        integer :: unit, ios, k
+        character(len=256) :: io_message
+        integer :: n, steps(4)
+        real(qp) :: rho(4), psi(4), r(4), s(4), t(4)
+        character(len=16) :: arch(4)
+        character(len=20) :: status(4)
+        namelist /results/ n, rho, psi, arch, r, s, t, steps, status
+        call section('io: namelist results round trip')
+        do k = 1, 4
+            written(k)%rho = 1.0_qp/real(k + 2, qp)
+            written(k)%psi = pi/real(k + 1, qp)
+            written(k)%apse_radius = 0.1_qp**(k*700)          ! down to 1e-2800
+            written(k)%arclength = 1.0_qp + epsilon(1.0_qp)*real(k, qp)
+            written(k)%time = nearest(pi, -1.0_qp)**k
+            written(k)%steps = k
+            written(k)%has_apse_radius = .true.
+            written(k)%has_arclength = .true.
+            written(k)%has_time = .true.
+        end do
+        open (newunit=unit, file='build/test_results.nml', status='replace', action='write')
+        call write_results_namelist(unit, written, ios, io_message)
+        close (unit)
+        call check(ios == 0, 'results namelist written')
+        open (newunit=unit, file='build/test_results.nml', status='old', action='read')
+        read (unit, nml=results, iostat=ios)
+        close (unit)
+        call check(ios == 0 .and. n == 4, 'results namelist read back')
+        call check(all(rho == written%rho) .and. all(psi == written%psi) .and. &
+                   all(r == written%apse_radius) .and. all(s == written%arclength) .and. &
+                   all(t == written%time) .and. all(steps == written%steps), &
+                   'every value reads back bit for bit')
+        call check(all(status == 'ok') .and. arch(1) == 'none', 'words read back')
+    end subroutine namelist_round_trip
 
     subroutine format_tests()
         real(qp) :: values(6), back

@@ -130,7 +130,7 @@ contains
 
         subroutine read_values()
             integer :: j, k, start_token, commas_seen
-            commas_seen = 0
+            commas_seen = 1       ! a comma straight after '=' is a null first value
             do
                 ! separators: blanks, new lines, comments, commas (a second comma in a
                 ! row is a null value)

@@ -1,22 +1,41 @@
-!> Writing solved endpoint tables: a readable table, CSV, and safe file replacement.
+!> Writing solved endpoint tables: readable table, CSV, namelist; provenance; safe files.
 !!
-!! Numbers are written with 36 significant digits, enough for every binary128 value to
-!! read back to the same bits. Files are written to a temporary name in the target
-!! directory and renamed into place only when complete, so a failed or killed run never
-!! leaves a partial file under the target name.
+!! Every output file starts with provenance (program and version, compiler and options,
+!! date, input path and rows, and the effective input as a namelist group, so a result
+!! file says how it was made and can be run again). Numbers have 36 significant digits,
+!! enough for every binary128 value to read back to the same bits. Files are written to
+!! a temporary name in the target directory and renamed into place only when complete:
+!! a failed or killed run never leaves a partial file under the target name, and an
+!! existing file is replaced only when the caller says so.
 module result_output
     use, intrinsic :: iso_c_binding, only: c_char, c_int, c_null_char
+    use, intrinsic :: iso_fortran_env, only: compiler_version, compiler_options
     use brachistochrone_kinds, only: qp
-    use brachistochrone_status, only: status_word
+    use brachistochrone_status, only: status_word, status_ok
+    use brachistochrone_version, only: program_name, program_version
     use two_point, only: endpoint_solution, arch_word
+    use endpoint_input, only: endpoint_table, group_name
     implicit none
     private
 
     public :: format_real, csv_header, csv_row, write_table_header, write_table_row
-    public :: commit_file, temporary_name
+    public :: output_request, write_outputs, provenance_lines, write_results_namelist
+    public :: commit_file, temporary_name, results_group_name, max_echoed_rows
 
     !> Header line of the CSV output.
     character(len=*), parameter :: csv_header = 'rho,psi,arch,R,s,t,steps,status'
+    !> Name of the namelist group of the namelist output.
+    character(len=*), parameter :: results_group_name = 'results'
+    !> The effective input echoed into provenance lists its arrays up to this many rows.
+    integer, parameter :: max_echoed_rows = 100000
+
+    !> Which files to write.
+    type :: output_request
+        character(len=:), allocatable :: csv_path   !! CSV file ('' for none)
+        character(len=:), allocatable :: nml_path   !! namelist results file ('' for none)
+        character(len=:), allocatable :: table_path !! readable table file ('' for none)
+        logical :: force = .false.                  !! replace existing files
+    end type output_request
 
     interface
         function c_rename(old, new) bind(c, name='rename') result(code)
@@ -29,6 +48,11 @@ module result_output
             integer(c_int) :: pid
         end function c_getpid
     end interface
+
+    !> A line of text, for lists of lines.
+    type :: line_text
+        character(len=:), allocatable :: text
+    end type line_text
 
 contains
 
@@ -55,7 +79,7 @@ contains
     end function format_real
 
     !> One CSV row: `rho,psi,arch,R,s,t,steps,status`; empty fields where a value does
-    !! not exist (R and s in the sector of inaccessibility, all three on bad input).
+    !! not exist (R and s in the sector of inaccessibility).
     pure function csv_row(solution) result(line)
         type(endpoint_solution), intent(in) :: solution !! the solved endpoint
         character(len=:), allocatable :: line
@@ -99,6 +123,197 @@ contains
         end if
     end subroutine write_table_row
 
+    !> Provenance: who made the results, how, from what. `date` is an ISO 8601 stamp.
+    function provenance_lines(table, first, last, date) result(lines)
+        type(endpoint_table), intent(in) :: table !! the input
+        integer, intent(in) :: first, last        !! rows solved
+        character(len=*), intent(in) :: date      !! when
+        type(line_text), allocatable :: lines(:)
+        lines = [line_text(program_name//' '//program_version), &
+                 line_text('compiler: '//compiler_version()), &
+                 line_text('compiler options: '//compiler_options()), &
+                 line_text('date: '//date), &
+                 line_text('input: '//table%path//', rows '//integer_text(first)//' to '// &
+                           integer_text(last)//' of '//integer_text(table%n)), &
+                 line_text('effective input:')]
+        lines = [lines, effective_input(table, first, last)]
+    end function provenance_lines
+
+    !> The input as read (after defaults), as a namelist group that reads back the same
+    !! rows: values in full precision, null values where a row has no estimates.
+    function effective_input(table, first, last) result(lines)
+        type(endpoint_table), intent(in) :: table
+        integer, intent(in) :: first, last
+        type(line_text), allocatable :: lines(:)
+        integer :: i, rows, count_lines, k
+        logical :: echo, estimates
+        rows = last - first + 1
+        echo = rows <= max_echoed_rows
+        estimates = echo .and. any(table%has_estimates(first:last))
+        count_lines = 4 + merge(2*(rows + 1), 1, echo) + merge(2*(rows + 1), 0, estimates)
+        allocate (lines(count_lines))
+        k = 0
+        call put('&'//group_name)
+        call put('  n = '//integer_text(rows))
+        call put('  secant_tolerance = '//format_real(table%secant_tolerance))
+        if (.not. echo) then
+            call put('  ! rho, psi, r0, r1: '//integer_text(rows)//' rows, more than '// &
+                     integer_text(max_echoed_rows)//' are not echoed; the rows of this '// &
+                     'file carry rho and psi')
+        else
+            call put('  rho =')
+            do i = first, last
+                call put('    '//format_real(table%rho(i))//',')
+            end do
+            call put('  psi =')
+            do i = first, last
+                call put('    '//format_real(table%psi(i))//',')
+            end do
+            if (estimates) then
+                call put('  r0 =')
+                do i = first, last
+                    call put_estimate(table%r0(i), table%has_estimates(i))
+                end do
+                call put('  r1 =')
+                do i = first, last
+                    call put_estimate(table%r1(i), table%has_estimates(i))
+                end do
+            end if
+        end if
+        call put('/')
+    contains
+        subroutine put(text)
+            character(len=*), intent(in) :: text
+            k = k + 1
+            lines(k)%text = text
+        end subroutine put
+        subroutine put_estimate(value, given)
+            real(qp), intent(in) :: value
+            logical, intent(in) :: given
+            if (given) then
+                call put('    '//format_real(value)//',')
+            else
+                call put('    ,')       ! a null value: this row has no estimates
+            end if
+        end subroutine put_estimate
+    end function effective_input
+
+    !> Write every requested file. status: 0 ok; 1 a target exists and force is off;
+    !! 3 an I/O error (the message says which file). Nothing partial is left behind.
+    subroutine write_outputs(request, table, first, last, solutions, date, status, message)
+        type(output_request), intent(in) :: request        !! which files
+        type(endpoint_table), intent(in) :: table          !! the input
+        integer, intent(in) :: first, last                 !! rows solved
+        type(endpoint_solution), intent(in) :: solutions(first:) !! their solutions
+        character(len=*), intent(in) :: date               !! provenance date
+        integer, intent(out) :: status                     !! 0, 1 or 3
+        character(len=:), allocatable, intent(out) :: message !! what went wrong
+        type(line_text), allocatable :: provenance(:)
+
+        status = 0
+        message = ''
+        provenance = provenance_lines(table, first, last, date)
+        call write_one(request%csv_path, 'csv')
+        if (status == 0) call write_one(request%nml_path, 'nml')
+        if (status == 0) call write_one(request%table_path, 'table')
+
+    contains
+
+        subroutine write_one(path, kind)
+            character(len=*), intent(in) :: path, kind
+            character(len=:), allocatable :: temporary
+            character(len=512) :: io_message
+            integer :: unit, ios, k, rename_status
+            logical :: exists
+            if (len(path) == 0) return
+            inquire (file=path, exist=exists)
+            if (exists .and. .not. request%force) then
+                status = 1
+                message = path//' exists; use --force to replace it, or choose another name'
+                return
+            end if
+            temporary = temporary_name(path)
+            open (newunit=unit, file=temporary, status='replace', action='write', &
+                  iostat=ios, iomsg=io_message)
+            if (ios /= 0) then
+                status = 3
+                message = 'cannot write '//path//': '//trim(io_message)
+                return
+            end if
+            select case (kind)
+            case ('csv')
+                do k = 1, size(provenance)
+                    if (ios == 0) write (unit, '(a)', iostat=ios, iomsg=io_message) &
+                        '# '//provenance(k)%text
+                end do
+                if (ios == 0) write (unit, '(a)', iostat=ios, iomsg=io_message) csv_header
+                do k = first, last
+                    if (ios /= 0) exit
+                    write (unit, '(a)', iostat=ios, iomsg=io_message) csv_row(solutions(k))
+                end do
+            case ('nml')
+                do k = 1, size(provenance)
+                    if (ios == 0) write (unit, '(a)', iostat=ios, iomsg=io_message) &
+                        '! '//provenance(k)%text
+                end do
+                if (ios == 0) call write_results_namelist(unit, solutions, ios, io_message)
+            case ('table')
+                do k = 1, size(provenance)
+                    if (ios == 0) write (unit, '(a)', iostat=ios, iomsg=io_message) &
+                        '# '//provenance(k)%text
+                end do
+                if (ios == 0) call write_table_header(unit)
+                do k = first, last
+                    call write_table_row(unit, k, solutions(k))
+                end do
+            end select
+            if (ios /= 0) then
+                close (unit, status='delete')
+                status = 3
+                message = 'cannot write '//path//': '//trim(io_message)
+                return
+            end if
+            close (unit, iostat=ios, iomsg=io_message)
+            if (ios == 0) call commit_file(temporary, path, rename_status)
+            if (ios /= 0 .or. rename_status /= 0) then
+                open (newunit=unit, file=temporary, iostat=ios)
+                close (unit, status='delete', iostat=ios)
+                status = 3
+                message = 'cannot put the finished output in place as '//path
+            end if
+        end subroutine write_one
+
+    end subroutine write_outputs
+
+    !> The results as the namelist group &results (n, rho, psi, arch, r, s, t, steps,
+    !! status), which `read(nml=)` gives back bit for bit. Where a value does not exist
+    !! (R and s when inaccessible) it is written as 0; `status` and `arch` say so.
+    subroutine write_results_namelist(unit, solutions, ios, io_message)
+        integer, intent(in) :: unit                        !! open formatted unit
+        type(endpoint_solution), intent(in) :: solutions(:) !! solved endpoints
+        integer, intent(out) :: ios                        !! iostat
+        character(len=*), intent(inout) :: io_message      !! iomsg
+        integer :: n, k
+        real(qp), allocatable :: rho(:), psi(:), r(:), s(:), t(:)
+        integer, allocatable :: steps(:)
+        character(len=16), allocatable :: arch(:)
+        character(len=20), allocatable :: status(:)
+        namelist /results/ n, rho, psi, arch, r, s, t, steps, status
+        n = size(solutions)
+        rho = solutions%rho
+        psi = solutions%psi
+        r = merge(solutions%apse_radius, 0.0_qp, solutions%has_apse_radius)
+        s = merge(solutions%arclength, 0.0_qp, solutions%has_arclength)
+        t = merge(solutions%time, 0.0_qp, solutions%has_time)
+        steps = solutions%steps
+        allocate (arch(n), status(n))
+        do k = 1, n
+            arch(k) = arch_word(solutions(k)%arch)
+            status(k) = status_word(solutions(k)%status)
+        end do
+        write (unit, nml=results, iostat=ios, iomsg=io_message)
+    end subroutine write_results_namelist
+
     !> Name of the temporary file used while writing `path` (same directory).
     function temporary_name(path) result(name)
         character(len=*), intent(in) :: path !! final file name
@@ -125,7 +340,7 @@ contains
         end if
     end function optional_real
 
-    !> Shortest form of an input value that reads back to the same binary128 number.
+    !> Shortest form of a value that reads back to the same binary128 number.
     pure function short_real(x) result(text)
         real(qp), intent(in) :: x
         character(len=:), allocatable :: text

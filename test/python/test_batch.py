@@ -1,0 +1,158 @@
+"""Batch features for pipelines: output formats, provenance, slices, threads, progress,
+validation-only runs, and the I/O error path."""
+import math
+import os
+import random
+import subprocess
+from decimal import Decimal
+
+import pytest
+
+from conftest import ROOT, read_csv
+
+
+def write_table(path, n, seed=7, estimates=False):
+    rng = random.Random(seed)
+    rho = [f"{rng.uniform(0.05, 1.0):.15f}" for _ in range(n)]
+    psi = [f"{rng.uniform(0.01, 2.05):.15f}" for _ in range(n)]
+    text = "&endpoints\n n = %d\n rho = %s\n psi = %s\n" % (n, ", ".join(rho), ", ".join(psi))
+    if estimates:
+        text += " r0 = %s\n r1 = %s\n" % (", ".join(f"{0.9 * float(r):.6f}" for r in rho),
+                                          ", ".join(f"{0.7 * float(r):.6f}" for r in rho))
+    path.write_text(text + "/\n")
+    return rho, psi
+
+
+@pytest.fixture
+def env_fixed_date(monkeypatch):
+    monkeypatch.setenv("SOURCE_DATE_EPOCH", "1700000000")
+
+
+def data_lines(path):
+    return [line for line in path.read_text().splitlines() if not line.startswith("#")]
+
+
+def test_provenance_and_effective_input(run, tmp_path, env_fixed_date):
+    nml = tmp_path / "in.nml"
+    write_table(nml, 3)
+    out = tmp_path / "out.csv"
+    assert run(nml, "--csv", out, "--no-table").returncode == 0
+    comments, header, rows = read_csv(out)
+    text = "\n".join(comments)
+    assert "# brachistochrone " in text and "compiler: GCC" in text
+    assert "compiler options:" in text
+    assert "date: 2023-11-14T22:13:20+0000" in text           # SOURCE_DATE_EPOCH
+    assert f"input: {nml}, rows 1 to 3 of 3" in text
+    # the echoed input is itself a valid input file giving the same results
+    echo = tmp_path / "echo.nml"
+    start = comments.index("# effective input:") + 1
+    echo.write_text("\n".join(c[2:] for c in comments[start:]) + "\n")
+    again = tmp_path / "again.csv"
+    assert run(echo, "--csv", again, "--no-table").returncode == 0
+    assert data_lines(again) == data_lines(out)
+
+
+def test_namelist_output_matches_csv(run, tmp_path):
+    nml = tmp_path / "in.nml"
+    write_table(nml, 4)
+    out_csv, out_nml = tmp_path / "out.csv", tmp_path / "out.nml"
+    assert run(nml, "--csv", out_csv, "--nml", out_nml, "--no-table").returncode == 0
+    text = out_nml.read_text()
+    assert text.startswith("! brachistochrone")
+    assert "&RESULTS" in text.upper()
+    _, _, rows = read_csv(out_csv)
+    body = text[text.upper().index("&RESULTS"):]
+    r_values = body.upper().split(" R=")[1].split("S=")[0]
+    numbers = [Decimal(x.strip()) for x in r_values.replace("\n", " ").split(",") if x.strip()]
+    assert [Decimal(r["R"]) for r in rows] == numbers[:len(rows)] or all(
+        abs(a - Decimal(r["R"])) < Decimal("1e-35") for a, r in zip(numbers, rows))
+
+
+def test_table_file(run, tmp_path):
+    nml = tmp_path / "in.nml"
+    write_table(nml, 2)
+    out = tmp_path / "out.txt"
+    result = run(nml, "--table", out, "--no-table")
+    assert result.returncode == 0 and result.stdout == ""
+    assert "R-bar = " in out.read_text()
+
+
+def test_threads_give_identical_bytes(run, tmp_path, env_fixed_date):
+    nml = tmp_path / "in.nml"
+    write_table(nml, 300, estimates=False)
+    one, two = tmp_path / "one.csv", tmp_path / "two.csv"
+    assert run(nml, "--csv", one, "--threads", "1", "--no-table").returncode == 0
+    assert run(nml, "--csv", two, "--threads", "2", "--no-table").returncode == 0
+    assert one.read_bytes() == two.read_bytes()
+
+
+def test_slices_merged_equal_the_whole(run, tmp_path, env_fixed_date):
+    nml = tmp_path / "in.nml"
+    write_table(nml, 23, estimates=True)
+    whole = tmp_path / "whole.csv"
+    assert run(nml, "--csv", whole, "--no-table").returncode in (0, 2)
+    parts = []
+    for first, last in ((1, 7), (8, 8), (9, 23)):
+        part = tmp_path / f"part{first}.csv"
+        result = run(nml, "--csv", part, "--first", first, "--last", last, "--no-table")
+        assert result.returncode in (0, 2), result.stderr
+        assert f"rows {first} to {last} of 23" in part.read_text()
+        parts.append(part)
+    merged = tmp_path / "merged.csv"
+    subprocess.run(["bash", str(ROOT / "scripts" / "merge_csv.sh"), str(merged), *map(str, parts)],
+                   check=True)
+    assert data_lines(merged) == data_lines(whole)
+
+
+def test_bad_slices_are_usage_errors(run, tmp_path):
+    nml = tmp_path / "in.nml"
+    write_table(nml, 5)
+    for args in (("--first", "0"), ("--first", "4", "--last", "2"), ("--last", "6"),
+                 ("--first", "x")):
+        result = run(nml, *args, "--csv", tmp_path / "o.csv")
+        assert result.returncode == 1, args
+        assert not (tmp_path / "o.csv").exists()
+
+
+def test_check_only(run, tmp_path):
+    nml = tmp_path / "in.nml"
+    write_table(nml, 5)
+    result = run(nml, "--check")
+    assert result.returncode == 0 and "5 endpoints, valid" in result.stdout
+    bad = tmp_path / "bad.nml"
+    bad.write_text("&endpoints n = 2, rho = 0.5, psi = 1, 1 /\n")
+    assert run(bad, "--check").returncode == 1
+
+
+def test_a_million_endpoints_validate(run, tmp_path):
+    """Memory proportional to the table, no small fixed maximum."""
+    n = 1_000_000
+    nml = tmp_path / "million.nml"
+    with nml.open("w") as f:
+        f.write(f"&endpoints\n n = {n}\n rho = {n}*0.5\n psi =\n")
+        for k in range(n // 1000):
+            f.write(", ".join(["0.1"] * 999 + ["2.5"]) + ",\n")
+        f.write("/\n")
+    result = run(nml, "--check")
+    assert result.returncode == 0, result.stderr
+    assert "1000000 endpoints, valid" in result.stdout
+
+
+def test_progress_on_stderr_and_quiet(run, tmp_path):
+    nml = tmp_path / "in.nml"
+    write_table(nml, 12000)
+    loud = run(nml, "--no-table", "--threads", "1")
+    assert loud.returncode == 0
+    assert loud.stdout == ""
+    assert "endpoints/s" in loud.stderr and "%" in loud.stderr
+    quiet = run(nml, "--no-table", "--threads", "1", "--quiet")
+    assert quiet.stderr == ""
+
+
+def test_io_error_exit_3_and_no_partial_file(run, tmp_path):
+    nml = tmp_path / "in.nml"
+    write_table(nml, 2)
+    result = run(nml, "--csv", tmp_path / "missing_dir" / "out.csv", "--no-table")
+    assert result.returncode == 3
+    assert "cannot write" in result.stderr
+    assert not (tmp_path / "missing_dir").exists()
