@@ -1,0 +1,141 @@
+!> brachistochrone-mpi: one endpoint table distributed over MPI ranks.
+!!
+!!     mpirun -np 4 brachistochrone-mpi [options] FILE.nml   (options as brachistochrone)
+!!
+!! Every rank reads and checks the input (so every rank reaches the same verdict), then
+!! solves a contiguous block of the rows (OpenMP threads inside each rank as usual).
+!! Rank 0 gathers the solutions, as raw bytes so that every binary128 value arrives
+!! bit for bit, and writes the same files, with the same code, as the serial program:
+!! the results are identical to a serial run. Exit codes as brachistochrone.
+program main
+    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit, int8
+    use mpi_f08, only: mpi_init, mpi_finalize, mpi_comm_world, mpi_comm_rank, &
+                       mpi_comm_size, mpi_gatherv, mpi_bcast, mpi_byte, mpi_integer, &
+                       mpi_abort
+    !$ use omp_lib, only: omp_set_num_threads
+    use brachistochrone, only: inverse_square_model, new_inverse_square_model, &
+                               endpoint_solution, status_ok
+    use brachistochrone_version, only: program_name, program_version
+    use endpoint_input, only: endpoint_table, read_endpoint_file
+    use result_output, only: write_outputs, write_table_header, write_table_row
+    use run_support, only: timestamp, integer_text
+    use command_line, only: run_options, parse_command_line, write_usage, exit_ok, &
+                            exit_input, exit_unsolved, exit_io
+    use batch_run, only: solve_rows, check_slice, check_targets
+    implicit none
+
+    type(run_options) :: options
+    type(endpoint_table) :: table
+    type(inverse_square_model) :: model
+    type(endpoint_solution), allocatable :: block(:), solutions(:)
+    type(endpoint_solution) :: prototype
+    character(len=:), allocatable :: message, date
+    integer(int8), allocatable :: sent(:), received(:)
+    integer, allocatable :: counts(:), displacements(:)
+    integer :: rank, ranks, status, i, first, last, my_first, my_last, rows, bytes, code
+    logical :: ok
+
+    call mpi_init()
+    call mpi_comm_rank(mpi_comm_world, rank)
+    call mpi_comm_size(mpi_comm_world, ranks)
+
+    call parse_command_line(options, status, message)
+    if (options%help) then
+        if (rank == 0) call write_usage(output_unit, program_name//'-mpi')
+        call finish(exit_ok)
+    else if (options%version) then
+        if (rank == 0) write (output_unit, '(a)') program_name//'-mpi '//program_version
+        call finish(exit_ok)
+    else if (status /= exit_ok) then
+        call fail(exit_input, message)
+    end if
+    !$ if (options%threads > 0) call omp_set_num_threads(options%threads)
+
+    call read_endpoint_file(options%input_path, table)
+    if (size(table%errors) > 0) then
+        if (rank == 0) then
+            do i = 1, size(table%errors)
+                write (error_unit, '(a)') program_name//': '//table%errors(i)%text
+            end do
+        end if
+        call fail(exit_input, integer_text(size(table%errors))//' problem(s) in '// &
+                  options%input_path//'; nothing was computed or written')
+    end if
+    first = options%first
+    last = options%last
+    call check_slice(table, first, last, ok, message)
+    if (.not. ok) call fail(exit_input, message)
+    if (options%check_only) then
+        if (rank == 0) write (output_unit, '(a)') options%input_path//': '// &
+            integer_text(table%n)//' endpoints, valid'
+        call finish(exit_ok)
+    end if
+    call check_targets(options%request, ok, message)
+    if (.not. ok) call fail(exit_input, message)
+
+    ! contiguous blocks: rank k solves rows my_first..my_last
+    rows = last - first + 1
+    my_first = first + (rank*rows)/ranks
+    my_last = first + ((rank + 1)*rows)/ranks - 1
+    model = new_inverse_square_model()
+    allocate (block(my_first:my_last))
+    if (my_last >= my_first) call solve_rows(model, table, my_first, my_last, block, &
+                                             .not. options%quiet .and. rank == 0)
+
+    ! gather the solutions on rank 0 as bytes
+    bytes = storage_size(prototype)/8
+    sent = transfer(block, [0_int8], size(block)*bytes)
+    allocate (counts(ranks), displacements(ranks))
+    do i = 0, ranks - 1
+        counts(i + 1) = bytes*(((i + 1)*rows)/ranks - (i*rows)/ranks)
+        displacements(i + 1) = bytes*((i*rows)/ranks)
+    end do
+    allocate (received(merge(rows*bytes, 1, rank == 0)))
+    call mpi_gatherv(sent, size(sent), mpi_byte, received, counts, displacements, &
+                     mpi_byte, 0, mpi_comm_world)
+
+    code = exit_ok
+    if (rank == 0) then
+        allocate (solutions(first:last))
+        solutions = transfer(received, prototype, rows)
+        date = timestamp()
+        call write_outputs(options%request, table, first, last, solutions, date, status, &
+                           message)
+        if (status /= 0) then
+            write (error_unit, '(a)') program_name//': '//message
+            code = merge(exit_input, exit_io, status == 1)
+        else
+            if (options%show_table) then
+                call write_table_header(output_unit)
+                do i = first, last
+                    call write_table_row(output_unit, i, solutions(i))
+                end do
+            end if
+            if (any(solutions%status /= status_ok)) then
+                write (error_unit, '(a)') program_name//': '// &
+                    integer_text(count(solutions%status /= status_ok))//' of '// &
+                    integer_text(rows)//' endpoints have no solution; see their status'
+                code = exit_unsolved
+            end if
+        end if
+    end if
+    call mpi_bcast(code, 1, mpi_integer, 0, mpi_comm_world)
+    call finish(code)
+
+contains
+
+    !> Every rank reaches the same verdict; rank 0 explains it.
+    subroutine fail(exit_code, text)
+        integer, intent(in) :: exit_code
+        character(len=*), intent(in) :: text
+        if (rank == 0) write (error_unit, '(a)') program_name//': '//text
+        call finish(exit_code)
+    end subroutine fail
+
+    subroutine finish(exit_code)
+        integer, intent(in) :: exit_code
+        call mpi_finalize()
+        stop exit_code, quiet=.true.
+    end subroutine finish
+
+end program main

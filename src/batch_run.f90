@@ -1,0 +1,86 @@
+!> What every batch driver does between reading a table and writing results.
+!!
+!! Kept out of the library's physics (which never reads, prints or stops) and out of the
+!! drivers (which only parse, decide and exit), so the serial/OpenMP program and the MPI
+!! program solve rows and write files with the same code and give the same bytes.
+module batch_run
+    use brachistochrone_kinds, only: qp
+    use inverse_square, only: inverse_square_model
+    use two_point, only: endpoint_solution, solve_endpoint, solve_endpoint_secant
+    use endpoint_input, only: endpoint_table
+    use result_output, only: output_request
+    use run_support, only: progress_type, integer_text
+    implicit none
+    private
+
+    public :: solve_rows, check_slice, check_targets
+
+contains
+
+    !> Solve rows first..last of the table, in parallel over OpenMP threads (dynamic
+    !! schedule; each row is independent and `pure`, so the results do not depend on the
+    !! number of threads), with a progress report on stderr when `report` is set.
+    subroutine solve_rows(model, table, first, last, solutions, report)
+        type(inverse_square_model), intent(in) :: model        !! the evaluator
+        type(endpoint_table), intent(in) :: table              !! the input
+        integer, intent(in) :: first, last                     !! rows to solve
+        type(endpoint_solution), intent(out) :: solutions(first:) !! their solutions
+        logical, intent(in) :: report                          !! progress on stderr
+        type(progress_type) :: progress
+        integer :: i
+        call progress%start(last - first + 1, report)
+        !$omp parallel do schedule(dynamic, 16) default(shared) private(i)
+        do i = first, last
+            if (table%has_estimates(i)) then
+                solutions(i) = solve_endpoint_secant(model, table%rho(i), table%psi(i), &
+                                                     table%r0(i), table%r1(i), &
+                                                     table%secant_tolerance)
+            else
+                solutions(i) = solve_endpoint(model, table%rho(i), table%psi(i))
+            end if
+            call progress%step()
+        end do
+        !$omp end parallel do
+        call progress%finish()
+    end subroutine solve_rows
+
+    !> Resolve the slice (-1 means the table's first or last row) and check it.
+    subroutine check_slice(table, first, last, ok, message)
+        type(endpoint_table), intent(in) :: table    !! the input
+        integer, intent(inout) :: first, last        !! the slice
+        logical, intent(out) :: ok                   !! it is a slice of the table
+        character(len=:), allocatable, intent(out) :: message !! why not
+        if (first == -1) first = 1
+        if (last == -1) last = table%n
+        ok = first >= 1 .and. last <= table%n .and. first <= last
+        message = ''
+        if (.not. ok) message = '--first '//integer_text(first)//' --last '// &
+            integer_text(last)//' is not a slice of the '//integer_text(table%n)// &
+            ' rows of '//table%path//' (need 1 <= first <= last <= n)'
+    end subroutine check_slice
+
+    !> Before any work: refuse output files that exist unless `force` is set.
+    subroutine check_targets(request, ok, message)
+        type(output_request), intent(in) :: request  !! files to write
+        logical, intent(out) :: ok                   !! none is in the way
+        character(len=:), allocatable, intent(out) :: message !! which one is
+        ok = .true.
+        message = ''
+        if (request%force) return
+        call one(request%csv_path)
+        call one(request%nml_path)
+        call one(request%table_path)
+    contains
+        subroutine one(path)
+            character(len=*), intent(in) :: path
+            logical :: exists
+            if (.not. ok .or. len(path) == 0) return
+            inquire (file=path, exist=exists)
+            if (exists) then
+                ok = .false.
+                message = path//' exists; use --force to replace it, or choose another name'
+            end if
+        end subroutine one
+    end subroutine check_targets
+
+end module batch_run
