@@ -152,10 +152,16 @@ def main(argv=None):
     write_nml(out_dir / "bench.nml", rows)
     subprocess.run([FPM, "build", "--profile", "release"], cwd=ROOT, check=True,
                    capture_output=True)
-    bench = subprocess.run([fpm_exe("brachistochrone-bench"), str(out_dir / "bench.nml"),
-                            str(args.repeats)], check=True, capture_output=True, text=True)
-    report = dict(line.split(" = ") for line in bench.stdout.splitlines())
+    def fortran(threads):
+        bench = subprocess.run([fpm_exe("brachistochrone-bench"), str(out_dir / "bench.nml"),
+                                str(args.repeats), str(threads)], check=True,
+                               capture_output=True, text=True)
+        return dict(line.split(" = ") for line in bench.stdout.splitlines())
+
+    report = fortran(1)
     fortran_us = float(report["median_us_per_endpoint"])
+    report_2 = fortran(2)
+    fortran_2_us = float(report_2["median_us_per_endpoint"])
 
     scipy_s, scipy_results = timed(scipy_solve, rows[:args.scipy])
     mp.mp.dps = 34
@@ -168,6 +174,7 @@ def main(argv=None):
     print(f"{'method':34} {'us/endpoint':>12} {'endpoints/s':>12} {'ratio':>8} {'digits':>7}")
     rows_out = [
         ("Fortran real(16), this program", fortran_us, 1.0, "32+"),
+        ("  the same on 2 threads", fortran_2_us, fortran_2_us / fortran_us, "32+"),
         (f"SciPy double (median of {args.scipy})", scipy_s * 1e6, scipy_s * 1e6 / fortran_us,
          f"{agreement(sample, scipy_results):.1f}"),
         (f"mpmath 34 digits (median of {args.mpmath})", mp_s * 1e6, mp_s * 1e6 / fortran_us,
@@ -175,8 +182,9 @@ def main(argv=None):
     ]
     for name, us, ratio, digits in rows_out:
         print(f"{name:34} {us:12.1f} {1e6 / us:12.1f} {ratio:8.1f} {digits:>7}")
-    print("ratio = time per endpoint / Fortran's; digits = fewest significant digits of "
-          "R, s, t agreeing with the Fortran results on that sample")
+    print("ratio = time per endpoint / Fortran's on one thread; digits = fewest significant "
+          "digits of R, s, t agreeing with the Fortran results on that sample")
+    print(f"2-thread throughput: {fortran_us / fortran_2_us:.2f} x one thread")
     return 0
 
 

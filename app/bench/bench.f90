@@ -1,20 +1,23 @@
 !> brachistochrone-bench: time the default solver on an endpoint table.
 !!
-!!     brachistochrone-bench FILE.nml [REPEATS]
+!!     brachistochrone-bench FILE.nml [REPEATS [THREADS]]
 !!
-!! Solves every endpoint of FILE.nml REPEATS times (default 5) on one thread and prints
-!! the median wall time per endpoint, so that scripts/bench.py can compare it with
-!! SciPy and mpmath measured in the same run. Output: `key = value` lines.
+!! Solves every endpoint of FILE.nml REPEATS times (default 5) on THREADS OpenMP threads
+!! (default 1) with the program's own loop (`solve_rows`), and prints the median wall
+!! time per endpoint, so that scripts/bench.py can compare it with SciPy and mpmath
+!! measured in the same run. Output: `key = value` lines.
 program bench
     use, intrinsic :: iso_fortran_env, only: int64, error_unit, output_unit
     use brachistochrone, only: qp, inverse_square_model, new_inverse_square_model, &
-                               endpoint_solution, solve_endpoint, status_ok
+                               endpoint_solution, status_ok
     use endpoint_input, only: endpoint_table, read_endpoint_file
+    use batch_run, only: solve_rows
+    !$ use omp_lib, only: omp_set_num_threads
     implicit none
     type(endpoint_table) :: table
     type(inverse_square_model) :: model
     type(endpoint_solution), allocatable :: solutions(:)
-    integer :: repeats, k, i, length, ios, evaluations
+    integer :: repeats, k, i, length, ios, evaluations, threads
     integer(int64) :: start, finish, rate
     real(qp), allocatable :: seconds(:)
     character(len=:), allocatable :: path
@@ -33,6 +36,13 @@ program bench
         read (text, *, iostat=ios) repeats
         if (ios /= 0 .or. repeats < 1) repeats = 5
     end if
+    threads = 1
+    if (command_argument_count() >= 3) then
+        call get_command_argument(3, text)
+        read (text, *, iostat=ios) threads
+        if (ios /= 0 .or. threads < 1) threads = 1
+    end if
+    !$ call omp_set_num_threads(threads)
     call read_endpoint_file(path, table)
     if (size(table%errors) > 0) then
         do i = 1, size(table%errors)
@@ -44,15 +54,14 @@ program bench
     allocate (solutions(table%n), seconds(repeats))
     do k = 1, repeats
         call system_clock(start, rate)
-        do i = 1, table%n
-            solutions(i) = solve_endpoint(model, table%rho(i), table%psi(i))
-        end do
+        call solve_rows(model, table, 1, table%n, solutions, .false.)
         call system_clock(finish)
         seconds(k) = real(finish - start, qp)/real(rate, qp)
     end do
     evaluations = sum(solutions%steps)
     write (output_unit, '(a,i0)') 'endpoints = ', table%n
     write (output_unit, '(a,i0)') 'repeats = ', repeats
+    write (output_unit, '(a,i0)') 'threads = ', threads
     write (output_unit, '(a,i0)') 'failed = ', count(solutions%status /= status_ok)
     write (output_unit, '(a,f0.3)') 'mean_upsilon_evaluations = ', &
         real(evaluations, qp)/real(table%n, qp)

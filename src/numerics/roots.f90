@@ -42,7 +42,7 @@ contains
     !! Needs f(lo) and f(hi) of opposite signs (or one of them zero); only their signs are
     !! used. Converged when the predicted error is <= rel_tol*|x| + abs_tol.
     pure subroutine newton_bracketed(fun, lo, f_lo, hi, f_hi, x0, rel_tol, abs_tol, &
-                                     max_steps, x, steps, status, curvature)
+                                     max_steps, x, steps, status, curvature, accuracy)
         class(root_function), intent(in) :: fun !! the function
         real(qp), intent(in) :: lo, hi          !! bracket, lo < hi
         real(qp), intent(in) :: f_lo, f_hi      !! f at the bracket ends (signs only)
@@ -55,10 +55,14 @@ contains
         integer, intent(out) :: status          !! status_ok, status_no_convergence, ...
         !> In: a bound on K = |f''/(2f')| near the root, measured by an earlier run on a
         !! nearby function (0 if unknown); then one Newton step dx leaves an error of
-        !! about K dx^2 and the run may stop after it. Out: the largest K measured here
-        !! from consecutive Newton steps well above the tolerance.
+        !! about K dx^2 and the run may stop after it. Out: the largest K known, including
+        !! what this run measured from consecutive Newton steps well above the noise.
         real(qp), intent(inout), optional :: curvature
+        !> Relative accuracy of the evaluations of f, in units of x (default rel_tol):
+        !! K is measured only from steps 1000 times larger.
+        real(qp), intent(in), optional :: accuracy
         real(qp) :: a, b, fx, dfx, dx, dx_previous, x_new, tolerance, predicted, known_k
+        real(qp) :: noise
         logical :: increasing, newton_step, previous_newton
 
         steps = 0
@@ -70,10 +74,9 @@ contains
         dx_previous = huge(1.0_qp)
         previous_newton = .false.
         known_k = 0.0_qp
-        if (present(curvature)) then
-            known_k = max(curvature, 0.0_qp)
-            curvature = 0.0_qp
-        end if
+        if (present(curvature)) known_k = max(curvature, 0.0_qp)
+        noise = rel_tol
+        if (present(accuracy)) noise = accuracy
         status = status_no_convergence
         do while (steps < max_steps)
             call fun%evaluate(x, fx, dfx, status)
@@ -124,8 +127,9 @@ contains
             end if
             ! measure K = |dx|/|dx_previous|^2 while the steps are far above the noise
             if (present(curvature) .and. newton_step .and. previous_newton .and. &
-                abs(dx) > 1.0e3_qp*tolerance) then
+                abs(dx) > 1.0e3_qp*noise*abs(x)) then
                 curvature = max(curvature, abs(dx)/dx_previous**2)
+                known_k = curvature
             end if
             dx_previous = dx
             previous_newton = newton_step

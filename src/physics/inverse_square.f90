@@ -38,12 +38,14 @@ module inverse_square
     private
 
     public :: inverse_square_model, new_inverse_square_model
-    public :: arch_values, level_fine, level_coarse
+    public :: arch_values, level_fine, level_coarse, level_rough, level_digits
 
     !> Rule set selector: full quad precision.
     integer, parameter :: level_fine = 1
     !> Rule set selector: about 15 digits, for the first iterations of a root finder.
     integer, parameter :: level_coarse = 2
+    !> Rule set selector: about 9 digits, for the first steps of a root finder.
+    integer, parameter :: level_rough = 3
 
     !> Most Gauss nodes on one panel: the worst panel (R -> 0, a whole half-arch in the
     !! eta variable) needs 46 for Theta, 48 for s and t (8e-36 there).
@@ -51,10 +53,13 @@ module inverse_square
     !> Fewest Gauss nodes on a panel.
     integer, parameter :: min_nodes = 6
     !> Digits aimed at by the node choice: fine (with a margin over 34) and coarse.
-    real(qp), parameter :: fine_digits = 38.0_qp, coarse_digits = 17.0_qp
-    !> Intervals on [0, pi] of the periodic rules: relative error 2e-38 and 5e-18 at
-    !! R -> 0 (the worst case: the singularities then lie closest to the real axis).
-    integer, parameter :: fine_intervals = 26, coarse_intervals = 12
+    real(qp), parameter :: fine_digits = 36.0_qp, coarse_digits = 17.0_qp, &
+                           rough_digits = 9.0_qp
+    !> Most intervals on [0, pi] of the periodic rule: relative error 2e-38 at R -> 0 (the
+    !! worst case: the singularities then lie closest to the real axis).
+    integer, parameter :: max_intervals = 26
+    !> Fewest intervals of the periodic rule.
+    integer, parameter :: min_intervals = 4
 
     !> One Gauss-Legendre rule with the node data the sweeps use.
     type :: gauss_nodes
@@ -76,8 +81,10 @@ module inverse_square
     type :: inverse_square_model
         !> Gauss rules with n = 2j nodes in element j (j = min_nodes/2 .. max_nodes/2)
         type(gauss_nodes) :: gauss(max_nodes/2)
-        type(periodic_nodes) :: periodic_fine    !! full quad precision
-        type(periodic_nodes) :: periodic_coarse  !! about 17 digits
+        !> Trapezoid rules with m = 2j intervals in element j (j = min_intervals/2 ..)
+        type(periodic_nodes) :: periodic(max_intervals/2)
+        !> d Theta(R,R)/dR at R = 0 (about -0.8096): the slope of the apse angle there
+        real(qp) :: apse_slope_at_zero = 0.0_qp
     contains
         procedure :: half_arch      !! Theta, S, T on the first or second half-arch
         procedure :: theta          !! Theta(r,R), eq. (55)
@@ -101,10 +108,22 @@ module inverse_square
 
 contains
 
+    !> Digits aimed at by a precision level (level_fine, level_coarse, level_rough).
+    elemental function level_digits(level) result(digits)
+        integer, intent(in) :: level !! the level
+        real(qp) :: digits
+        select case (level)
+        case (level_coarse);  digits = coarse_digits
+        case (level_rough);   digits = rough_digits
+        case default;         digits = fine_digits
+        end select
+    end function level_digits
+
     !> Build the quadrature rules (the only costly step; do it once and share the model).
     function new_inverse_square_model() result(model)
         type(inverse_square_model) :: model
         type(gauss_legendre_rule) :: rule
+        real(qp) :: slope(2)
         integer :: j
         do j = min_nodes/2, max_nodes/2
             rule = gauss_legendre(2*j)
@@ -112,8 +131,14 @@ contains
             model%gauss(j)%offset = 0.5_qp*(1.0_qp + rule%node)
             model%gauss(j)%double_weight = 2.0_qp*rule%weight
         end do
-        model%periodic_fine = new_periodic_nodes(fine_intervals)
-        model%periodic_coarse = new_periodic_nodes(coarse_intervals)
+        do j = min_intervals/2, max_intervals/2
+            model%periodic(j) = new_periodic_nodes(2*j)
+        end do
+        ! d Theta(R,R)/dR at R -> 0 (Theta(R,R) = pi/3 - 0.8095502 R + ...): from the
+        ! differentiated integrand (69) at R = 1e-40, where O(R) terms are below rounding
+        call periodic_sweep(model%periodic(max_intervals/2), 1.0e-40_qp, 1.0_qp, .true., &
+                            slope)
+        model%apse_slope_at_zero = slope(2)
     end function new_inverse_square_model
 
     pure function new_periodic_nodes(intervals) result(nodes)
@@ -132,28 +157,37 @@ contains
         end do
     end function new_periodic_nodes
 
+    !> cos(2 lambda_s) at the zeros of q in the lambda plane (double precision):
+    !! w = 2 (z_s - R)/(1 - R) - 1 with z_s = (-(1-R) + i sqrt((1-R)(3+R)))/2.
+    pure function singular_cosine(big_r) result(w)
+        real(qp), intent(in) :: big_r
+        complex(real64) :: w
+        real(real64) :: r, omr
+        r = real(big_r, real64)
+        omr = 1.0_real64 - r
+        w = 2.0_real64*(cmplx(-omr, sqrt(omr*(3.0_real64 + r)), real64)/2.0_real64 - r) &
+            /omr - 1.0_real64
+    end function singular_cosine
+
     !> Gauss nodes needed on the panel v in [0, upper] for `digits` digits of Theta.
     !!
     !! The Theta integrand is analytic except at the zeros of q, where
-    !! cos(2 lambda) = w = 2 (z_s - R)/(1 - R) - 1, z_s = (-(1-R) +- i sqrt((1-R)(3+R)))/2,
-    !! and at the poles v = +-i of the half-angle substitution. In v = tan(lambda/2) the
-    !! zeros of q sit at +-t, +-1/t with t = tan(acos(w)/4) (w -> -w for the variable
-    !! from A). An n-point Gauss rule then errs by about rho^(-2n), rho the Bernstein
-    !! ellipse through the nearest of them (mapped to [-1, 1]). Double precision is
-    !! ample for choosing n; the test suite checks the result against the references.
+    !! cos(2 lambda) = w (`singular_cosine`), and at the poles v = +-i of the half-angle
+    !! substitution. In v = tan(lambda/2) the zeros of q sit at +-t, +-1/t with
+    !! t = tan(acos(w)/4) (w -> -w for the variable from A). An n-point Gauss rule then
+    !! errs by about rho^(-2n), rho the Bernstein ellipse through the nearest of them
+    !! (mapped to [-1, 1]). Double precision is ample for choosing n; the test suite checks
+    !! the result against the references.
     pure function nodes_needed(big_r, upper, from_apse, digits) result(n)
         real(qp), intent(in) :: big_r, upper, digits
         logical, intent(in) :: from_apse
         integer :: n
-        real(real64) :: r, omr, rho_min
-        complex(real64) :: z_s, w, t, candidates(5)
+        real(real64) :: rho_min
+        complex(real64) :: w, t, candidates(5)
         integer :: k
-        r = real(big_r, real64)
-        omr = 1.0_real64 - r
         n = min_nodes
-        if (omr <= 0.0_real64 .or. upper <= 0.0_qp) return
-        z_s = cmplx(-omr, sqrt(omr*(3.0_real64 + r)), real64)/2.0_real64
-        w = 2.0_real64*(z_s - r)/omr - 1.0_real64
+        if (big_r >= 1.0_qp .or. upper <= 0.0_qp) return
+        w = singular_cosine(big_r)
         if (.not. from_apse) w = -w
         t = tan(acos(w)/4.0_real64)
         candidates = [t, -t, 1.0_real64/t, -1.0_real64/t, (0.0_real64, 1.0_real64)]
@@ -176,6 +210,23 @@ contains
             bernstein = max(abs(x + root), abs(x - root))
         end function bernstein
     end function nodes_needed
+
+    !> Intervals on [0, pi] the periodic rule needs for `digits` digits of Theta(R,R).
+    !!
+    !! In the angle 2 lambda the integrand is 2 pi-periodic and analytic in the strip
+    !! |Im| < a, a = Im acos(w) (the zeros of q); the trapezoid rule with 2m points per
+    !! period then errs by about exp(-2 m a) (Trefethen & Weideman 2014, thm 3.2).
+    !! At R -> 0, a = 1.66 and m = 26 for 38 digits; a grows as R -> 1.
+    pure function intervals_needed(big_r, digits) result(m)
+        real(qp), intent(in) :: big_r, digits
+        integer :: m
+        real(real64) :: a
+        m = min_intervals
+        if (big_r >= 1.0_qp) return
+        a = abs(aimag(acos(singular_cosine(big_r))))
+        m = ceiling(real(digits, real64)*log(10.0_real64)/(2.0_real64*a)) + 1
+        m = min(max_intervals, max(min_intervals, m + mod(m, 2)))
+    end function intervals_needed
 
     !> The kernel: angle (and optionally arclength, time, d(angle)/dR) at radius r on the
     !! first (`second = .false.`) or second half-arch of the brachistochrone with apse R.
@@ -208,7 +259,7 @@ contains
         real(qp) :: one_minus_r, one_minus_big_r, cos_l, sin_l, z_l, q_l
         real(qp) :: from_start(4), from_apse(4), periodic(2), correction_scale, digits
 
-        digits = merge(coarse_digits, fine_digits, level == level_coarse)
+        digits = level_digits(level)
         one_minus_r = 1.0_qp - r
         one_minus_big_r = one_minus_r + d
         cos_l = sqrt(big_r*one_minus_r/(r*one_minus_big_r))
@@ -227,13 +278,8 @@ contains
             ! lambda in [0, L]: from the apse back out to the point
             call sweep(model, digits, big_r, one_minus_big_r, sin_l/(1.0_qp + cos_l), &
                        .true., want_derivative, want_length_time, from_apse)
-            if (level == level_coarse) then
-                call periodic_sweep(model%periodic_coarse, big_r, one_minus_big_r, &
-                                    want_derivative, periodic)
-            else
-                call periodic_sweep(model%periodic_fine, big_r, one_minus_big_r, &
-                                    want_derivative, periodic)
-            end if
+            call periodic_sweep(model%periodic(intervals_needed(big_r, digits)/2), big_r, &
+                                one_minus_big_r, want_derivative, periodic)
             values%angle = periodic(1) + from_apse(1)
             values%angle_dr_smooth = periodic(2) + from_apse(2)
             values%boundary_sign = -1.0_qp
@@ -281,7 +327,7 @@ contains
         j = nodes_needed(big_r, upper, from_apse, digits)/2
         ! s and t converge at the rate Theta does (their extra zeros, of D, lie farther
         ! out: at tau = -1 as R -> 0); 4 more nodes cover their larger constants
-        if (want_length_time) j = min(max_nodes/2, j + 2)
+        if (want_length_time) j = min(max_nodes/2, j + 1)
         associate (rule => model%gauss(j))
         do k = 1, rule%n
             v = upper*rule%offset(k)
@@ -296,7 +342,7 @@ contains
             end if
             c2 = c*c
             z = big_r + one_minus_big_r*c2
-            q = z*z + one_minus_big_r*(1.0_qp + z)
+            q = z*(z + one_minus_big_r) + one_minus_big_r
             inverse = inverse_sqrt(q)
             theta_term = rule%double_weight(k)*jacobian*c2*inverse
             sums(1) = sums(1) + theta_term
@@ -332,7 +378,7 @@ contains
         do k = 0, rules%m
             c2 = rules%cos2(k)
             z = big_r + one_minus_big_r*c2
-            q = z*z + one_minus_big_r*(1.0_qp + z)
+            q = z*(z + one_minus_big_r) + one_minus_big_r
             inverse = inverse_sqrt(q)
             theta_term = rules%weighted_cos2(k)*inverse
             sums(1) = sums(1) + theta_term
@@ -435,7 +481,8 @@ contains
         else if (big_r <= 0.0_qp .or. big_r > 1.0_qp) then
             status = status_invalid_argument
         else
-            call periodic_sweep(self%periodic_fine, big_r, 1.0_qp - big_r, .false., sums)
+            call periodic_sweep(self%periodic(intervals_needed(big_r, fine_digits)/2), &
+                                big_r, 1.0_qp - big_r, .false., sums)
             value = sums(1)
             status = status_ok
         end if

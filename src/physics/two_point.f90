@@ -23,7 +23,8 @@ module two_point
                                       status_rho_out_of_range, status_psi_out_of_range, &
                                       status_not_finite, status_outside_domain
     use closed_forms, only: radial_time, kappa_time, inaccessible_angle
-    use inverse_square, only: inverse_square_model, arch_values, level_fine, level_coarse
+    use inverse_square, only: inverse_square_model, arch_values, level_fine, level_coarse, &
+                              level_rough, level_digits
     use roots, only: root_function, newton_bracketed, secant
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     implicit none
@@ -104,6 +105,7 @@ contains
         real(qp), intent(out) :: apse_angle_rho
         logical, intent(out) :: done
         integer :: status
+        type(arch_values) :: values
 
         solution%rho = rho
         solution%psi = psi
@@ -132,7 +134,13 @@ contains
         else
             done = .false.
             if (rho < 1.0_qp) then
-                call model%apse_angle(rho, apse_angle_rho, status)
+                ! Theta(rho,rho) on 17-digit rules; on full ones where psi is that close
+                values = model%evaluate_arch(level_coarse, .true., rho, rho, 0.0_qp, .false., &
+                                             .false.)
+                apse_angle_rho = values%angle
+                if (abs(psi - apse_angle_rho) < 1.0e-12_qp*psi) then
+                    call model%apse_angle(rho, apse_angle_rho, status)
+                end if
             end if
             if (rho == 1.0_qp) then
                 solution%arch = arch_complete
@@ -207,7 +215,7 @@ contains
         type(upsilon_function) :: fun
         type(arch_values) :: values
         real(qp) :: apse_angle_rho, half, f_half, f_end, lo, hi, f_lo, f_hi, x, x0
-        real(qp) :: big_r, d, log_lo, theta_half, slope, curvature
+        real(qp) :: big_r, d, log_lo, theta_half, slope, slope_lo, curvature
         integer :: steps, status, probe
         logical :: done, low_region
 
@@ -224,12 +232,12 @@ contains
             big_r = rho
             d = 0.0_qp
         else
-            ! Which half of (0, rho] holds the root: Upsilon at R = rho/2, on the coarse
+            ! Which half of (0, rho] holds the root: Upsilon at R = rho/2, on the rough
             ! rules unless the sign is in doubt
             half = 0.5_qp*rho
-            values = model%evaluate_arch(level_coarse, fun%second, rho, half, rho - half, &
+            values = model%evaluate_arch(level_rough, fun%second, rho, half, rho - half, &
                                          .true., .false.)
-            if (abs(values%angle - psi) < 1.0e-10_qp*psi) then
+            if (abs(values%angle - psi) < 1.0e-6_qp*psi) then
                 values = model%evaluate_arch(level_fine, fun%second, rho, half, &
                                              rho - half, .true., .false.)
             end if
@@ -243,25 +251,30 @@ contains
             solution%steps = 1
             curvature = 0.0_qp
             if (.not. low_region) then
-                ! unknown u = sqrt(rho - R) in [0, sqrt(rho/2)]; Upsilon(u=0) = Theta(rho,rho)
+                ! unknown u = sqrt(rho - R) in [0, sqrt(rho/2)]; at u = 0 (the apse)
+                ! Upsilon = Theta(rho,rho) and dUpsilon/du = -+ 2 B(rho,rho), with
+                ! B(rho,rho) = sqrt((1-rho)/(rho (3 - 2 rho))) in closed form
                 fun%unknown = unknown_u
                 lo = 0.0_qp
                 hi = sqrt(rho - half)
                 f_lo = apse_angle_rho - psi
+                slope_lo = -2.0_qp*merge(-1.0_qp, 1.0_qp, fun%second) &
+                           *sqrt((1.0_qp - rho)/(rho*(3.0_qp - 2.0_qp*rho)))
                 f_hi = f_half
                 slope = -2.0_qp*hi*values%angle_dr_smooth &
                         - 2.0_qp*values%boundary_sign*values%boundary
-                x0 = quadratic_start(f_lo, hi, f_hi, slope)
+                x0 = hermite_start(f_lo, slope_lo, hi, f_hi, slope)
             else if (fun%second) then
-                ! unknown R in [0, rho/2]; Upsilon(0+) = 2 pi/3
+                ! unknown R in [0, rho/2]; at R -> 0, Upsilon = 2 pi/3 + 2 Theta_R(0) R
                 fun%unknown = unknown_r
                 lo = 0.0_qp
                 hi = half
                 f_lo = inaccessible_angle - psi
+                slope_lo = 2.0_qp*model%apse_slope_at_zero
                 f_hi = f_half
                 slope = values%angle_dr_smooth &
                         + values%boundary_sign*values%boundary/sqrt(rho - half)
-                x0 = quadratic_start(f_lo, hi, f_hi, slope)
+                x0 = hermite_start(f_lo, slope_lo, hi, f_hi, slope)
             else
                 ! first half-arch, small R: Theta(rho,R) ~ C R^(3/2); unknown log R first
                 fun%unknown = unknown_log_r
@@ -287,14 +300,16 @@ contains
                 x0 = exp(x)
             end if
             if (fun%unknown /= unknown_r .or. fun%second) then
-                ! 17-digit phase, which also measures the curvature of Upsilon - psi
+                ! 17-digit phase, which also measures the curvature of Upsilon - psi:
+                ! the full-precision phase then usually needs one step
+                x = x0
                 fun%level = level_coarse
-                call newton_bracketed(fun, lo, f_lo, hi, f_hi, x0, 1.0e-13_qp, 0.0_qp, &
-                                      max_steps, x, steps, status, curvature)
+                call newton_bracketed(fun, lo, f_lo, hi, f_hi, x, 1.0e-13_qp, 0.0_qp, &
+                                      max_steps, x0, steps, status, curvature, &
+                                      10.0_qp**(-level_digits(level_coarse)))
                 solution%steps = solution%steps + steps
-                x0 = x
             end if
-            ! full-precision phase: usually one Newton step from the 17-digit root
+            ! full-precision phase
             fun%level = level_fine
             call newton_bracketed(fun, lo, f_lo, hi, f_hi, x0, 4.0_qp*eps_qp, &
                                   tiny(1.0_qp), max_steps, x, steps, status, curvature)
@@ -314,30 +329,36 @@ contains
         call finish(model, solution, fun%second, big_r, d)
     end function solve_endpoint
 
-    !> First iterate on [0, h]: the root of the quadratic through F(0) = f0, F(h) = fh
-    !! with F'(h) = slope (exact for rho = 1, where F(u) = pi u^2 - psi + O(u^4));
-    !! regula falsi when that root is not inside (0, h).
-    pure function quadratic_start(f0, h, fh, slope) result(x)
-        real(qp), intent(in) :: f0, h, fh, slope
+    !> First iterate on [0, h]: the root of the cubic Hermite interpolant of F from
+    !! F(0) = f0, F'(0) = slope0, F(h) = fh, F'(h) = slope_h, found by Newton's method on
+    !! the cubic kept inside the bracket (F(0), F(h) have opposite signs); regula falsi
+    !! if that fails. Exact for rho = 1, where F(u) = pi u^2 - psi + O(u^4).
+    pure function hermite_start(f0, slope0, h, fh, slope_h) result(x)
+        real(qp), intent(in) :: f0, slope0, h, fh, slope_h
         real(qp) :: x
-        real(qp) :: a, b, c, discriminant, q
+        real(qp) :: c2, c3, delta, delta_slope, lo, hi, p, dp, step
+        integer :: iteration
         x = h*f0/(f0 - fh)
-        a = f0
-        c = (f0 + slope*h - fh)/(h*h)
-        b = slope - 2.0_qp*c*h
-        discriminant = b*b - 4.0_qp*a*c
-        if (discriminant < 0.0_qp) return
-        q = -0.5_qp*(b + sign(sqrt(discriminant), b))
-        if (q /= 0.0_qp) then
-            if (a/q > 0.0_qp .and. a/q < h) then
-                x = a/q
-                return
+        delta = fh - f0 - slope0*h
+        delta_slope = slope_h - slope0
+        c3 = (delta_slope*h - 2.0_qp*delta)/h**3
+        c2 = (3.0_qp*delta - delta_slope*h)/h**2
+        lo = 0.0_qp
+        hi = h
+        do iteration = 1, 60
+            p = f0 + x*(slope0 + x*(c2 + x*c3))
+            if ((p < 0.0_qp) .eqv. (f0 < 0.0_qp)) then
+                lo = x
+            else
+                hi = x
             end if
-        end if
-        if (c /= 0.0_qp) then
-            if (q/c > 0.0_qp .and. q/c < h) x = q/c
-        end if
-    end function quadratic_start
+            dp = slope0 + x*(2.0_qp*c2 + 3.0_qp*x*c3)
+            step = p/dp
+            if (.not. (x - step > lo .and. x - step < hi)) step = x - 0.5_qp*(lo + hi)
+            x = x - step
+            if (abs(step) <= 1.0e-12_qp*h) return
+        end do
+    end function hermite_start
 
     !> Arclength and time at B once R-bar is known.
     pure subroutine finish(model, solution, second, big_r, d)
