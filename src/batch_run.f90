@@ -4,18 +4,77 @@
 !! drivers (which only parse, decide and exit), so the serial/OpenMP program and the MPI
 !! program solve rows and write files with the same code and give the same bytes.
 module batch_run
-    use brachistochrone_kinds, only: qp
+    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
     use inverse_square, only: inverse_square_model
     use two_point, only: endpoint_solution, solve_endpoint, solve_endpoint_secant
-    use endpoint_input, only: endpoint_table
+    use endpoint_input, only: endpoint_table, message, read_endpoint_file
     use result_output, only: output_request
-    use run_support, only: progress_type, integer_text
+    use brachistochrone_version, only: program_name
+    use command_line, only: run_options, exit_ok, exit_input
+    use run_support, only: progress_type
+    use strings, only: integer_text
     implicit none
     private
 
-    public :: solve_rows, check_slice, check_targets
+    public :: prepare_run, print_report, solve_rows, check_slice, check_targets
 
 contains
+
+    !> Everything before solving: read and check the input file, the slice and the
+    !! output targets. When `finished` is set the driver prints `report` (to stdout when
+    !! code = exit_ok, as for --check; to stderr otherwise) and exits with `code`.
+    subroutine prepare_run(options, table, first, last, report, code, finished)
+        type(run_options), intent(in) :: options       !! the command line
+        type(endpoint_table), intent(out) :: table     !! the input
+        integer, intent(out) :: first, last           !! the rows to solve
+        type(message), allocatable, intent(out) :: report(:) !! lines for the user
+        integer, intent(out) :: code                   !! exit code when finished
+        logical, intent(out) :: finished               !! the driver should exit now
+        character(len=:), allocatable :: text
+        logical :: ok
+        integer :: i
+        code = exit_ok
+        finished = .false.
+        allocate (report(0))
+        call read_endpoint_file(options%input_path, table)
+        if (size(table%errors) > 0) then
+            report = [(message(program_name//': '//table%errors(i)%text), &
+                       i = 1, size(table%errors))]
+            report = [report, message(program_name//': '//integer_text(size(table%errors)) &
+                      //' problem(s) in '//options%input_path// &
+                      '; nothing was computed or written')]
+            code = exit_input
+            finished = .true.
+            return
+        end if
+        first = options%first
+        last = options%last
+        call check_slice(table, first, last, ok, text)
+        if (ok .and. .not. options%check_only) call check_targets(options%request, ok, text)
+        if (.not. ok) then
+            report = [message(program_name//': '//text)]
+            code = exit_input
+            finished = .true.
+        else if (options%check_only) then
+            report = [message(options%input_path//': '//integer_text(table%n)// &
+                              ' endpoints, valid')]
+            finished = .true.
+        end if
+    end subroutine prepare_run
+
+    !> Print `prepare_run`'s report: stdout for a verdict, stderr for problems.
+    subroutine print_report(report, code)
+        type(message), intent(in) :: report(:) !! the lines
+        integer, intent(in) :: code            !! exit_ok: stdout; otherwise stderr
+        integer :: i
+        do i = 1, size(report)
+            if (code == exit_ok) then
+                write (output_unit, '(a)') report(i)%text
+            else
+                write (error_unit, '(a)') report(i)%text
+            end if
+        end do
+    end subroutine print_report
 
     !> Solve rows first..last of the table, in parallel over OpenMP threads (dynamic
     !! schedule; each row is independent and `pure`, so the results do not depend on the

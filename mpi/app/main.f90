@@ -16,12 +16,13 @@ program main
     use brachistochrone, only: inverse_square_model, new_inverse_square_model, &
                                endpoint_solution, status_ok
     use brachistochrone_version, only: program_name, program_version
-    use endpoint_input, only: endpoint_table, read_endpoint_file
+    use endpoint_input, only: endpoint_table, message
     use result_output, only: write_outputs, write_table_header, write_table_row
-    use run_support, only: timestamp, integer_text
+    use run_support, only: timestamp
+    use strings, only: integer_text
     use command_line, only: run_options, parse_command_line, write_usage, exit_ok, &
                             exit_input, exit_unsolved, exit_io
-    use batch_run, only: solve_rows, check_slice, check_targets
+    use batch_run, only: prepare_run, print_report, solve_rows
     implicit none
 
     type(run_options) :: options
@@ -29,17 +30,18 @@ program main
     type(inverse_square_model) :: model
     type(endpoint_solution), allocatable :: block(:), solutions(:)
     type(endpoint_solution) :: prototype
-    character(len=:), allocatable :: message, date
+    type(message), allocatable :: report(:)
+    character(len=:), allocatable :: problem, date
     integer(int8), allocatable :: sent(:), received(:)
     integer, allocatable :: counts(:), displacements(:)
     integer :: rank, ranks, status, i, first, last, my_first, my_last, rows, bytes, code
-    logical :: ok
+    logical :: finished
 
     call mpi_init()
     call mpi_comm_rank(mpi_comm_world, rank)
     call mpi_comm_size(mpi_comm_world, ranks)
 
-    call parse_command_line(options, status, message)
+    call parse_command_line(options, status, problem)
     if (options%help) then
         if (rank == 0) call write_usage(output_unit, program_name//'-mpi')
         call finish(exit_ok)
@@ -47,31 +49,15 @@ program main
         if (rank == 0) write (output_unit, '(a)') program_name//'-mpi '//program_version
         call finish(exit_ok)
     else if (status /= exit_ok) then
-        call fail(exit_input, message)
+        call fail(exit_input, problem)
     end if
     !$ if (options%threads > 0) call omp_set_num_threads(options%threads)
 
-    call read_endpoint_file(options%input_path, table)
-    if (size(table%errors) > 0) then
-        if (rank == 0) then
-            do i = 1, size(table%errors)
-                write (error_unit, '(a)') program_name//': '//table%errors(i)%text
-            end do
-        end if
-        call fail(exit_input, integer_text(size(table%errors))//' problem(s) in '// &
-                  options%input_path//'; nothing was computed or written')
+    call prepare_run(options, table, first, last, report, code, finished)
+    if (finished) then
+        if (rank == 0) call print_report(report, code)
+        call finish(code)
     end if
-    first = options%first
-    last = options%last
-    call check_slice(table, first, last, ok, message)
-    if (.not. ok) call fail(exit_input, message)
-    if (options%check_only) then
-        if (rank == 0) write (output_unit, '(a)') options%input_path//': '// &
-            integer_text(table%n)//' endpoints, valid'
-        call finish(exit_ok)
-    end if
-    call check_targets(options%request, ok, message)
-    if (.not. ok) call fail(exit_input, message)
 
     ! contiguous blocks: rank k solves rows my_first..my_last
     rows = last - first + 1
@@ -100,9 +86,9 @@ program main
         solutions = transfer(received, prototype, rows)
         date = timestamp()
         call write_outputs(options%request, table, first, last, solutions, date, status, &
-                           message)
+                           problem)
         if (status /= 0) then
-            write (error_unit, '(a)') program_name//': '//message
+            write (error_unit, '(a)') program_name//': '//problem
             code = merge(exit_input, exit_io, status == 1)
         else
             if (options%show_table) then

@@ -20,7 +20,8 @@
 !! ranges and r0/r1 pairs. Memory is proportional to the table.
 module endpoint_input
     use brachistochrone_kinds, only: qp, pi
-    use namelist_scan, only: group_scan, scan_group, lower
+    use namelist_scan, only: group_scan, scan_group
+    use strings, only: integer_text, lower
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     implicit none
     private
@@ -215,7 +216,7 @@ contains
         if (ios /= 0 .or. n < 1 .or. n > max_endpoints) then
             call add(table, at(table%path, scan%name_line(a))//'group &'//group_name// &
                      ', variable n: '//token//' is out of range; it must be 1 <= n <= '// &
-                     int_text(max_endpoints))
+                     integer_text(max_endpoints))
         end if
 
     contains
@@ -257,13 +258,13 @@ contains
         end if
         if (values(n + 1) /= unset) then
             call add(table, at(table%path, line_of(scan, name))//'group &'//group_name// &
-                     ', variable '//name//': has more than n = '//int_text(n)// &
+                     ', variable '//name//': has more than n = '//integer_text(n)// &
                      ' values; give exactly n values or raise n')
         end if
         if (required .and. count_set < n) then
             call add(table, at(table%path, line_of(scan, name))//'group &'//group_name// &
-                     ', variable '//name//': has '//int_text(count_set)// &
-                     ' values but n = '//int_text(n)//'; give exactly n values')
+                     ', variable '//name//': has '//integer_text(count_set)// &
+                     ' values but n = '//integer_text(n)//'; give exactly n values')
         end if
         shown = 0
         do i = 1, n
@@ -271,7 +272,7 @@ contains
             shown = shown + 1
             if (shown <= max_row_messages) then
                 call add(table, at(table%path, row_line(text, scan, a, i))//'group &'// &
-                         group_name//', variable '//name//'('//int_text(i)//'): is not '// &
+                         group_name//', variable '//name//'('//integer_text(i)//'): is not '// &
                          'a finite number (NaN or Infinity); give a real number')
             end if
         end do
@@ -301,7 +302,7 @@ contains
             if (shown > max_row_messages) cycle
             write (shown_value, '(g0.12)') values(i)
             call add(table, at(table%path, row_line(text, scan, a, i))//'group &'// &
-                     group_name//', variable '//name//'('//int_text(i)//') = '// &
+                     group_name//', variable '//name//'('//integer_text(i)//') = '// &
                      trim(adjustl(shown_value))//': '//rule)
         end do
         call add_more(table, name, shown)
@@ -332,12 +333,12 @@ contains
             if (shown > max_row_messages) cycle
             if (r1(i) == unset) then
                 call add(table, at(table%path, row_line(text, scan, a_r0, i))//'group &'// &
-                         group_name//', variable r1('//int_text(i)//'): is missing; give '// &
+                         group_name//', variable r1('//integer_text(i)//'): is missing; give '// &
                          'both r0 and r1 for a row (the paper''s secant method) or neither '// &
                          '(the bracketing solver)')
             else
                 call add(table, at(table%path, row_line(text, scan, a_r1, i))//'group &'// &
-                         group_name//', variable r0('//int_text(i)//'): is missing; give '// &
+                         group_name//', variable r0('//integer_text(i)//'): is missing; give '// &
                          'both r0 and r1 for a row (the paper''s secant method) or neither '// &
                          '(the bracketing solver)')
             end if
@@ -351,7 +352,7 @@ contains
         integer, intent(in) :: shown
         if (shown > max_row_messages) then
             call add(table, table%path//': group &'//group_name//', variable '//name// &
-                     ': ... and '//int_text(shown - max_row_messages)//' more rows like these')
+                     ': ... and '//integer_text(shown - max_row_messages)//' more rows like these')
         end if
     end subroutine add_more
 
@@ -392,7 +393,7 @@ contains
         integer, intent(in) :: line
         character(len=:), allocatable :: prefix
         if (line > 0) then
-            prefix = path//':'//int_text(line)//': '
+            prefix = path//':'//integer_text(line)//': '
         else
             prefix = path//': '
         end if
@@ -422,13 +423,5 @@ contains
         end if
         close (unit)
     end subroutine read_text
-
-    pure function int_text(value) result(text)
-        integer, intent(in) :: value
-        character(len=:), allocatable :: text
-        character(len=24) :: buffer
-        write (buffer, '(i0)') value
-        text = trim(buffer)
-    end function int_text
 
 end module endpoint_input

@@ -9,10 +9,11 @@
 !! integer arrays, so a file of a million values costs a few arrays, not a million
 !! strings.
 module namelist_scan
+    use strings, only: integer_text, lower
     implicit none
     private
 
-    public :: group_scan, scan_group, lower
+    public :: group_scan, scan_group
 
     !> The scanned group.
     type :: group_scan
@@ -122,7 +123,7 @@ contains
         end do
         if (len(g%problem) == 0 .and. .not. g%closed) then
             g%problem_line = line
-            g%problem = 'the group &'//group_name//' (line '//int_text(g%line)// &
+            g%problem = 'the group &'//group_name//' (line '//integer_text(g%line)// &
                            ') is not closed: end it with /'
         end if
 
@@ -319,25 +320,5 @@ contains
         end do
         shown = text(i:j - 1)
     end function snippet
-
-    !> Lowercase copy.
-    pure function lower(text) result(lowered)
-        character(len=*), intent(in) :: text !! text
-        character(len=len(text)) :: lowered
-        integer :: i, code
-        lowered = text
-        do i = 1, len(text)
-            code = iachar(text(i:i))
-            if (code >= iachar('A') .and. code <= iachar('Z')) lowered(i:i) = achar(code + 32)
-        end do
-    end function lower
-
-    pure function int_text(value) result(text)
-        integer, intent(in) :: value
-        character(len=:), allocatable :: text
-        character(len=24) :: buffer
-        write (buffer, '(i0)') value
-        text = trim(buffer)
-    end function int_text
 
 end module namelist_scan

@@ -15,6 +15,7 @@ module result_output
     use brachistochrone_version, only: program_name, program_version
     use two_point, only: endpoint_solution, arch_word
     use endpoint_input, only: endpoint_table, group_name
+    use strings, only: integer_text
     implicit none
     private
 
@@ -355,13 +356,5 @@ contains
         text = trim(adjustl(buffer))
         if (text(len(text):) == '.') text = text(:len(text) - 1)
     end function short_real
-
-    pure function integer_text(value) result(text)
-        integer, intent(in) :: value
-        character(len=:), allocatable :: text
-        character(len=24) :: buffer
-        write (buffer, '(i0)') value
-        text = trim(buffer)
-    end function integer_text
 
 end module result_output

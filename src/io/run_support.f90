@@ -2,10 +2,11 @@
 module run_support
     use, intrinsic :: iso_fortran_env, only: error_unit, int64
     use brachistochrone_version, only: program_name
+    use strings, only: integer_text
     implicit none
     private
 
-    public :: timestamp, progress_type, integer_text
+    public :: timestamp, progress_type
 
     !> Progress of a long loop, reported on stderr (never stdout): percent, rate, time
     !! left; the first report after 2 s, then every 5 s. Safe to step from OpenMP threads.
@@ -138,14 +139,5 @@ contains
             text = integer_text(whole)//'s'
         end if
     end function duration
-
-    !> Decimal text of an integer.
-    pure function integer_text(value) result(text)
-        integer, intent(in) :: value !! the integer
-        character(len=:), allocatable :: text
-        character(len=24) :: buffer
-        write (buffer, '(i0)') value
-        text = trim(buffer)
-    end function integer_text
 
 end module run_support
