@@ -57,9 +57,12 @@ module quadrature
         end function evaluate_interface
     end interface
 
-    !> Deepest bisection level of `integrate_adaptive` (2**40 panels is never reached in
-    !! practice; it only bounds the work on a non-integrable input).
-    integer, parameter :: max_depth = 40
+    !> Most panels `integrate_adaptive` may evaluate for one integral.
+    integer, parameter :: max_panels = 200000
+    !> Deepest bisection level of `integrate_adaptive`. Refinement is local, so the work
+    !! grows with the depth, not 2**depth: an integrand with structure on the scale 1e-30
+    !! of the interval needs about 100 levels near it.
+    integer, parameter :: max_depth = 120
 
 contains
 
@@ -161,6 +164,7 @@ contains
         real(qp), intent(out) :: error                !! estimate of |value - integral|
         integer, intent(out) :: status                !! status_ok or status_no_convergence
         real(qp) :: whole, tolerance
+        integer :: budget
 
         value = 0.0_qp
         error = 0.0_qp
@@ -172,28 +176,43 @@ contains
         if (a == b) return
         whole = integrate(f, a, b, rule)
         tolerance = max(abs_tol, rel_tol*abs(whole))
-        call bisect(a, b, whole, tolerance, 0, value, error, status)
+        budget = max_panels
+        call bisect(a, b, whole, tolerance, 0, value, error, status, budget)
 
     contains
 
-        pure recursive subroutine bisect(lo, hi, whole_panel, tol, depth, val, err, stat)
+        !> Accept a panel when |G(panel) - G(halves)| is below its share of the tolerance,
+        !! or below the rounding noise of the halves (100 eps of their magnitude: past that
+        !! point bisection only chases noise); give up at max_depth or when the budget of
+        !! panels is spent, so no input can make the work explode.
+        pure recursive subroutine bisect(lo, hi, whole_panel, tol, depth, val, err, stat, &
+                                         panels_left)
             real(qp), intent(in) :: lo, hi, whole_panel, tol
             integer, intent(in) :: depth
             real(qp), intent(out) :: val, err
             integer, intent(inout) :: stat
+            integer, intent(inout) :: panels_left
             real(qp) :: middle, left, right, val_left, val_right, err_left, err_right
             middle = 0.5_qp*(lo + hi)
             left = integrate(f, lo, middle, rule)
             right = integrate(f, middle, hi, rule)
+            panels_left = panels_left - 2
             val = left + right
             err = abs(whole_panel - val)
-            if (err <= tol .or. err <= 4.0_qp*eps_qp*abs(val)) return
-            if (depth >= max_depth .or. middle <= lo .or. middle >= hi) then
+            if (err <= tol .or. err <= 100.0_qp*eps_qp*(abs(left) + abs(right))) return
+            if (.not. (err == err)) then
+                stat = status_invalid_argument     ! NaN: the integrand is not defined here
+                return
+            end if
+            if (depth >= max_depth .or. panels_left <= 0 .or. middle <= lo .or. &
+                middle >= hi) then
                 stat = status_no_convergence
                 return
             end if
-            call bisect(lo, middle, left, 0.5_qp*tol, depth + 1, val_left, err_left, stat)
-            call bisect(middle, hi, right, 0.5_qp*tol, depth + 1, val_right, err_right, stat)
+            call bisect(lo, middle, left, 0.5_qp*tol, depth + 1, val_left, err_left, stat, &
+                        panels_left)
+            call bisect(middle, hi, right, 0.5_qp*tol, depth + 1, val_right, err_right, stat, &
+                        panels_left)
             val = val_left + val_right
             err = err_left + err_right
         end subroutine bisect

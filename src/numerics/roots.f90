@@ -6,6 +6,8 @@
 !!   stops when the predicted error of the last iterate is below the tolerance: with
 !!   quadratic convergence the error after a step dx_k is about |dx_k|^2 |dx_k| /
 !!   |dx_{k-1}|^2, which saves the confirming evaluation a plain |dx| test needs.
+!! - `bracketed_secant`: regula falsi with the Anderson-Bjorck correction, for functions
+!!   without a derivative: superlinear, and never leaves the bracket.
 !! - `secant`: the paper's secant method (Tee 1998, sec. 5.1) with its stopping rule
 !!   |x_n - x_(n-1)| < tol and a count of the steps, for reproducing Table 1.
 module roots
@@ -16,7 +18,7 @@ module roots
     implicit none
     private
 
-    public :: root_function, newton_bracketed, secant
+    public :: root_function, newton_bracketed, bracketed_secant, secant
 
     !> A scalar function f(x) with derivative; extend it to carry the problem's data.
     type, abstract :: root_function
@@ -136,6 +138,69 @@ contains
             status = status_no_convergence
         end do
     end subroutine newton_bracketed
+
+    !> Root of f on [lo, hi] (f(lo), f(hi) of opposite signs) by regula falsi with the
+    !! Anderson-Bjorck correction; f's derivative is not used. Stops when the bracket
+    !! is narrower than rel_tol*|x| + abs_tol or f(x) = 0.
+    pure subroutine bracketed_secant(fun, lo, f_lo, hi, f_hi, rel_tol, abs_tol, max_steps, &
+                                     x, steps, status)
+        class(root_function), intent(in) :: fun !! the function
+        real(qp), intent(in) :: lo, hi          !! bracket
+        real(qp), intent(in) :: f_lo, f_hi      !! f at the bracket ends
+        real(qp), intent(in) :: rel_tol         !! relative tolerance on x
+        real(qp), intent(in) :: abs_tol         !! absolute tolerance on x
+        integer, intent(in) :: max_steps        !! limit on evaluations of f
+        real(qp), intent(out) :: x              !! the root
+        integer, intent(out) :: steps           !! evaluations of f made
+        integer, intent(out) :: status          !! status_ok or the reason
+        real(qp) :: a, b, fa, fb, fx, dfx, scale
+        integer :: side
+        a = lo
+        b = hi
+        fa = f_lo
+        fb = f_hi
+        steps = 0
+        side = 0
+        x = a
+        status = status_ok
+        if (fa == 0.0_qp) return
+        x = b
+        if (fb == 0.0_qp) return
+        status = status_no_convergence
+        do while (steps < max_steps)
+            x = (a*fb - b*fa)/(fb - fa)
+            if (.not. (x > min(a, b) .and. x < max(a, b))) x = 0.5_qp*(a + b)
+            call fun%evaluate(x, fx, dfx, status)
+            steps = steps + 1
+            if (status /= status_ok) return
+            if (fx == 0.0_qp) return
+            if ((fx > 0.0_qp) .eqv. (fb > 0.0_qp)) then
+                ! x replaces b; if b was also replaced last time, shrink fa (Anderson-Bjorck)
+                if (side == 1) then
+                    scale = 1.0_qp - fx/fb
+                    if (scale <= 0.0_qp) scale = 0.5_qp
+                    fa = fa*scale
+                end if
+                b = x
+                fb = fx
+                side = 1
+            else
+                if (side == -1) then
+                    scale = 1.0_qp - fx/fa
+                    if (scale <= 0.0_qp) scale = 0.5_qp
+                    fb = fb*scale
+                end if
+                a = x
+                fa = fx
+                side = -1
+            end if
+            if (abs(b - a) <= rel_tol*abs(x) + abs_tol) then
+                status = status_ok
+                return
+            end if
+            status = status_no_convergence
+        end do
+    end subroutine bracketed_secant
 
     !> The secant method from x0, x1, stopping when |x_n - x_(n-1)| < tol.
     !!

@@ -1,0 +1,148 @@
+!> The general central-force engine against independent values: the inverse-square fast
+!! path, Saitoh's closed forms for the harmonic law, Keam's limit pi/(n+1), closed-form
+!! fall times.
+module test_central_force
+    use, intrinsic :: iso_fortran_env, only: output_unit
+    use brachistochrone_kinds, only: qp, pi, eps_qp
+    use brachistochrone_status, only: status_ok, status_inaccessible
+    use closed_forms, only: radial_time
+    use speed_laws, only: inverse_square_law, power_law, logarithmic_law, harmonic_law
+    use central_force, only: central_force_model, new_central_force_model
+    use inverse_square, only: inverse_square_model, new_inverse_square_model
+    use two_point, only: endpoint_solution, solve_endpoint, arch_inaccessible
+    use testing, only: check, check_close, check_digits, section, digits_of_agreement
+    implicit none
+    private
+
+    public :: run_central_force_tests
+
+contains
+
+    subroutine run_central_force_tests()
+        call engine_versus_fast_path()
+        call harmonic_closed_forms()
+        call power_laws()
+    end subroutine run_central_force_tests
+
+    subroutine engine_versus_fast_path()
+        type(central_force_model) :: general
+        type(inverse_square_model) :: fast
+        type(endpoint_solution) :: a, b
+        real(qp), parameter :: apses(6) = [1.0e-3_qp, 0.05_qp, 0.2_qp, 0.5_qp, 0.8_qp, 0.99_qp]
+        real(qp) :: r, big_r, angle(2), length(2), time(2), worst, fall
+        integer :: i, j, status, solved
+        call section('central force: general engine = inverse-square fast path')
+        general = new_central_force_model(inverse_square_law())
+        fast = new_inverse_square_model()
+        worst = 99.0_qp
+        do i = 1, 6
+            big_r = apses(i)
+            do j = 0, 4
+                r = big_r + (1.0_qp - big_r)*real(j, qp)/4.0_qp
+                call general%half_arch(r, big_r, j == 2, angle(1), length(1), time(1), &
+                                       status)
+                call fast%half_arch(r, big_r, j == 2, angle(2), length(2), time(2), status)
+                if (r < 1.0_qp) worst = min(worst, digits_of_agreement(angle(1), angle(2)))
+                worst = min(worst, digits_of_agreement(length(1), length(2)), &
+                            digits_of_agreement(time(1), time(2)))
+            end do
+        end do
+        write (output_unit, '(a,f6.2)') '   fewest digits of Theta, S, T on a grid: ', worst
+        call check(worst >= 32.0_qp, 'Theta, S, T agree to >= 32 digits')
+        call general%fall_time(0.3_qp, fall, status)
+        call check_close(fall, radial_time(0.3_qp), 64.0_qp, 'general fall time = (46)')
+        solved = 0
+        worst = 99.0_qp
+        do i = 1, 5
+            do j = 1, 5
+                a = general%solve(real(i, qp)/5.0_qp, real(j, qp)*0.4_qp)
+                b = solve_endpoint(fast, real(i, qp)/5.0_qp, real(j, qp)*0.4_qp)
+                if (a%status == status_ok .and. a%arch == b%arch) solved = solved + 1
+                ! R-bar's own conditioning, cond ~ 1.3/R near psi = 2 pi/3, allows
+                ! 33 + log10(R) digits there (test_physics measures cond directly)
+                worst = min(worst, digits_of_agreement(a%apse_radius, b%apse_radius) &
+                            + max(0.0_qp, -1.0_qp - log10(b%apse_radius)), &
+                            digits_of_agreement(a%arclength, b%arclength), &
+                            digits_of_agreement(a%time, b%time))
+            end do
+        end do
+        write (output_unit, '(a,f6.2)') '   fewest digits of R, s, t on 25 endpoints: ', worst
+        call check(solved == 25, 'general two-point solver: same arch on 25 endpoints')
+        call check(worst >= 32.0_qp, 'general two-point solver: R, s, t to >= 32 digits')
+        a = general%solve(0.5_qp, 2.2_qp)
+        call check(a%status == status_inaccessible .and. a%arch == arch_inaccessible, &
+                   'general: psi >= 2 pi/3 is inaccessible')
+    end subroutine engine_versus_fast_path
+
+    !> Saitoh (7)-(10), units R_E = 1, omega = 1: r^2 = ((1+m^2) + (1-m^2) cos phi)/2,
+    !! theta = atan(m tan(phi/2)) - m phi/2, t = (phi/2) sqrt(1 - m^2), m = R_m.
+    subroutine harmonic_closed_forms()
+        type(central_force_model) :: general
+        type(endpoint_solution) :: b
+        real(qp), parameter :: minima(5) = [0.01_qp, 0.2_qp, 0.5_qp, 0.7_qp, 0.95_qp]
+        real(qp) :: m, phi, r, angle, length, time, theta, worst
+        integer :: i, j, status
+        call section('central force: harmonic law against Saitoh''s hypocycloid')
+        general = new_central_force_model(harmonic_law())
+        worst = 99.0_qp
+        do i = 1, 5
+            m = minima(i)
+            call general%half_arch(m, m, .false., angle, length, time, status)
+            call check_close(2.0_qp*angle, pi*(1.0_qp - m), 64.0_qp, &
+                             'surface angle pi (1 - R_m) (Saitoh)')
+            call check_close(2.0_qp*time, pi*sqrt(1.0_qp - m*m), 64.0_qp, &
+                             'total time pi sqrt(1 - R_m^2) (10)')
+            do j = 1, 3
+                phi = pi*real(j, qp)/4.0_qp
+                r = sqrt(0.5_qp*((1.0_qp + m*m) + (1.0_qp - m*m)*cos(phi)))
+                theta = atan(m*tan(0.5_qp*phi)) - 0.5_qp*m*phi
+                call general%half_arch(r, m, .false., angle, length, time, status)
+                ! (8) subtracts two terms of size ~ m phi/2: its own rounding is eps times
+                ! their size, so measure theta's error on that scale
+                worst = min(worst, -log10(abs(angle - theta)/(0.5_qp*m*phi) + eps_qp), &
+                            digits_of_agreement(time, 0.5_qp*phi*sqrt(1.0_qp - m*m)))
+            end do
+        end do
+        write (output_unit, '(a,f6.2)') '   fewest digits of theta(phi), t(phi): ', worst
+        call check(worst >= 32.0_qp, 'theta (8) and t (9) along the hypocycloid, 32 digits')
+        ! surface to surface: psi = pi (1 - R_m) gives R_m back
+        b = general%solve(1.0_qp, pi*0.6_qp)
+        call check_close(b%apse_radius, 0.4_qp, 1.0e3_qp, 'two-point, surface to surface')
+        call check_close(b%time, pi*sqrt(1.0_qp - 0.16_qp), 1.0e3_qp, &
+                         'two-point time pi sqrt(1 - R_m^2)')
+    end subroutine harmonic_closed_forms
+
+    !> Power laws: n = 2 is the inverse-square law; Keam: Theta(R,R) -> pi/(n+1),
+    !! approached like R^(n-1) (logarithmically for n = 1).
+    subroutine power_laws()
+        type(central_force_model) :: square, two, three, half_law, logarithm
+        real(qp) :: a(2), b(2), angle, worst
+        integer :: status, i
+        call section('central force: power laws and Keam''s limit pi/(n+1)')
+        square = new_central_force_model(inverse_square_law())
+        two = new_central_force_model(power_law(n=2.0_qp))
+        worst = 99.0_qp
+        do i = 1, 4
+            call square%apse_angle(real(i, qp)/5.0_qp, a(1), status)
+            call two%apse_angle(real(i, qp)/5.0_qp, b(1), status)
+            worst = min(worst, digits_of_agreement(b(1), a(1)))
+        end do
+        call check(worst >= 33.0_qp, 'power law n = 2 reproduces inverse-square')
+        three = new_central_force_model(power_law(n=3.0_qp))
+        call three%apse_angle(1.0e-10_qp, angle, status)
+        call check(status == status_ok .and. abs(angle - pi/4.0_qp) < 1.0e-18_qp, &
+                   'n = 3: Theta(R,R) -> pi/4 (|difference| < 1e-18 at R = 1e-10)')
+        half_law = new_central_force_model(power_law(n=1.5_qp))
+        call half_law%apse_angle(1.0e-20_qp, a(1), status)
+        call half_law%apse_angle(1.0e-24_qp, a(2), status)
+        call check(abs((pi/2.5_qp - a(1))/(pi/2.5_qp - a(2)) - 100.0_qp) < 1.0e-6_qp, &
+                   'n = 1.5: pi/(n+1) - Theta(R,R) ~ R^(1/2)')
+        call check(abs(pi/2.5_qp - a(2)) < 4.0e-13_qp, 'n = 1.5: Theta(R,R) -> pi/2.5')
+        logarithm = new_central_force_model(logarithmic_law())
+        call logarithm%apse_angle(1.0e-8_qp, a(1), status)
+        call logarithm%apse_angle(1.0e-40_qp, a(2), status)
+        call check(a(1) < a(2) .and. a(2) < pi/2.0_qp .and. pi/2.0_qp - a(2) < 0.01_qp, &
+                   'logarithmic potential: Theta(R,R) rises slowly towards pi/2')
+    end subroutine power_laws
+
+end module test_central_force
