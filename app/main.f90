@@ -13,6 +13,7 @@ program main
     use brachistochrone_version, only: program_name, program_version
     use endpoint_input, only: endpoint_table, message
     use result_output, only: write_outputs, write_table_header, write_table_row
+    use curve_output, only: write_curves
     use run_support, only: timestamp
     use strings, only: integer_text
     use command_line, only: run_options, parse_command_line, write_usage, exit_ok, &
@@ -25,8 +26,8 @@ program main
     type(inverse_square_model) :: model
     type(endpoint_solution), allocatable :: solutions(:)
     type(message), allocatable :: report(:)
-    character(len=:), allocatable :: problem
-    integer :: i, status, unsolved, first, last, code
+    character(len=:), allocatable :: problem, date
+    integer :: i, status, unsolved, first, last, code, missing
     logical :: finished
 
     call parse_command_line(options, status, problem)
@@ -51,8 +52,13 @@ program main
     allocate (solutions(first:last))
     call solve_rows(model, table, first, last, solutions, .not. options%quiet)
 
-    call write_outputs(options%request, table, first, last, solutions, timestamp(), &
-                       status, problem)
+    date = timestamp()
+    call write_outputs(options%request, table, first, last, solutions, date, status, problem)
+    if (status == 1) call fail(exit_input, problem)
+    if (status /= 0) call fail(exit_io, problem)
+    call write_curves(options%request%curves_path, options%request%force, model, table, &
+                      first, last, solutions, date, .not. options%quiet, status, problem, &
+                      missing)
     if (status == 1) call fail(exit_input, problem)
     if (status /= 0) call fail(exit_io, problem)
     if (options%show_table) then
@@ -63,6 +69,12 @@ program main
     end if
 
     unsolved = count(solutions%status /= status_ok)
+    if (missing > unsolved) then
+        write (error_unit, '(a)') program_name//': '//integer_text(missing - unsolved)// &
+            ' solved endpoints have no curve; see the comments in '// &
+            options%request%curves_path
+    end if
+    if (missing > unsolved .and. unsolved == 0) stop exit_unsolved, quiet=.true.
     if (unsolved > 0) then
         write (error_unit, '(a)') program_name//': '//integer_text(unsolved)//' of '// &
             integer_text(last - first + 1)//' endpoints have no solution; see their status'

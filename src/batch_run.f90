@@ -7,7 +7,7 @@ module batch_run
     use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
     use inverse_square, only: inverse_square_model
     use two_point, only: endpoint_solution, solve_endpoint, solve_endpoint_secant
-    use endpoint_input, only: endpoint_table, message, read_endpoint_file
+    use endpoint_input, only: endpoint_table, message, read_endpoint_file, max_curve_points
     use result_output, only: output_request
     use brachistochrone_version, only: program_name
     use command_line, only: run_options, exit_ok, exit_input
@@ -50,6 +50,13 @@ contains
         first = options%first
         last = options%last
         call check_slice(table, first, last, ok, text)
+        if (ok .and. len(options%request%curves_path) > 0 .and. table%curve_points == 0) then
+            ok = .false.
+            text = '--curves '//options%request%curves_path//' needs the number of points '// &
+                   'per curve: set curve_points = N (2 <= N <= '// &
+                   integer_text(max_curve_points)//') in the group &endpoints of '// &
+                   options%input_path
+        end if
         if (ok .and. .not. options%check_only) call check_targets(options%request, ok, text)
         if (.not. ok) then
             report = [message(program_name//': '//text)]
@@ -129,6 +136,7 @@ contains
         call one(request%csv_path)
         call one(request%nml_path)
         call one(request%table_path)
+        call one(request%curves_path)
     contains
         subroutine one(path)
             character(len=*), intent(in) :: path

@@ -4,8 +4,10 @@
 !! use brachistochrone
 !! type(inverse_square_model) :: model
 !! type(endpoint_solution) :: b
+!! type(curve_samples) :: c
 !! model = new_inverse_square_model()
 !! b = solve_endpoint(model, 0.2_qp, 1.2_qp)   ! R-bar, s, t in b%apse_radius, ...
+!! c = sample_endpoint_curve(model, b, 201)     ! c%r(k), c%theta(k), ... from A to B
 !! ```
 module brachistochrone
     use brachistochrone_kinds, only: qp, pi, eps_qp
@@ -20,6 +22,8 @@ module brachistochrone
     use two_point, only: endpoint_solution, solve_endpoint, solve_endpoint_secant, &
                          arch_none, arch_first, arch_second, arch_complete, arch_radial, &
                          arch_inaccessible, arch_word
+    use curve, only: curve_samples, sample_endpoint_curve, sample_complete_arch, &
+                     apsidal_locus, min_curve_points
     implicit none
     private
 
@@ -34,5 +38,7 @@ module brachistochrone
     public :: endpoint_solution, solve_endpoint, solve_endpoint_secant
     public :: arch_none, arch_first, arch_second, arch_complete, arch_radial, &
               arch_inaccessible, arch_word
+    public :: curve_samples, sample_endpoint_curve, sample_complete_arch, apsidal_locus, &
+              min_curve_points
 
 end module brachistochrone

@@ -100,6 +100,12 @@ contains
         call check(table%has_estimates(1) .and. .not. table%has_estimates(2) .and. &
                    table%has_estimates(3), 'r0, r1 optional per row (null values)')
         call check(table%secant_tolerance == 1.0e-16_qp, 'secant_tolerance default 1e-16')
+        call check(table%curve_points == 0, 'curve_points default 0 (no curves)')
+        call write_file('build/test_curves.nml', '&endpoints n = 1, rho = 0.5, psi = 1, '// &
+                        'curve_points = 100000 /')
+        call read_endpoint_file('build/test_curves.nml', table)
+        call check(size(table%errors) == 0 .and. table%curve_points == 100000, &
+                   'curve_points = 100000 read')
 
         call expect_error('build/test_missing.nml', 'nothing here', '&endpoints', &
                           'missing group')
@@ -122,6 +128,19 @@ contains
                           'r0 = 0.3 /', 'r1(1)', 'r0 without r1')
         call expect_error('build/test_bign.nml', '&endpoints n = 2000000000, rho = 0.5, '// &
                           'psi = 1 /', 'out of range', 'n above the limit')
+        call expect_error('build/test_cp1.nml', '&endpoints n = 1, rho = 0.5, psi = 1, '// &
+                          'curve_points = 1 /', 'curve_points = 1: must be 0', &
+                          'one curve point')
+        call expect_error('build/test_cp2.nml', '&endpoints n = 1, rho = 0.5, psi = 1, '// &
+                          'curve_points = 100001 /', '2 <= curve_points <= 100000', &
+                          'too many curve points')
+        call expect_error('build/test_cp3.nml', '&endpoints n = 1, rho = 0.5, psi = 1, '// &
+                          'curve_points = 2.5 /', 'whole number', 'curve_points not whole')
+        call expect_error('build/test_cp4.nml', '&endpoints n = 1, rho = 0.5, psi = 1, '// &
+                          'curve_points = 5, 6 /', 'exactly one value', 'two curve_points')
+        call expect_error('build/test_cp5.nml', '&endpoints n = 1, rho = 0.5, psi = 1, '// &
+                          'curve_points = 99999999999 /', 'out of range', &
+                          'curve_points overflows')
         call expect_error('build/test_nofile.nml', '', 'cannot read', 'missing file', &
                           create=.false.)
     end subroutine input_tests

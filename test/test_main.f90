@@ -5,12 +5,14 @@ program test_main
     use test_physics, only: run_physics_tests
     use test_io, only: run_io_tests
     use test_central_force, only: run_central_force_tests
+    use test_curves, only: run_curve_tests
     implicit none
     integer :: code
     call run_numerics_tests()
     call run_io_tests()
     call run_physics_tests()
     call run_central_force_tests()
+    call run_curve_tests()
     code = summary()
     if (code /= 0) error stop 1
 end program test_main

@@ -18,6 +18,7 @@ program main
     use brachistochrone_version, only: program_name, program_version
     use endpoint_input, only: endpoint_table, message
     use result_output, only: write_outputs, write_table_header, write_table_row
+    use curve_output, only: write_curves
     use run_support, only: timestamp
     use strings, only: integer_text
     use command_line, only: run_options, parse_command_line, write_usage, exit_ok, &
@@ -35,6 +36,7 @@ program main
     integer(int8), allocatable :: sent(:), received(:)
     integer, allocatable :: counts(:), displacements(:)
     integer :: rank, ranks, status, i, first, last, my_first, my_last, rows, bytes, code
+    integer :: missing
     logical :: finished
 
     call mpi_init()
@@ -87,6 +89,12 @@ program main
         date = timestamp()
         call write_outputs(options%request, table, first, last, solutions, date, status, &
                            problem)
+        ! curves on rank 0 (with its OpenMP threads), from the gathered solutions
+        missing = 0
+        if (status == 0) call write_curves(options%request%curves_path, &
+                                           options%request%force, model, table, first, &
+                                           last, solutions, date, .not. options%quiet, &
+                                           status, problem, missing)
         if (status /= 0) then
             write (error_unit, '(a)') program_name//': '//problem
             code = merge(exit_input, exit_io, status == 1)
@@ -96,6 +104,13 @@ program main
                 do i = first, last
                     call write_table_row(output_unit, i, solutions(i))
                 end do
+            end if
+            if (missing > count(solutions%status /= status_ok)) then
+                write (error_unit, '(a)') program_name//': '// &
+                    integer_text(missing - count(solutions%status /= status_ok))// &
+                    ' solved endpoints have no curve; see the comments in '// &
+                    options%request%curves_path
+                code = exit_unsolved
             end if
             if (any(solutions%status /= status_ok)) then
                 write (error_unit, '(a)') program_name//': '// &

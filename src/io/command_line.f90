@@ -39,6 +39,7 @@ contains
         options%request%csv_path = ''
         options%request%nml_path = ''
         options%request%table_path = ''
+        options%request%curves_path = ''
         options%request%force = .false.
         status = exit_ok
         message = ''
@@ -54,7 +55,7 @@ contains
             case ('--version')
                 options%version = .true.
                 return
-            case ('--csv', '--nml', '--table', '--first', '--last', '--threads')
+            case ('--csv', '--nml', '--table', '--curves', '--first', '--last', '--threads')
                 if (k == count_arguments) then
                     call problem(argument//' needs a value')
                     return
@@ -65,6 +66,7 @@ contains
                 case ('--csv');     options%request%csv_path = value
                 case ('--nml');     options%request%nml_path = value
                 case ('--table');   options%request%table_path = value
+                case ('--curves');  options%request%curves_path = value
                 case ('--first');   options%first = whole_number(value)
                 case ('--last');    options%last = whole_number(value)
                 case ('--threads')
@@ -131,6 +133,10 @@ contains
         write (unit, '(a)') '  --nml OUT.nml       write the results as namelist group '// &
             '&results (reads back bit for bit)'
         write (unit, '(a)') '  --table OUT.txt     write the readable table to a file'
+        write (unit, '(a)') '  --curves OUT.csv    write id,point,r,theta,s,t,x,y along each '// &
+            'brachistochrone'
+        write (unit, '(a)') '                      (curve_points = N in &endpoints: N points '// &
+            'from A to B)'
         write (unit, '(a)') '  --no-table          do not print the table on stdout'
         write (unit, '(a)') '  --first I --last J  solve rows I..J only (1-based, '// &
             'inclusive): one job of an array'

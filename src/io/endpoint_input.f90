@@ -9,6 +9,7 @@
 !!       r0  = 0.2, 0.4          ! optional, per row: with r1, use the paper's secant
 !!       r1  = 0.1, 0.2
 !!       secant_tolerance = 1e-16 ! optional: the secant stops at |R_n - R_(n-1)| < this
+!!       curve_points = 201       ! optional: points per curve for --curves (0: none)
 !!     /
 !!
 !! The file is checked in three passes and every problem is reported (file, line,
@@ -27,14 +28,17 @@ module endpoint_input
     private
 
     public :: endpoint_table, message, read_endpoint_file, max_endpoints, group_name
-    public :: variable_names
+    public :: variable_names, max_curve_points
 
     !> Largest table accepted (memory grows linearly: about 100 bytes per endpoint).
     integer, parameter :: max_endpoints = 10000000
     !> The namelist group read.
     character(len=*), parameter :: group_name = 'endpoints'
     !> Its variables.
-    character(len=*), parameter :: variable_names = 'n, rho, psi, r0, r1, secant_tolerance'
+    character(len=*), parameter :: variable_names = &
+        'n, rho, psi, r0, r1, secant_tolerance, curve_points'
+    !> Most points per curve (`curve_points`); the fewest is 2 (A and B).
+    integer, parameter :: max_curve_points = 100000
     !> Value no input can produce: marks an array element the namelist did not set.
     real(qp), parameter :: unset = -huge(1.0_qp)
     !> At most this many per-row messages are listed per variable; the rest are counted.
@@ -55,6 +59,7 @@ module endpoint_input
         real(qp), allocatable :: r1(:)         !! second secant estimate (if has_estimates)
         logical, allocatable :: has_estimates(:) !! row uses the paper's secant method
         real(qp) :: secant_tolerance = 1.0e-16_qp !! the paper's stopping rule
+        integer :: curve_points = 0               !! points per curve for --curves (0: none)
         type(message), allocatable :: errors(:)   !! every problem found; empty if valid
     end type endpoint_table
 
@@ -71,7 +76,8 @@ contains
         character(len=512) :: io_message
         real(qp), allocatable :: rho(:), psi(:), r0(:), r1(:)
         real(qp) :: secant_tolerance
-        namelist /endpoints/ n, rho, psi, r0, r1, secant_tolerance
+        integer :: curve_points
+        namelist /endpoints/ n, rho, psi, r0, r1, secant_tolerance, curve_points
 
         table%path = path
         allocate (table%errors(0))
@@ -106,6 +112,7 @@ contains
         r0 = unset
         r1 = unset
         secant_tolerance = 1.0e-16_qp
+        curve_points = 0
         open (newunit=unit, file=path, status='old', action='read', iostat=ios, &
               iomsg=io_message)
         if (ios == 0) read (unit, nml=endpoints, iostat=ios, iomsg=io_message)
@@ -130,6 +137,13 @@ contains
                      group_name//', variable secant_tolerance: must be a positive '// &
                      'number, for example 1e-16')
         end if
+        if (curve_points /= 0 .and. (curve_points < 2 .or. curve_points > max_curve_points)) &
+            then
+            call add(table, at(path, line_of(scan, 'curve_points'))//'group &'// &
+                     group_name//', variable curve_points = '//integer_text(curve_points)// &
+                     ': must be 0 (no curves) or 2 <= curve_points <= '// &
+                     integer_text(max_curve_points)//' (points per curve, A and B included)')
+        end if
         call check_rows(table, text, scan, 'rho', a_rho, rho, n, &
                         'must satisfy 0 < rho <= 1 (A is at radius 1)', in_rho_range)
         call check_rows(table, text, scan, 'psi', a_psi, psi, n, &
@@ -145,6 +159,7 @@ contains
         table%r0 = merge(r0(1:n), 0.0_qp, table%has_estimates)
         table%r1 = merge(r1(1:n), 0.0_qp, table%has_estimates)
         table%secant_tolerance = secant_tolerance
+        table%curve_points = curve_points
     end subroutine read_endpoint_file
 
     !> Names known, value tokens well formed, n present and in range.
@@ -153,7 +168,7 @@ contains
         character(len=*), intent(in) :: text
         type(group_scan), intent(in) :: scan
         integer, intent(out) :: n
-        integer :: a, t, ios, star, repeat, shown
+        integer :: a, t, ios, star, repeat, shown, count_points
         character(len=:), allocatable :: name, token, value
         real(qp) :: x
         logical :: is_integer
@@ -168,7 +183,7 @@ contains
                          variable_names)
                 cycle
             end if
-            is_integer = name == 'n'
+            is_integer = name == 'n' .or. name == 'curve_points'
             do t = scan%first(a), scan%last(a)
                 token = text(scan%start(t):scan%finish(t))
                 value = token
@@ -185,7 +200,8 @@ contains
                 if (len(value) == 0) cycle            ! null value: leaves the default
                 if (is_integer) then
                     if (verify(value, '+-0123456789') /= 0) then
-                        call bad_value('write a whole number, for example  n = 5')
+                        call bad_value('write a whole number, for example  '//name// &
+                                       ' = '//trim(merge('5  ', '201', name == 'n')))
                         cycle
                     end if
                 else
@@ -217,6 +233,24 @@ contains
             call add(table, at(table%path, scan%name_line(a))//'group &'//group_name// &
                      ', variable n: '//token//' is out of range; it must be 1 <= n <= '// &
                      integer_text(max_endpoints))
+        end if
+
+        a = assignment_of(scan, 'curve_points')
+        if (a > 0) then
+            if (scan%last(a) /= scan%first(a)) then
+                call add(table, at(table%path, scan%name_line(a))//'group &'//group_name// &
+                         ', variable curve_points: needs exactly one value, for example  '// &
+                         'curve_points = 201')
+            else
+                token = text(scan%start(scan%first(a)):scan%finish(scan%first(a)))
+                read (token, *, iostat=ios) count_points
+                if (len(token) > 0 .and. ios /= 0) then
+                    call add(table, at(table%path, scan%name_line(a))//'group &'// &
+                             group_name//', variable curve_points: '//token//' is out of '// &
+                             'range; it must be 0 (no curves) or 2 <= curve_points <= '// &
+                             integer_text(max_curve_points))
+                end if
+            end if
         end if
 
     contains

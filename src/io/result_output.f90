@@ -22,6 +22,7 @@ module result_output
     public :: format_real, csv_header, csv_row, write_table_header, write_table_row
     public :: output_request, write_outputs, provenance_lines, write_results_namelist
     public :: commit_file, temporary_name, results_group_name, max_echoed_rows
+    public :: write_provenance
 
     !> Header line of the CSV output.
     character(len=*), parameter :: csv_header = 'rho,psi,arch,R,s,t,steps,status'
@@ -35,6 +36,7 @@ module result_output
         character(len=:), allocatable :: csv_path   !! CSV file ('' for none)
         character(len=:), allocatable :: nml_path   !! namelist results file ('' for none)
         character(len=:), allocatable :: table_path !! readable table file ('' for none)
+        character(len=:), allocatable :: curves_path !! curve points CSV ('' for none)
         logical :: force = .false.                  !! replace existing files
     end type output_request
 
@@ -140,6 +142,25 @@ contains
         lines = [lines, effective_input(table, first, last)]
     end function provenance_lines
 
+    !> Write the provenance (`provenance_lines`) as comment lines starting with `prefix`.
+    subroutine write_provenance(unit, table, first, last, date, prefix, ios, io_message)
+        integer, intent(in) :: unit               !! open formatted unit
+        type(endpoint_table), intent(in) :: table !! the input
+        integer, intent(in) :: first, last        !! rows solved
+        character(len=*), intent(in) :: date      !! when
+        character(len=*), intent(in) :: prefix    !! comment marker, such as '# '
+        integer, intent(out) :: ios               !! iostat of the writes
+        character(len=*), intent(inout) :: io_message !! iomsg of the writes
+        type(line_text), allocatable :: lines(:)
+        integer :: k
+        lines = provenance_lines(table, first, last, date)
+        ios = 0
+        do k = 1, size(lines)
+            write (unit, '(a)', iostat=ios, iomsg=io_message) prefix//lines(k)%text
+            if (ios /= 0) return
+        end do
+    end subroutine write_provenance
+
     !> The input as read (after defaults), as a namelist group that reads back the same
     !! rows: values in full precision, null values where a row has no estimates.
     function effective_input(table, first, last) result(lines)
@@ -151,12 +172,13 @@ contains
         rows = last - first + 1
         echo = rows <= max_echoed_rows
         estimates = echo .and. any(table%has_estimates(first:last))
-        count_lines = 4 + merge(2*(rows + 1), 1, echo) + merge(2*(rows + 1), 0, estimates)
+        count_lines = 5 + merge(2*(rows + 1), 1, echo) + merge(2*(rows + 1), 0, estimates)
         allocate (lines(count_lines))
         k = 0
         call put('&'//group_name)
         call put('  n = '//integer_text(rows))
         call put('  secant_tolerance = '//format_real(table%secant_tolerance))
+        call put('  curve_points = '//integer_text(table%curve_points))
         if (.not. echo) then
             call put('  ! rho, psi, r0, r1: '//integer_text(rows)//' rows, more than '// &
                      integer_text(max_echoed_rows)//' are not echoed; the rows of this '// &

@@ -15,6 +15,8 @@ module run_support
         integer :: total = 0
         integer :: done = 0
         integer(int64) :: started = 0, last_report = 0, rate = 1
+        character(len=:), allocatable :: noun   !! what is counted ('endpoints')
+        character(len=:), allocatable :: verb   !! what was done to them ('solved')
     contains
         procedure :: start => progress_start
         procedure :: step => progress_step
@@ -77,10 +79,16 @@ contains
         text = trim(buffer)
     end function utc_from_epoch
 
-    subroutine progress_start(self, total, enabled)
+    subroutine progress_start(self, total, enabled, noun, verb)
         class(progress_type), intent(inout) :: self
         integer, intent(in) :: total     !! steps to come
         logical, intent(in) :: enabled   !! report at all
+        character(len=*), intent(in), optional :: noun !! what a step is (default endpoints)
+        character(len=*), intent(in), optional :: verb !! what was done (default solved)
+        self%noun = 'endpoints'
+        if (present(noun)) self%noun = noun
+        self%verb = 'solved'
+        if (present(verb)) self%verb = verb
         self%enabled = enabled
         self%total = total
         self%done = 0
@@ -109,7 +117,7 @@ contains
             speed = real(done)/max(elapsed, 1.0e-3)
             write (error_unit, '(a,f5.1,a,i0,a,i0,a,f0.1,a,a)') program_name//': ', &
                 100.0*real(done)/real(self%total), '% (', done, '/', self%total, '), ', &
-                speed, ' endpoints/s, ', duration(real(self%total - done)/speed)//' left'
+                speed, ' '//self%noun//'/s, ', duration(real(self%total - done)/speed)//' left'
         end if
         !$omp end critical (progress_report)
     end subroutine progress_step
@@ -122,8 +130,8 @@ contains
         call system_clock(now)
         elapsed = real(now - self%started)/real(self%rate)
         if (elapsed >= 2.0) write (error_unit, '(a,i0,a,a,a,f0.1,a)') program_name// &
-            ': solved ', self%total, ' endpoints in ', duration(elapsed), ' (', &
-            real(self%total)/max(elapsed, 1.0e-3), ' endpoints/s)'
+            ': '//self%verb//' ', self%total, ' '//self%noun//' in ', duration(elapsed), &
+            ' (', real(self%total)/max(elapsed, 1.0e-3), ' '//self%noun//'/s)'
     end subroutine progress_finish
 
     pure function duration(seconds) result(text)

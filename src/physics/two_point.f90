@@ -59,6 +59,9 @@ module two_point
         real(qp) :: psi = 0.0_qp          !! endpoint angle (radians)
         integer :: arch = arch_none       !! arch_first, arch_second, ...
         real(qp) :: apse_radius = 0.0_qp  !! R-bar (0 for radial fall)
+        !> rho - R-bar as the solver carried it (exact near the apse, where rho - R-bar
+        !! computed from the rounded R-bar would lose digits); 0 when there is no R-bar
+        real(qp) :: apse_gap = 0.0_qp
         real(qp) :: arclength = 0.0_qp    !! s, arclength from A to B
         real(qp) :: time = 0.0_qp         !! t, time from A to B (kappa when inaccessible)
         integer :: steps = 0              !! root-finder evaluations (secant steps)
@@ -126,6 +129,7 @@ contains
             ! radial fall (eq. 45-46): K = 0, R = 0
             solution%arch = arch_radial
             solution%apse_radius = 0.0_qp
+            solution%apse_gap = rho
             solution%arclength = 1.0_qp - rho
             solution%time = radial_time(rho)
             solution%has_apse_radius = .true.
@@ -370,6 +374,7 @@ contains
         values = model%evaluate_arch(level_fine, second, solution%rho, big_r, d, &
                                      .false., .true.)
         solution%apse_radius = big_r
+        solution%apse_gap = d
         solution%arclength = values%arclength
         solution%time = values%time
         solution%has_apse_radius = .true.

@@ -28,6 +28,10 @@ CASES = [
     ("&endpoints n = 20000000, rho = 0.5, psi = 1 /\n", ["variable n", "out of range"]),
     ("&endpoints n = two, rho = 0.5, psi = 1 /\n", ["variable n", "whole number"]),
     ("! only a comment\n", ["no namelist group &endpoints"]),
+    ("&endpoints n = 1, rho = 0.5, psi = 1, curve_points = 1 /\n",
+     ["variable curve_points = 1", "2 <= curve_points <= 100000"]),
+    ("&endpoints n = 1, rho = 0.5, psi = 1, curve_points = many /\n",
+     ["variable curve_points", "whole number"]),
 ]
 
 

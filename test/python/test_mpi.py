@@ -35,6 +35,18 @@ def test_mpi_run_equals_serial_run(run, tmp_path, monkeypatch):
     assert comparable(tmp_path / "par.nml") == comparable(serial_nml)
 
 
+def test_mpi_curves_equal_serial_curves(run, tmp_path, monkeypatch):
+    monkeypatch.setenv("SOURCE_DATE_EPOCH", "1700000000")
+    nml = tmp_path / "in.nml"
+    nml.write_text("&endpoints n = 3, rho = 0.2, 0.5, 0.9, psi = 1.2, 2.5, 0.4, "
+                   "curve_points = 9 /\n")
+    serial = run(nml, "--curves", tmp_path / "serial.csv", "--no-table")
+    parallel = mpi(nml, "--curves", "par.csv", "--no-table", cwd=tmp_path)
+    assert parallel.returncode == serial.returncode == 2, parallel.stderr
+    assert comparable(tmp_path / "par.csv") == comparable(tmp_path / "serial.csv")
+    assert "# id 2: no curve (inaccessible)" in (tmp_path / "par.csv").read_text()
+
+
 def test_mpi_slice_and_input_error(tmp_path):
     nml = tmp_path / "in.nml"
     write_table(nml, 9)

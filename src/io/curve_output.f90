@@ -1,0 +1,149 @@
+!> Writing the points along each solved brachistochrone: one CSV per run (--curves).
+!!
+!! Header `id,point,r,theta,s,t,x,y`: `id` is the endpoint's row in the input file,
+!! `point` runs 1..curve_points from A to B (equal steps of arclength on each half-arch,
+!! the apse a point; see `curve`). An endpoint without a curve (inaccessible, or not
+!! solved) has no rows, only a comment line `# id I: no curve (STATUS)` in its place.
+!! Same provenance and write-then-rename as the other outputs (`result_output`).
+!! Curves are sampled in parallel (OpenMP) in blocks of rows, written in row order, so
+!! memory stays bounded and the file does not depend on the number of threads.
+module curve_output
+    use brachistochrone_status, only: status_word
+    use inverse_square, only: inverse_square_model
+    use two_point, only: endpoint_solution
+    use curve, only: curve_samples, sample_endpoint_curve
+    use endpoint_input, only: endpoint_table
+    use result_output, only: format_real, write_provenance, temporary_name, commit_file
+    use run_support, only: progress_type
+    use strings, only: integer_text
+    implicit none
+    private
+
+    public :: curves_header, write_curves, write_curve, curve_row
+
+    !> Header line of the curves CSV.
+    character(len=*), parameter :: curves_header = 'id,point,r,theta,s,t,x,y'
+    !> Points sampled per block of rows (bounds the memory: about 100 bytes a point).
+    integer, parameter :: points_per_block = 200000
+
+contains
+
+    !> CSV row of point k of a curve: `id,point,r,theta,s,t,x,y`.
+    pure function curve_row(id, k, samples) result(line)
+        integer, intent(in) :: id                   !! the endpoint's row number
+        integer, intent(in) :: k                    !! the point, 1..samples%n
+        type(curve_samples), intent(in) :: samples  !! the curve
+        character(len=:), allocatable :: line
+        line = integer_text(id)//','//integer_text(k)//','//format_real(samples%r(k))// &
+               ','//format_real(samples%theta(k))//','//format_real(samples%s(k))//','// &
+               format_real(samples%t(k))//','//format_real(samples%x(k))//','// &
+               format_real(samples%y(k))
+    end function curve_row
+
+    !> Write the rows of one curve, or the comment line of an endpoint without one.
+    subroutine write_curve(unit, id, samples, ios, io_message)
+        integer, intent(in) :: unit                 !! open formatted unit
+        integer, intent(in) :: id                   !! the endpoint's row number
+        type(curve_samples), intent(in) :: samples  !! its curve
+        integer, intent(out) :: ios                 !! iostat
+        character(len=*), intent(inout) :: io_message !! iomsg
+        integer :: k
+        ios = 0
+        if (samples%n == 0) then
+            write (unit, '(a)', iostat=ios, iomsg=io_message) '# id '//integer_text(id)// &
+                ': no curve ('//status_word(samples%status)//')'
+            return
+        end if
+        do k = 1, samples%n
+            write (unit, '(a)', iostat=ios, iomsg=io_message) curve_row(id, k, samples)
+            if (ios /= 0) return
+        end do
+    end subroutine write_curve
+
+    !> Sample the curve of every solved row first..last with `table%curve_points` points
+    !! and write them to `path`. status: 0 ok; 1 the file exists and force is off; 3 an
+    !! I/O error (nothing partial is left). `missing` counts the rows without a curve.
+    subroutine write_curves(path, force, model, table, first, last, solutions, date, &
+                            report, status, message, missing)
+        character(len=*), intent(in) :: path               !! the CSV ('' : nothing)
+        logical, intent(in) :: force                       !! replace an existing file
+        type(inverse_square_model), intent(in) :: model    !! the evaluator
+        type(endpoint_table), intent(in) :: table          !! the input
+        integer, intent(in) :: first, last                 !! rows solved
+        type(endpoint_solution), intent(in) :: solutions(first:) !! their solutions
+        character(len=*), intent(in) :: date               !! provenance date
+        logical, intent(in) :: report                      !! progress on stderr
+        integer, intent(out) :: status                     !! 0, 1 or 3
+        character(len=:), allocatable, intent(out) :: message !! what went wrong
+        integer, intent(out) :: missing                    !! rows without a curve
+        type(curve_samples), allocatable :: block(:)
+        type(progress_type) :: progress
+        character(len=:), allocatable :: temporary
+        character(len=512) :: io_message
+        integer :: unit, ios, block_rows, block_first, block_last, i, rename_status
+        logical :: exists
+
+        status = 0
+        message = ''
+        missing = 0
+        rename_status = 0
+        if (len(path) == 0) return
+        inquire (file=path, exist=exists)
+        if (exists .and. .not. force) then
+            status = 1
+            message = path//' exists; use --force to replace it, or choose another name'
+            return
+        end if
+        temporary = temporary_name(path)
+        open (newunit=unit, file=temporary, status='replace', action='write', iostat=ios, &
+              iomsg=io_message)
+        if (ios /= 0) then
+            status = 3
+            message = 'cannot write '//path//': '//trim(io_message)
+            return
+        end if
+        call write_provenance(unit, table, first, last, date, '# ', ios, io_message)
+        if (ios == 0) write (unit, '(a)', iostat=ios, iomsg=io_message) '# curves: '// &
+            integer_text(table%curve_points)//' points per curve from A to B, equal '// &
+            'steps of arclength on each half-arch (the apse is a point); id = input row'
+        if (ios == 0) write (unit, '(a)', iostat=ios, iomsg=io_message) curves_header
+
+        block_rows = max(1, points_per_block/max(1, table%curve_points))
+        call progress%start(last - first + 1, report, 'curves', 'sampled')
+        block_first = first
+        do while (block_first <= last .and. ios == 0)
+            block_last = min(last, block_first + block_rows - 1)
+            allocate (block(block_first:block_last))
+            !$omp parallel do schedule(dynamic, 1) default(shared) private(i)
+            do i = block_first, block_last
+                block(i) = sample_endpoint_curve(model, solutions(i), table%curve_points)
+                call progress%step()
+            end do
+            !$omp end parallel do
+            do i = block_first, block_last
+                if (block(i)%n == 0) missing = missing + 1
+                call write_curve(unit, i, block(i), ios, io_message)
+                if (ios /= 0) exit
+            end do
+            deallocate (block)
+            block_first = block_last + 1
+        end do
+        call progress%finish()
+
+        if (ios /= 0) then
+            close (unit, status='delete')
+            status = 3
+            message = 'cannot write '//path//': '//trim(io_message)
+            return
+        end if
+        close (unit, iostat=ios, iomsg=io_message)
+        if (ios == 0) call commit_file(temporary, path, rename_status)
+        if (ios /= 0 .or. rename_status /= 0) then
+            open (newunit=unit, file=temporary, iostat=ios)
+            close (unit, status='delete', iostat=ios)
+            status = 3
+            message = 'cannot put the finished output in place as '//path
+        end if
+    end subroutine write_curves
+
+end module curve_output
