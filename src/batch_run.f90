@@ -7,6 +7,8 @@ module batch_run
     use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
     use inverse_square, only: inverse_square_model
     use two_point, only: endpoint_solution, solve_endpoint, solve_endpoint_secant
+    use central_force, only: central_force_model, new_central_force_model
+    use speed_laws, only: power_law, logarithmic_law, harmonic_law
     use endpoint_input, only: endpoint_table, message, read_endpoint_file, max_curve_points
     use result_output, only: output_request
     use brachistochrone_version, only: program_name
@@ -86,6 +88,8 @@ contains
     !> Solve rows first..last of the table, in parallel over OpenMP threads (dynamic
     !! schedule; each row is independent and `pure`, so the results do not depend on the
     !! number of threads), with a progress report on stderr when `report` is set.
+    !! The field is the table's `force`: 'inverse_square' takes the fast path, the others
+    !! the general engine.
     subroutine solve_rows(model, table, first, last, solutions, report)
         type(inverse_square_model), intent(in) :: model        !! the evaluator
         type(endpoint_table), intent(in) :: table              !! the input
@@ -93,11 +97,21 @@ contains
         type(endpoint_solution), intent(out) :: solutions(first:) !! their solutions
         logical, intent(in) :: report                          !! progress on stderr
         type(progress_type) :: progress
+        type(central_force_model) :: general
+        logical :: fast
         integer :: i
+        fast = table%force == 'inverse_square'
+        select case (table%force)
+        case ('power');       general = new_central_force_model(power_law(n=table%exponent))
+        case ('logarithmic'); general = new_central_force_model(logarithmic_law())
+        case ('harmonic');    general = new_central_force_model(harmonic_law())
+        end select
         call progress%start(last - first + 1, report)
         !$omp parallel do schedule(dynamic, 16) default(shared) private(i)
         do i = first, last
-            if (table%has_estimates(i)) then
+            if (.not. fast) then
+                solutions(i) = general%solve(table%rho(i), table%psi(i))
+            else if (table%has_estimates(i)) then
                 solutions(i) = solve_endpoint_secant(model, table%rho(i), table%psi(i), &
                                                      table%r0(i), table%r1(i), &
                                                      table%secant_tolerance)

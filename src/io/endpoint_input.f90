@@ -10,6 +10,8 @@
 !!       r1  = 0.1, 0.2
 !!       secant_tolerance = 1e-16 ! optional: the secant stops at |R_n - R_(n-1)| < this
 !!       curve_points = 201       ! optional: points per curve for --curves (0: none)
+!!       force = 'inverse_square' ! optional: the field (see `force_names`)
+!!       exponent = 3.0           ! with force = 'power': F = mu/r^exponent, exponent > 1
 !!     /
 !!
 !! The file is checked in three passes and every problem is reported (file, line,
@@ -28,7 +30,7 @@ module endpoint_input
     private
 
     public :: endpoint_table, message, read_endpoint_file, max_endpoints, group_name
-    public :: variable_names, max_curve_points
+    public :: variable_names, max_curve_points, force_names
 
     !> Largest table accepted (memory grows linearly: about 100 bytes per endpoint).
     integer, parameter :: max_endpoints = 10000000
@@ -36,7 +38,10 @@ module endpoint_input
     character(len=*), parameter :: group_name = 'endpoints'
     !> Its variables.
     character(len=*), parameter :: variable_names = &
-        'n, rho, psi, r0, r1, secant_tolerance, curve_points'
+        'n, rho, psi, r0, r1, secant_tolerance, curve_points, force, exponent'
+    !> The force fields `force` may name.
+    character(len=*), parameter :: force_names = &
+        "'inverse_square', 'power', 'logarithmic', 'harmonic'"
     !> Most points per curve (`curve_points`); the fewest is 2 (A and B).
     integer, parameter :: max_curve_points = 100000
     !> Value no input can produce: marks an array element the namelist did not set.
@@ -60,6 +65,10 @@ module endpoint_input
         logical, allocatable :: has_estimates(:) !! row uses the paper's secant method
         real(qp) :: secant_tolerance = 1.0e-16_qp !! the paper's stopping rule
         integer :: curve_points = 0               !! points per curve for --curves (0: none)
+        !> The force field: 'inverse_square' (the fast path), 'power', 'logarithmic',
+        !! 'harmonic' (the general engine)
+        character(len=:), allocatable :: force
+        real(qp) :: exponent = 0.0_qp             !! n of F = mu/r^n for force = 'power'
         type(message), allocatable :: errors(:)   !! every problem found; empty if valid
     end type endpoint_table
 
@@ -77,7 +86,10 @@ contains
         real(qp), allocatable :: rho(:), psi(:), r0(:), r1(:)
         real(qp) :: secant_tolerance
         integer :: curve_points
-        namelist /endpoints/ n, rho, psi, r0, r1, secant_tolerance, curve_points
+        character(len=32) :: force
+        real(qp) :: exponent
+        namelist /endpoints/ n, rho, psi, r0, r1, secant_tolerance, curve_points, force, &
+            exponent
 
         table%path = path
         allocate (table%errors(0))
@@ -113,6 +125,8 @@ contains
         r1 = unset
         secant_tolerance = 1.0e-16_qp
         curve_points = 0
+        force = 'inverse_square'
+        exponent = unset
         open (newunit=unit, file=path, status='old', action='read', iostat=ios, &
               iomsg=io_message)
         if (ios == 0) read (unit, nml=endpoints, iostat=ios, iomsg=io_message)
@@ -150,6 +164,7 @@ contains
                         'must satisfy 0 <= psi <= pi radians (by symmetry use '// &
                         '2*pi - psi for an angle beyond pi)', in_psi_range)
         call check_pairs(table, text, scan, r0, r1, n, a_r0, a_r1)
+        call check_force(table, scan, force, exponent, any(r0(1:n) /= unset), curve_points)
         if (size(table%errors) > 0) return
 
         table%n = n
@@ -160,7 +175,46 @@ contains
         table%r1 = merge(r1(1:n), 0.0_qp, table%has_estimates)
         table%secant_tolerance = secant_tolerance
         table%curve_points = curve_points
+        table%force = trim(force)
+        table%exponent = merge(exponent, 0.0_qp, exponent /= unset)
     end subroutine read_endpoint_file
+
+    !> The field and what goes with it: exponent only (and always) with 'power', the
+    !! paper's secant method and curves only with 'inverse_square' (its fast path).
+    subroutine check_force(table, scan, force, exponent, estimates, curve_points)
+        type(endpoint_table), intent(inout) :: table
+        type(group_scan), intent(in) :: scan
+        character(len=*), intent(in) :: force
+        real(qp), intent(in) :: exponent
+        logical, intent(in) :: estimates
+        integer, intent(in) :: curve_points
+        character(len=:), allocatable :: where
+        where = at(table%path, line_of(scan, 'force'))//'group &'//group_name
+        if (index(force_names, "'"//trim(force)//"'") == 0) then
+            call add(table, where//', variable force = '''//trim(force)//''': unknown '// &
+                     'field; use one of '//force_names)
+            return
+        end if
+        if (trim(force) == 'power') then
+            if (exponent == unset) then
+                call add(table, where//', variable exponent: is missing; force = ''power'' '// &
+                         'needs the exponent n of F = mu/r^n, n > 1, for example  exponent = 3')
+            else if (.not. ieee_is_finite(exponent) .or. exponent <= 1.0_qp) then
+                call add(table, at(table%path, line_of(scan, 'exponent'))//'group &'// &
+                         group_name//', variable exponent: must be a number > 1 (n = 1 is '// &
+                         'force = ''logarithmic'')')
+            end if
+        else if (exponent /= unset) then
+            call add(table, at(table%path, line_of(scan, 'exponent'))//'group &'// &
+                     group_name//', variable exponent: applies to force = ''power'' only')
+        end if
+        if (trim(force) /= 'inverse_square') then
+            if (estimates) call add(table, where//': r0, r1 (the paper''s secant method) '// &
+                                    'apply to force = ''inverse_square'' only; leave them out')
+            if (curve_points /= 0) call add(table, where//': curve_points: curves are '// &
+                                            'sampled for force = ''inverse_square'' only')
+        end if
+    end subroutine check_force
 
     !> Names known, value tokens well formed, n present and in range.
     subroutine check_tokens(table, text, scan, n)
@@ -184,6 +238,22 @@ contains
                 cycle
             end if
             is_integer = name == 'n' .or. name == 'curve_points'
+            if (name == 'force') then
+                if (scan%last(a) /= scan%first(a)) then
+                    call add(table, at(table%path, scan%name_line(a))//'group &'// &
+                             group_name//', variable force: needs exactly one quoted name, '// &
+                             'for example  force = ''harmonic''')
+                else
+                    token = text(scan%start(scan%first(a)):scan%finish(scan%first(a)))
+                    if (len(token) < 2 .or. index('''"', token(1:1)) == 0 .or. &
+                        token(len(token):) /= token(1:1)) then
+                        call add(table, at(table%path, scan%name_line(a))//'group &'// &
+                                 group_name//', variable force: '//token//' must be quoted, '// &
+                                 'for example  force = ''harmonic''')
+                    end if
+                end if
+                cycle
+            end if
             do t = scan%first(a), scan%last(a)
                 token = text(scan%start(t):scan%finish(t))
                 value = token

@@ -172,13 +172,16 @@ contains
         rows = last - first + 1
         echo = rows <= max_echoed_rows
         estimates = echo .and. any(table%has_estimates(first:last))
-        count_lines = 5 + merge(2*(rows + 1), 1, echo) + merge(2*(rows + 1), 0, estimates)
+        count_lines = 6 + merge(1, 0, table%force == 'power') + merge(2*(rows + 1), 1, echo) &
+                      + merge(2*(rows + 1), 0, estimates)
         allocate (lines(count_lines))
         k = 0
         call put('&'//group_name)
         call put('  n = '//integer_text(rows))
         call put('  secant_tolerance = '//format_real(table%secant_tolerance))
         call put('  curve_points = '//integer_text(table%curve_points))
+        call put('  force = '''//table%force//'''')
+        if (table%force == 'power') call put('  exponent = '//format_real(table%exponent))
         if (.not. echo) then
             call put('  ! rho, psi, r0, r1: '//integer_text(rows)//' rows, more than '// &
                      integer_text(max_echoed_rows)//' are not echoed; the rows of this '// &

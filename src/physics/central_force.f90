@@ -253,7 +253,8 @@ contains
     !> The two-point problem for this law: the brachistochrone from A = (1, 0) to
     !! B = (rho, psi), by a bracketed secant method on (0, rho] split at rho/2 (unknown
     !! u = sqrt(rho - R) near the apse, R below). psi >= 2 lim Theta(R,R) is the sector
-    !! of inaccessibility; t is then its greatest lower bound t(0) + (t(0) - t(rho)).
+    !! of inaccessibility; t is then its greatest lower bound t(0) + (t(0) - t(rho)),
+    !! attained (arch 'radial', through O) where the law lets a particle pass the centre.
     pure function general_solve(self, rho, psi) result(solution)
         class(central_force_model), intent(in) :: self
         real(qp), intent(in) :: rho   !! endpoint radius, 0 < rho <= 1
@@ -287,9 +288,18 @@ contains
                 solution%has_arclength = .true.
             else
                 call self%fall_time(0.0_qp, fall_0, status)
-                solution%arch = arch_inaccessible
                 solution%time = 2.0_qp*fall_0 - fall_rho
-                solution%status = status_inaccessible
+                if (self%law%passes_centre() .and. psi == 2.0_qp*limit) then
+                    ! the straight path through O (harmonic: the diametral tunnel) attains
+                    ! the bound: R = 0, s = 1 + rho
+                    solution%arch = arch_radial
+                    solution%arclength = 1.0_qp + rho
+                    solution%has_apse_radius = .true.
+                    solution%has_arclength = .true.
+                else
+                    solution%arch = arch_inaccessible
+                    solution%status = status_inaccessible
+                end if
             end if
             solution%has_time = .true.
             return

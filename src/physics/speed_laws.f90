@@ -23,6 +23,7 @@ module speed_laws
         procedure(scalar_law), deferred :: speed_squared   !! P(x) = v(x)^2
         procedure(pair_law), deferred :: divided_difference !! (P(x) - P(y))/(x - y)
         procedure(limit_law), deferred :: apse_angle_limit !! lim Theta(R,R), R -> 0
+        procedure :: passes_centre => no_centre_passage  !! v(0) finite
     end type speed_law
 
     abstract interface
@@ -76,9 +77,22 @@ module speed_laws
         procedure :: speed_squared => harmonic_p
         procedure :: divided_difference => harmonic_d
         procedure :: apse_angle_limit => harmonic_limit
+        procedure :: passes_centre => harmonic_passes_centre
     end type harmonic_law
 
 contains
+
+    !> Whether a particle can pass through the centre (finite speed there): then the
+    !! limit 2 lim Theta(R,R) of the accessible angle is reached, by the path through O.
+    pure logical function no_centre_passage(self)
+        class(speed_law), intent(in) :: self
+        no_centre_passage = .false.
+    end function no_centre_passage
+
+    pure logical function harmonic_passes_centre(self)
+        class(harmonic_law), intent(in) :: self
+        harmonic_passes_centre = .true.
+    end function harmonic_passes_centre
 
     pure function inverse_square_p(self, x) result(p)
         class(inverse_square_law), intent(in) :: self

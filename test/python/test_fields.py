@@ -1,0 +1,75 @@
+"""Force fields chosen in the namelist (force = ...), end to end, against closed forms
+and the inverse-square fast path."""
+import math
+from decimal import Decimal
+
+import mpmath as mp
+import pytest
+
+from conftest import read_csv
+
+mp.mp.dps = 40
+
+
+def solve(run, tmp_path, rho, psi, extra):
+    nml = tmp_path / "in.nml"
+    nml.write_text("&endpoints n = %d, rho = %s, psi = %s %s /\n"
+                   % (len(rho), ", ".join(rho), ", ".join(psi), extra))
+    out = tmp_path / "out.csv"
+    if out.exists():
+        out.unlink()
+    result = run(nml, "--csv", out, "--no-table")
+    return result, (read_csv(out)[2] if out.exists() else None)
+
+
+def test_power_law_two_is_the_inverse_square_fast_path(run, tmp_path):
+    rho = ["0.2", "0.5", "0.9", "1.0"]
+    psi = ["1.2", "0.1", "0.4", "2.0"]
+    _, general = solve(run, tmp_path, rho, psi, "force = 'power', exponent = 2")
+    _, fast = solve(run, tmp_path, rho, psi, "")
+    for a, b in zip(general, fast):
+        assert a["arch"] == b["arch"]
+        for key in ("R", "s", "t"):
+            assert abs(mp.mpf(a[key]) / mp.mpf(b[key]) - 1) < mp.mpf("1e-31"), key
+
+
+def test_harmonic_tunnels_against_saitoh(run, tmp_path):
+    """Surface to surface: psi = pi (1 - R_m), T = pi sqrt(1 - R_m^2) (units R_E = omega = 1);
+    the antipode by the straight diametral tunnel, T = pi."""
+    minima = ["0.1", "0.4", "0.75"]
+    psi = [mp.nstr(mp.pi * (1 - mp.mpf(m)), 36) for m in minima] + [mp.nstr(mp.pi, 40)]
+    result, rows = solve(run, tmp_path, ["1.0"] * 3 + ["0.5"], psi, "force = 'harmonic'")
+    assert result.returncode == 0, result.stderr
+    for m, row in zip(minima, rows):
+        assert row["arch"] == "complete"
+        assert abs(mp.mpf(row["R"]) - mp.mpf(m)) < mp.mpf("1e-30")
+        assert abs(mp.mpf(row["t"]) - mp.pi * mp.sqrt(1 - mp.mpf(m) ** 2)) < mp.mpf("1e-30")
+    # psi = pi read into binary128 is just below pi: R-bar ~ 1e-34, t -> pi - acos(rho)
+    last = rows[3]
+    assert mp.mpf(last["R"]) < mp.mpf("1e-30")
+    assert abs(mp.mpf(last["t"]) - (mp.pi - mp.acos(mp.mpf("0.5")))) < mp.mpf("1e-30")
+
+
+def test_logarithmic_and_power_laws_respect_their_sectors(run, tmp_path):
+    # F = 1/r^3: accessible psi < 2 pi/4; logarithmic: psi < pi
+    result, rows = solve(run, tmp_path, ["0.5", "0.5"], ["1.5", "1.6"],
+                         "force = 'power', exponent = 3")
+    assert result.returncode == 2
+    assert rows[0]["status"] == "ok" and rows[1]["status"] == "inaccessible"
+    result, rows = solve(run, tmp_path, ["0.5", "0.5"], ["2.5", "0.3"], "force = 'logarithmic'")
+    assert result.returncode == 0 and all(r["status"] == "ok" for r in rows)
+
+
+@pytest.mark.parametrize("extra,fragment", [
+    ("force = 'gravity'", "unknown field"),
+    ("force = harmonic", "must be quoted"),
+    ("force = 'power'", "variable exponent: is missing"),
+    ("force = 'power', exponent = 1", "must be a number > 1"),
+    ("force = 'harmonic', exponent = 3", "applies to force = 'power' only"),
+    ("force = 'harmonic', r0 = 0.3, r1 = 0.2", "apply to force = 'inverse_square' only"),
+])
+def test_field_input_errors(run, tmp_path, extra, fragment):
+    result, rows = solve(run, tmp_path, ["0.5"], ["1.0"], extra)
+    assert result.returncode == 1
+    assert fragment in result.stderr, result.stderr
+    assert rows is None
