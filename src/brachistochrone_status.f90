@@ -9,7 +9,8 @@ module brachistochrone_status
 
     public :: status_ok, status_inaccessible, status_rho_out_of_range, &
               status_psi_out_of_range, status_not_finite, status_no_convergence, &
-              status_outside_domain, status_invalid_argument, status_bad_estimates
+              status_outside_domain, status_invalid_argument, status_bad_estimates, &
+              status_latitude_out_of_range, status_bad_planet
     public :: status_word, status_message
 
     !> Success.
@@ -30,6 +31,10 @@ module brachistochrone_status
     integer, parameter :: status_invalid_argument = 7
     !> Initial estimates for the secant method are unusable (equal, or outside (0, rho]).
     integer, parameter :: status_bad_estimates = 8
+    !> A latitude outside -90 <= latitude <= 90 degrees (harmonic tunnels between places).
+    integer, parameter :: status_latitude_out_of_range = 9
+    !> A planet whose radius or surface gravity is not positive and finite.
+    integer, parameter :: status_bad_planet = 10
 
 contains
 
@@ -47,6 +52,8 @@ contains
         case (status_outside_domain);   word = 'secant_left_domain'
         case (status_invalid_argument); word = 'invalid_argument'
         case (status_bad_estimates);    word = 'bad_estimates'
+        case (status_latitude_out_of_range); word = 'latitude_out_of_range'
+        case (status_bad_planet);       word = 'bad_planet'
         case default;                   word = 'unknown_status'
         end select
     end function status_word
@@ -76,6 +83,10 @@ contains
             message = 'arguments outside the domain 0 < R <= r <= 1, R < 1'
         case (status_bad_estimates)
             message = 'initial estimates r0, r1 must differ and lie in 0 < R <= rho'
+        case (status_latitude_out_of_range)
+            message = 'latitude must satisfy -90 <= latitude <= 90 (degrees)'
+        case (status_bad_planet)
+            message = 'the planet radius and surface gravity must be positive and finite'
         case default
             message = 'unknown status'
         end select

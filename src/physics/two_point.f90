@@ -26,6 +26,8 @@ module two_point
     use inverse_square, only: inverse_square_model, arch_values, level_fine, level_coarse, &
                               level_rough, level_digits
     use roots, only: root_function, newton_bracketed, secant
+    use arches, only: arch_none, arch_first, arch_second, arch_complete, arch_radial, &
+                      arch_inaccessible, arch_word
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     implicit none
     private
@@ -33,19 +35,6 @@ module two_point
     public :: endpoint_solution, solve_endpoint, solve_endpoint_secant
     public :: arch_none, arch_first, arch_second, arch_complete, arch_radial, &
               arch_inaccessible, arch_word
-
-    !> No answer (bad input).
-    integer, parameter :: arch_none = 0
-    !> B is on the first half-arch, before the apse.
-    integer, parameter :: arch_first = 1
-    !> B is on the second half-arch, after the apse.
-    integer, parameter :: arch_second = 2
-    !> rho = 1: B is the end of a complete brachistochrone (the particle stops at B).
-    integer, parameter :: arch_complete = 3
-    !> psi = 0: radial fall along OA (K = 0, R = 0).
-    integer, parameter :: arch_radial = 4
-    !> psi >= 2 pi/3: no brachistochrone; t is the greatest lower bound kappa(rho).
-    integer, parameter :: arch_inaccessible = 5
 
     !> Limit on root-finder evaluations per phase.
     integer, parameter :: max_steps = 200
@@ -84,20 +73,6 @@ module two_point
     end type upsilon_function
 
 contains
-
-    !> Word for an arch code, as written in the CSV `arch` column.
-    pure function arch_word(arch) result(word)
-        integer, intent(in) :: arch !! arch code
-        character(len=:), allocatable :: word
-        select case (arch)
-        case (arch_first);        word = 'first'
-        case (arch_second);       word = 'second'
-        case (arch_complete);     word = 'complete'
-        case (arch_radial);       word = 'radial'
-        case (arch_inaccessible); word = 'inaccessible'
-        case default;             word = 'none'
-        end select
-    end function arch_word
 
     !> Checks and the special endpoints shared by both solvers. Sets `done` when the
     !! solution is complete without a root finder; otherwise sets the arch and Theta(rho,rho).

@@ -1,0 +1,42 @@
+!> Where an endpoint lies on its brachistochrone: the arch codes and their words.
+!!
+!! Shared by every force law (`two_point` for the inverse-square force re-exports them,
+!! `harmonic` uses them for the uniform planet), so that a module can report arches
+!! without depending on another force law's solver.
+module arches
+    implicit none
+    private
+
+    public :: arch_none, arch_first, arch_second, arch_complete, arch_radial, &
+              arch_inaccessible, arch_word
+
+    !> No answer (bad input).
+    integer, parameter :: arch_none = 0
+    !> B is on the first half-arch, before the apse.
+    integer, parameter :: arch_first = 1
+    !> B is on the second half-arch, after the apse.
+    integer, parameter :: arch_second = 2
+    !> rho = 1: B is the end of a complete brachistochrone (the particle stops at B).
+    integer, parameter :: arch_complete = 3
+    !> psi = 0: radial fall along OA (K = 0, R = 0).
+    integer, parameter :: arch_radial = 4
+    !> psi >= 2 pi/3: no brachistochrone; t is the greatest lower bound kappa(rho).
+    integer, parameter :: arch_inaccessible = 5
+
+contains
+
+    !> Word for an arch code, as written in the CSV `arch` column.
+    pure function arch_word(arch) result(word)
+        integer, intent(in) :: arch !! arch code
+        character(len=:), allocatable :: word
+        select case (arch)
+        case (arch_first);        word = 'first'
+        case (arch_second);       word = 'second'
+        case (arch_complete);     word = 'complete'
+        case (arch_radial);       word = 'radial'
+        case (arch_inaccessible); word = 'inaccessible'
+        case default;             word = 'none'
+        end select
+    end function arch_word
+
+end module arches
