@@ -24,6 +24,12 @@ module brachistochrone
                          arch_inaccessible, arch_word
     use curve, only: curve_samples, sample_endpoint_curve, sample_complete_arch, &
                      apsidal_locus, min_curve_points
+    use speed_laws, only: speed_law, inverse_square_law, power_law, logarithmic_law, &
+                          harmonic_law
+    use central_force, only: central_force_model, new_central_force_model
+    use harmonic, only: harmonic_planet, harmonic_tunnel, planet_tunnel, hypocycloid_point, &
+                        hypocycloid_at, surface_to_surface, solve_harmonic_endpoint, &
+                        tautochrone_time, plan_tunnel, great_circle_angle
     implicit none
     private
 
@@ -38,6 +44,11 @@ module brachistochrone
     public :: endpoint_solution, solve_endpoint, solve_endpoint_secant
     public :: arch_none, arch_first, arch_second, arch_complete, arch_radial, &
               arch_inaccessible, arch_word
+    public :: speed_law, inverse_square_law, power_law, logarithmic_law, harmonic_law
+    public :: central_force_model, new_central_force_model
+    public :: harmonic_planet, harmonic_tunnel, planet_tunnel, hypocycloid_point, &
+              hypocycloid_at, surface_to_surface, solve_harmonic_endpoint, tautochrone_time, &
+              plan_tunnel, great_circle_angle
     public :: curve_samples, sample_endpoint_curve, sample_complete_arch, apsidal_locus, &
               min_curve_points
 
