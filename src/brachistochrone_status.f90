@@ -9,7 +9,8 @@ module brachistochrone_status
 
     public :: status_ok, status_inaccessible, status_rho_out_of_range, &
               status_psi_out_of_range, status_not_finite, status_no_convergence, &
-              status_outside_domain, status_invalid_argument, status_bad_estimates
+              status_outside_domain, status_invalid_argument, status_bad_estimates, &
+              status_above_start, status_parameter_out_of_range
     public :: status_word, status_message
 
     !> Success.
@@ -30,6 +31,12 @@ module brachistochrone_status
     integer, parameter :: status_invalid_argument = 7
     !> Initial estimates for the secant method are unusable (equal, or outside (0, rho]).
     integer, parameter :: status_bad_estimates = 8
+    !> Uniform gravity: the endpoint B lies above the start A (y_B < 0, y measured
+    !! downward), which a particle released from rest at A can never reach.
+    integer, parameter :: status_above_start = 9
+    !> A physical parameter is outside its domain: gravity, lengths and radii must be
+    !! positive, x_B >= 0, release heights within the arch, amplitudes 0 <= theta0 <= pi.
+    integer, parameter :: status_parameter_out_of_range = 10
 
 contains
 
@@ -47,6 +54,8 @@ contains
         case (status_outside_domain);   word = 'secant_left_domain'
         case (status_invalid_argument); word = 'invalid_argument'
         case (status_bad_estimates);    word = 'bad_estimates'
+        case (status_above_start);      word = 'above_start'
+        case (status_parameter_out_of_range); word = 'parameter_out_of_range'
         case default;                   word = 'unknown_status'
         end select
     end function status_word
@@ -76,6 +85,12 @@ contains
             message = 'arguments outside the domain 0 < R <= r <= 1, R < 1'
         case (status_bad_estimates)
             message = 'initial estimates r0, r1 must differ and lie in 0 < R <= rho'
+        case (status_above_start)
+            message = 'the endpoint lies above the start (y_B < 0 with y downward): a '// &
+                      'particle released from rest cannot reach it'
+        case (status_parameter_out_of_range)
+            message = 'a physical parameter is outside its domain (g, lengths and radii > 0, '// &
+                      'x_B >= 0, release height within the arch, 0 <= amplitude <= pi)'
         case default
             message = 'unknown status'
         end select
