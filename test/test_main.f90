@@ -4,11 +4,13 @@ program test_main
     use test_numerics, only: run_numerics_tests
     use test_physics, only: run_physics_tests
     use test_io, only: run_io_tests
+    use test_uniform_gravity, only: run_uniform_gravity_tests
     implicit none
     integer :: code
     call run_numerics_tests()
     call run_io_tests()
     call run_physics_tests()
+    call run_uniform_gravity_tests()
     code = summary()
     if (code /= 0) error stop 1
 end program test_main
