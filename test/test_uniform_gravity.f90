@@ -82,7 +82,15 @@ contains
         ! x_B/y_B = 1e4000 overflows (never formed); x_B/y_B = 1e-2000 gives a = 2e3999
         call one(1.0e2000_qp, 1.0e-2000_qp)
         call one(1.0e-2000_qp, 1.0_qp)
-        write (output_unit, '(a,f6.2,a)') '   x_B/y_B = 1e-2000 .. 1e4000: worst ', worst, &
+        ! both coordinates near the ends of the exponent range (a = 0.66e4932 for the
+        ! largest: y_B/sin(phi/2) alone would overflow)
+        call one(1.0e4900_qp, 1.0e4900_qp)
+        call one(3.0e4900_qp, 1.0e4900_qp)
+        call one(1.0e4932_qp, 1.1e4932_qp)
+        call one(1.0e-4900_qp, 1.0e-4900_qp)
+        call one(3.0e-4900_qp, 1.0e-4900_qp)
+        write (output_unit, '(a,f6.2,a)') '   x_B/y_B = 1e-2000 .. 1e4000, x_B, y_B up to ' // &
+            '1.1e4932 and down to 1e-4900: worst ', worst, &
             ' eps'
         call check(failures == 0, 'extreme ratios solved')
         call check(worst <= 8.0_qp, 'extreme ratios reproduce x_B, y_B to 8 eps')

@@ -244,7 +244,8 @@ contains
             deficit = two_pi - phi
             half = 0.5_qp*phi
             if (phi > 0.0_qp) then
-                radius = (y_b/sin(half))/(2.0_qp*sin(half))
+                ! halved first: y_B near huge with phi near pi must not overflow
+                radius = (0.5_qp*y_b/sin(half))/sin(half)
             else
                 ! x_B/y_B underflowed: a is beyond the range of real(qp)
                 radius = ieee_value(radius, ieee_positive_inf)
