@@ -10,7 +10,8 @@ module brachistochrone_status
     public :: status_ok, status_inaccessible, status_rho_out_of_range, &
               status_psi_out_of_range, status_not_finite, status_no_convergence, &
               status_outside_domain, status_invalid_argument, status_bad_estimates, &
-              status_latitude_out_of_range, status_bad_planet
+              status_latitude_out_of_range, status_bad_planet, &
+              status_above_start, status_parameter_out_of_range
     public :: status_word, status_message
 
     !> Success.
@@ -35,6 +36,12 @@ module brachistochrone_status
     integer, parameter :: status_latitude_out_of_range = 9
     !> A planet whose radius or surface gravity is not positive and finite.
     integer, parameter :: status_bad_planet = 10
+    !> Uniform gravity: the endpoint B lies above the start A (y_B < 0, y measured
+    !! downward), which a particle released from rest at A can never reach.
+    integer, parameter :: status_above_start = 11
+    !> A physical parameter is outside its domain: gravity, lengths and radii must be
+    !! positive, x_B >= 0, release heights within the arch, amplitudes 0 <= theta0 <= pi.
+    integer, parameter :: status_parameter_out_of_range = 12
 
 contains
 
@@ -54,6 +61,8 @@ contains
         case (status_bad_estimates);    word = 'bad_estimates'
         case (status_latitude_out_of_range); word = 'latitude_out_of_range'
         case (status_bad_planet);       word = 'bad_planet'
+        case (status_above_start);      word = 'above_start'
+        case (status_parameter_out_of_range); word = 'parameter_out_of_range'
         case default;                   word = 'unknown_status'
         end select
     end function status_word
@@ -87,6 +96,12 @@ contains
             message = 'latitude must satisfy -90 <= latitude <= 90 (degrees)'
         case (status_bad_planet)
             message = 'the planet radius and surface gravity must be positive and finite'
+        case (status_above_start)
+            message = 'the endpoint lies above the start (y_B < 0 with y downward): a '// &
+                      'particle released from rest cannot reach it'
+        case (status_parameter_out_of_range)
+            message = 'a physical parameter is outside its domain (g, lengths and radii > 0, '// &
+                      'x_B >= 0, release height within the arch, 0 <= amplitude <= pi)'
         case default
             message = 'unknown status'
         end select

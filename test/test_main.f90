@@ -7,6 +7,7 @@ program test_main
     use test_central_force, only: run_central_force_tests
     use test_curves, only: run_curve_tests
     use test_harmonic, only: run_harmonic_tests
+    use test_uniform_gravity, only: run_uniform_gravity_tests
     implicit none
     integer :: code
     call run_numerics_tests()
@@ -15,6 +16,7 @@ program test_main
     call run_central_force_tests()
     call run_curve_tests()
     call run_harmonic_tests()
+    call run_uniform_gravity_tests()
     code = summary()
     if (code /= 0) error stop 1
 end program test_main
