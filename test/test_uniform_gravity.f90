@@ -394,7 +394,7 @@ contains
                                            0.2_qp, 0.3_qp]
         real(qp) :: period, previous, series, tail, amplitude, numeric, fewest, value, complement
         real(qp) :: log_term, worst_ratio
-        integer :: i, j, status, failures
+        integer :: i, j, status, failures, status_agm
         logical :: increasing
 
         call section('uniform gravity: pendulum period, series, quadrature, limits')
@@ -450,9 +450,14 @@ contains
             // ' fewest digits ', fewest
         call check(failures == 0, 'pendulum quadrature converged up to pi - 1e-11')
         call check(fewest >= 32.0_qp, 'pendulum quadrature = AGM to >= 32 digits')
+        ! the binary128 pi is 8.7e-35 below pi: the period is finite (about 322) but the
+        ! integrand is sharply peaked; the quadrature either converges to the AGM value
+        ! or says no_convergence, never a wrong number
         call pendulum_period_quadrature(1.0_qp, 1.0_qp, pi, numeric, status)
-        call check(status == status_no_convergence .and. numeric == 0.0_qp, &
-                   'quadrature at theta0 = pi: no_convergence, not a wrong number')
+        call pendulum_period(1.0_qp, 1.0_qp, pi, period, status_agm)
+        call check((status == status_no_convergence .and. numeric == 0.0_qp) .or. &
+                   (status == status_ok .and. digits_of_agreement(numeric, period) >= 32.0_qp), &
+                   'quadrature at theta0 = pi: the AGM value or no_convergence, never wrong')
 
         ! theta0 -> pi: K = L + (k'^2/4)(L - 1) + O(k'^4 L), L = log(4/k')
         do i = 1, 2
