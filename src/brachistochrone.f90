@@ -22,6 +22,10 @@ module brachistochrone
     use two_point, only: endpoint_solution, solve_endpoint, solve_endpoint_secant, &
                          arch_none, arch_first, arch_second, arch_complete, arch_radial, &
                          arch_inaccessible, arch_word
+    use uniform_gravity, only: uniform_brachistochrone, cycloid_point, isochrone_time, &
+                               isochrone_time_quadrature, joined_arches_period, &
+                               joined_arches_period_quadrature, complete_elliptic_k, &
+                               pendulum_period, pendulum_period_quadrature
     use curve, only: curve_samples, sample_endpoint_curve, sample_complete_arch, &
                      apsidal_locus, min_curve_points
     use speed_laws, only: speed_law, inverse_square_law, power_law, logarithmic_law, &
@@ -49,6 +53,9 @@ module brachistochrone
     public :: harmonic_planet, harmonic_tunnel, planet_tunnel, hypocycloid_point, &
               hypocycloid_at, surface_to_surface, solve_harmonic_endpoint, tautochrone_time, &
               plan_tunnel, great_circle_angle
+    public :: uniform_brachistochrone, cycloid_point, isochrone_time, &
+              isochrone_time_quadrature, joined_arches_period, joined_arches_period_quadrature, &
+              complete_elliptic_k, pendulum_period, pendulum_period_quadrature
     public :: curve_samples, sample_endpoint_curve, sample_complete_arch, apsidal_locus, &
               min_curve_points
 
