@@ -21,6 +21,7 @@ program family
     use result_output, only: format_real, temporary_name, commit_file
     use run_support, only: timestamp
     use strings, only: integer_text
+    use command_line, only: get_argument
     implicit none
 
     character(len=*), parameter :: name = program_name//'-family'
@@ -218,15 +219,6 @@ contains
         write (error_unit, '(a)') name//': '//text
         stop code, quiet=.true.
     end subroutine fail
-
-    function get_argument(k) result(text)
-        integer, intent(in) :: k
-        character(len=:), allocatable :: text
-        integer :: length
-        call get_command_argument(k, length=length)
-        allocate (character(len=length) :: text)
-        call get_command_argument(k, text)
-    end function get_argument
 
     subroutine get_command_line(text)
         character(len=:), allocatable, intent(out) :: text

@@ -5,7 +5,7 @@ module command_line
     implicit none
     private
 
-    public :: run_options, parse_command_line, write_usage
+    public :: run_options, parse_command_line, write_usage, get_argument
     public :: exit_ok, exit_input, exit_unsolved, exit_io
 
     !> Exit codes of the drivers.
@@ -152,8 +152,9 @@ contains
             'error. Version '//program_version//'.'
     end subroutine write_usage
 
+    !> The k-th command-line argument, of its own length.
     function get_argument(k) result(argument)
-        integer, intent(in) :: k
+        integer, intent(in) :: k !! position, 1-based
         character(len=:), allocatable :: argument
         integer :: length
         call get_command_argument(k, length=length)

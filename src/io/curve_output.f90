@@ -13,7 +13,7 @@ module curve_output
     use two_point, only: endpoint_solution
     use curve, only: curve_samples, sample_endpoint_curve
     use endpoint_input, only: endpoint_table
-    use result_output, only: format_real, write_provenance, temporary_name, commit_file
+    use result_output, only: format_real, write_provenance, temporary_name, finish_file
     use run_support, only: progress_type
     use strings, only: integer_text
     implicit none
@@ -80,13 +80,12 @@ contains
         type(progress_type) :: progress
         character(len=:), allocatable :: temporary
         character(len=512) :: io_message
-        integer :: unit, ios, block_rows, block_first, block_last, i, rename_status
+        integer :: unit, ios, block_rows, block_first, block_last, i
         logical :: exists
 
         status = 0
         message = ''
         missing = 0
-        rename_status = 0
         if (len(path) == 0) return
         inquire (file=path, exist=exists)
         if (exists .and. .not. force) then
@@ -130,20 +129,7 @@ contains
         end do
         call progress%finish()
 
-        if (ios /= 0) then
-            close (unit, status='delete')
-            status = 3
-            message = 'cannot write '//path//': '//trim(io_message)
-            return
-        end if
-        close (unit, iostat=ios, iomsg=io_message)
-        if (ios == 0) call commit_file(temporary, path, rename_status)
-        if (ios /= 0 .or. rename_status /= 0) then
-            open (newunit=unit, file=temporary, iostat=ios)
-            close (unit, status='delete', iostat=ios)
-            status = 3
-            message = 'cannot put the finished output in place as '//path
-        end if
+        call finish_file(unit, temporary, path, ios, io_message, status, message)
     end subroutine write_curves
 
 end module curve_output

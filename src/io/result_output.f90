@@ -21,7 +21,7 @@ module result_output
 
     public :: format_real, csv_header, csv_row, write_table_header, write_table_row
     public :: output_request, write_outputs, provenance_lines, write_results_namelist
-    public :: commit_file, temporary_name, results_group_name, max_echoed_rows
+    public :: commit_file, temporary_name, finish_file, results_group_name, max_echoed_rows
     public :: write_provenance
 
     !> Header line of the CSV output.
@@ -249,7 +249,7 @@ contains
             character(len=*), intent(in) :: path, kind
             character(len=:), allocatable :: temporary
             character(len=512) :: io_message
-            integer :: unit, ios, k, rename_status
+            integer :: unit, ios, k
             logical :: exists
             if (len(path) == 0) return
             inquire (file=path, exist=exists)
@@ -293,20 +293,7 @@ contains
                     call write_table_row(unit, k, solutions(k))
                 end do
             end select
-            if (ios /= 0) then
-                close (unit, status='delete')
-                status = 3
-                message = 'cannot write '//path//': '//trim(io_message)
-                return
-            end if
-            close (unit, iostat=ios, iomsg=io_message)
-            if (ios == 0) call commit_file(temporary, path, rename_status)
-            if (ios /= 0 .or. rename_status /= 0) then
-                open (newunit=unit, file=temporary, iostat=ios)
-                close (unit, status='delete', iostat=ios)
-                status = 3
-                message = 'cannot put the finished output in place as '//path
-            end if
+            call finish_file(unit, temporary, path, ios, io_message, status, message)
         end subroutine write_one
 
     end subroutine write_outputs
@@ -346,6 +333,35 @@ contains
         character(len=:), allocatable :: name
         name = path//'.tmp'//integer_text(int(c_getpid()))
     end function temporary_name
+
+    !> Close a temporary output file and rename it onto `path`; on a write error
+    !! (`ios` /= 0) or a failed rename delete it instead. status: 0, or 3 with `message`.
+    subroutine finish_file(unit, temporary, path, ios, io_message, status, message)
+        integer, intent(in) :: unit                   !! the open temporary file
+        character(len=*), intent(in) :: temporary     !! its name
+        character(len=*), intent(in) :: path          !! the final name
+        integer, intent(in) :: ios                    !! iostat of the writes
+        character(len=*), intent(in) :: io_message    !! iomsg of the writes
+        integer, intent(inout) :: status              !! set to 3 on failure
+        character(len=:), allocatable, intent(inout) :: message !! what failed
+        integer :: close_status, rename_status, cleanup
+        character(len=512) :: close_message
+        if (ios /= 0) then
+            close (unit, status='delete', iostat=cleanup)
+            status = 3
+            message = 'cannot write '//path//': '//trim(io_message)
+            return
+        end if
+        rename_status = 0
+        close (unit, iostat=close_status, iomsg=close_message)
+        if (close_status == 0) call commit_file(temporary, path, rename_status)
+        if (close_status /= 0 .or. rename_status /= 0) then
+            open (newunit=cleanup, file=temporary, iostat=close_status)
+            close (cleanup, status='delete', iostat=close_status)
+            status = 3
+            message = 'cannot put the finished output in place as '//path
+        end if
+    end subroutine finish_file
 
     !> Rename the finished temporary file onto `path`; status 0 on success.
     subroutine commit_file(temporary, path, status)
