@@ -9,7 +9,8 @@ module brachistochrone_status
 
     public :: status_ok, status_inaccessible, status_rho_out_of_range, &
               status_psi_out_of_range, status_not_finite, status_no_convergence, &
-              status_outside_domain, status_invalid_argument, status_bad_estimates
+              status_outside_domain, status_invalid_argument, status_bad_estimates, &
+              status_rho_below_start
     public :: status_word, status_message
 
     !> Success.
@@ -30,6 +31,8 @@ module brachistochrone_status
     integer, parameter :: status_invalid_argument = 7
     !> Initial estimates for the secant method are unusable (equal, or outside (0, rho]).
     integer, parameter :: status_bad_estimates = 8
+    !> Repulsive field: endpoint radius below the start (rho < 1), never reached.
+    integer, parameter :: status_rho_below_start = 9
 
 contains
 
@@ -47,6 +50,7 @@ contains
         case (status_outside_domain);   word = 'secant_left_domain'
         case (status_invalid_argument); word = 'invalid_argument'
         case (status_bad_estimates);    word = 'bad_estimates'
+        case (status_rho_below_start);  word = 'rho_below_start'
         case default;                   word = 'unknown_status'
         end select
     end function status_word
@@ -76,6 +80,9 @@ contains
             message = 'arguments outside the domain 0 < R <= r <= 1, R < 1'
         case (status_bad_estimates)
             message = 'initial estimates r0, r1 must differ and lie in 0 < R <= rho'
+        case (status_rho_below_start)
+            message = 'repulsive field: rho must satisfy rho >= 1 (the start A is at radius '// &
+                      '1 and every path moves outward)'
         case default
             message = 'unknown status'
         end select

@@ -6,6 +6,7 @@ program test_main
     use test_io, only: run_io_tests
     use test_central_force, only: run_central_force_tests
     use test_curves, only: run_curve_tests
+    use test_repulsive, only: run_repulsive_tests
     implicit none
     integer :: code
     call run_numerics_tests()
@@ -13,6 +14,7 @@ program test_main
     call run_physics_tests()
     call run_central_force_tests()
     call run_curve_tests()
+    call run_repulsive_tests()
     code = summary()
     if (code /= 0) error stop 1
 end program test_main
