@@ -255,11 +255,7 @@ contains
             ! O(g) = O((3 - 2R)^2), below the quadrature's noise (a few eps: 2 eps per
             ! piece) on the finest steps of the grid
             if (status /= status_ok .or. angle < last_angle*(1.0_qp - 16.0_qp*eps_qp) .or. &
-                time < last_time*(1.0_qp - 16.0_qp*eps_qp)) then
-                increasing = .false.
-                write (output_unit, '(a,i4,i3,4es24.15)') 'DEBUG', j, status, angle, &
-                   (angle-last_angle)/angle/eps_qp, time, (time-last_time)/time/eps_qp
-            end if
+                time < last_time*(1.0_qp - 16.0_qp*eps_qp)) increasing = .false.
             last_angle = angle
             last_time = time
         end subroutine step
@@ -296,10 +292,10 @@ contains
                 call check(ordered, 'two-point: time increases with the swept angle')
                 call check(best == 1, 'two-point: least time on the least swept angle')
                 if (i == 5 .and. j == 3) then
-                    write (output_unit, '(a)') '   rho = 2, psi = 1:  m  cw  K^2    t'
+                    write (output_unit, '(a)') '   rho = 2, psi = 1:  m  cw  gap g = 3 - P   t'
                     do k = 1, size(sol)
-                        write (output_unit, '(a,i2,l3,2f40.34)') '   ', sol(k)%winding, &
-                            sol(k)%clockwise, sol(k)%curve%k2, sol(k)%time
+                        write (output_unit, '(a,i2,l3,es14.6,f40.34)') '   ', sol(k)%winding, &
+                            sol(k)%clockwise, sol(k)%curve%gap, sol(k)%time
                     end do
                 end if
             end do

@@ -85,6 +85,9 @@ module repulsive
     !> Breakpoints of the unbounded integrals: start piece up to x = 5/4, far piece beyond 4.
     real(qp), parameter :: start_end = 1.25_qp, far_start = 4.0_qp
     integer, parameter :: max_steps = 300
+    !> The sinh maps reach `stretch` widths from the near-double root (xi up to
+    !! asinh(64) ~ 4.85, so a rounded xi costs a few eps, not xi*eps ~ 70 eps).
+    real(qp), parameter :: stretch = 64.0_qp, xi_stretch = asinh(stretch)
     integer, parameter :: want_angle = 1, want_length = 2, want_time = 3
     integer, parameter :: piece_start = 1, piece_below = 2, piece_above = 3, &
                           piece_far = 4, piece_arch = 5, piece_apse = 6
@@ -122,7 +125,8 @@ module repulsive
         integer :: kind = want_angle
         integer :: piece = piece_start
         real(qp) :: k = 0.0_qp, p = 0.0_qp, a = 0.0_qp, beta = 0.0_qp
-        real(qp) :: span = 0.0_qp, rm1 = 0.0_qp, d = 0.0_qp, sign = 1.0_qp
+        real(qp) :: span = 0.0_qp, rm1 = 0.0_qp, d = 0.0_qp
+        logical :: stretched = .false.
     contains
         procedure :: evaluate => integrand_evaluate
     end type repulsive_integrand
@@ -289,14 +293,14 @@ contains
                 y = sqrt2*sqrt(self%span)*point**2/sqrt(q)
             end select
         case (piece_below, piece_above)
-            ! point = a -+ h; beta > 0: h = sqrt(beta) sinh(x), the peak cancelled exactly;
-            ! beta = 0 (critical curve, below 3/2 only): h = x
-            if (self%beta > 0.0_qp) then
+            ! point = a -+ h; stretched (beta > 0, within `stretch` widths of the peak):
+            ! h = sqrt(beta) sinh(x), the peak cancelled exactly; otherwise h = x
+            if (self%stretched) then
                 h = sqrt(self%beta)*sinh(x)
                 jac = 1.0_qp
             else
                 h = x
-                jac = 1.0_qp/h
+                jac = 1.0_qp/sqrt(h*h + self%beta)
             end if
             if (self%piece == piece_below) then
                 point = self%a - h
@@ -387,7 +391,7 @@ contains
         real(qp), intent(out) :: value
         integer, intent(out) :: status
         type(repulsive_integrand) :: f
-        real(qp) :: top, r_gap, root_d, mid
+        real(qp) :: top, r_gap, c, xi_mid, nu_mid, nu_r
         value = 0.0_qp
         status = status_ok
         if (r == 1.0_qp) return
@@ -399,19 +403,28 @@ contains
             f%d = curve%split
             ! R - r from 3 - 2r (exact near 3/2) and the stored 3 - 2R: R itself may not
             ! be representable next to 3/2 (R = 3/2 - d/2 with d below eps)
-            if (r > start_end) then
+            if (r >= curve%apse) then
+                r_gap = 0.0_qp    ! the apse (R itself may be rounded: r = R is the apse)
+            else if (r > start_end) then
                 r_gap = 0.5_qp*((3.0_qp - 2.0_qp*r) - curve%apse_gap)
             else
                 r_gap = curve%apse_m1 - (r - 1.0_qp)
             end if
             r_gap = max(r_gap, 0.0_qp)
-            ! nu from nu_r to pi (x from r down to 1), the part nu < pi/2 in xi
-            mid = 0.5_qp*pi
-            call add_piece(f, piece_arch, max(mid, 2.0_qp*atan2(sqrt(r_gap), &
-                           sqrt(r - 1.0_qp))), pi, rule, value, status)
-            root_d = sqrt(f%d)
-            call add_piece(f, piece_apse, asinh(sqrt(r_gap)/root_d), &
-                           asinh(sqrt(0.5_qp*f%rm1)/root_d), rule, value, status)
+            ! nu from nu_r to pi (x from r down to 1); within `stretch` widths sqrt(d) of
+            ! the apse (and nu < pi/2) in xi, sin(nu/2) = c sinh(xi), c = sqrt(d/(R-1)),
+            ! split at a float xi_mid so that both pieces meet at nu_mid to a few ulps
+            c = sqrt(f%d/f%rm1)
+            xi_mid = min(xi_stretch, asinh(sqrt(0.5_qp)/c))
+            nu_mid = 2.0_qp*asin(min(c*sinh(xi_mid), 1.0_qp))
+            nu_r = 2.0_qp*atan2(sqrt(r_gap), sqrt(r - 1.0_qp))
+            if (nu_r < nu_mid) then
+                call add_piece(f, piece_apse, asinh(sqrt(r_gap/f%d)), xi_mid, rule, value, &
+                               status)
+                call add_piece(f, piece_arch, nu_mid, pi, rule, value, status)
+            else
+                call add_piece(f, piece_arch, nu_r, pi, rule, value, status)
+            end if
             return
         end if
         f%a = curve%centre
@@ -421,27 +434,41 @@ contains
         call add_piece(f, piece_start, 0.0_qp, 1.0_qp, rule, value, status)
         if (r <= start_end) return
         if (f%a > start_end) then
-            call add_piece(f, piece_below, h_of(f, f%a - min(r, f%a)), &
-                           h_of(f, f%a - start_end), rule, value, status)
+            call peak_pieces(f, piece_below, f%a - min(r, f%a), f%a - start_end, value, status)
         end if
         if (r > f%a) then
-            call add_piece(f, piece_above, h_of(f, max(f%a, start_end) - f%a), &
-                           h_of(f, min(r, far_start) - f%a), rule, value, status)
+            call peak_pieces(f, piece_above, max(f%a, start_end) - f%a, &
+                             min(r, far_start) - f%a, value, status)
         end if
         if (r > far_start) then
             call add_piece(f, piece_far, far_start/r, 1.0_qp, rule, value, status)
         end if
     contains
-        pure function h_of(g, dist) result(v)
-            type(repulsive_integrand), intent(in) :: g
-            real(qp), intent(in) :: dist
-            real(qp) :: v
-            if (g%beta > 0.0_qp) then
-                v = asinh(dist/sqrt(g%beta))
+        !> h from h_lo to h_hi (distance to the peak at a): in sinh variable up to
+        !! `stretch` widths sqrt(beta) (the split point a float xi, so both pieces meet
+        !! at the same h to a few ulps), plain h beyond.
+        pure subroutine peak_pieces(g, piece, h_lo, h_hi, total, stat)
+            type(repulsive_integrand), intent(inout) :: g
+            integer, intent(in) :: piece
+            real(qp), intent(in) :: h_lo, h_hi
+            real(qp), intent(inout) :: total
+            integer, intent(inout) :: stat
+            real(qp) :: width, h_mid
+            if (.not. (h_hi > h_lo)) return
+            width = sqrt(g%beta)
+            if (g%beta > 0.0_qp .and. h_lo < stretch*width) then
+                h_mid = width*sinh(xi_stretch)
+                g%stretched = .true.
+                call add_piece(g, piece, asinh(h_lo/width), &
+                               merge(xi_stretch, asinh(h_hi/width), h_hi > h_mid), &
+                               rule, total, stat)
+                g%stretched = .false.
+                if (h_hi > h_mid) call add_piece(g, piece, h_mid, h_hi, rule, total, stat)
             else
-                v = dist
+                g%stretched = .false.
+                call add_piece(g, piece, h_lo, h_hi, rule, total, stat)
             end if
-        end function h_of
+        end subroutine peak_pieces
     end subroutine first_integral
 
     !> theta, s, t at radius r along `curve` from A. Unbounded curves (g >= 0): any
@@ -637,6 +664,7 @@ contains
         call repulsive_values(solution%curve, rho, arch == arch_second_half, &
                               solution%angle, solution%arclength, solution%time, status)
         solution%status = status
+
     end subroutine solve_branch
 
     !> The two-point problem: every brachistochrone from A = (1, 0) to B = (rho, psi)
