@@ -32,6 +32,8 @@ contains
         call mpmath_reference()
         call branch_structure()
         call two_point()
+        call winding_asymptotics()
+        call constructors()
         call bad_input()
     end subroutine run_repulsive_tests
 
@@ -265,7 +267,8 @@ contains
         real(qp), parameter :: rhos(6) = [1.0_qp, 1.125_qp, 1.25_qp, 1.4375_qp, 2.0_qp, 5.0_qp]
         real(qp), parameter :: psis(4) = [0.0_qp, 0.4_qp, 1.0_qp, 3.0_qp]
         type(repulsive_solution), allocatable :: sol(:)
-        real(qp) :: worst, residual
+        real(qp) :: worst, residual, apse(3)
+        type(repulsive_curve) :: curve
         integer :: i, j, k, best, status, arches(0:2)
         logical :: ordered, all_ok
         call section('repulsive: two-point problem, windings m = 0..2, both senses')
@@ -306,12 +309,77 @@ contains
             arches
         call check(worst <= 16.0_qp, 'two-point: endpoint angle reproduced to 16 eps')
         call check(all(arches > 0), 'two-point: every kind of branch exercised')
+        ! B at the apse of the curve with R = rho: psi = Theta(rho, rho), top of the branch
+        call curve_from_apse(1.25_qp, curve, status)
+        call repulsive_values(curve, 1.25_qp, .false., apse(1), apse(2), apse(3), status)
+        call solve_repulsive(1.25_qp, apse(1), 0, sol, best, status)
+        call check_close(sol(1)%curve%apse, 1.25_qp, 4.0_qp, 'two-point: B at the apse: R = rho')
+        call check_close(sol(1)%time, apse(3), 4.0_qp, 'two-point: B at the apse: t = T(R, R)')
         ! psi = 0, m = 0 is the radial path
         call solve_repulsive(2.0_qp, 0.0_qp, 0, sol, best, status)
         call check(size(sol) == 1, 'two-point: psi = 0 has one sense')
         call check_close(sol(1)%time, repulsive_radial_time(2.0_qp), 8.0_qp, &
                          'two-point: psi = 0 is radial, t = (49)')
     end subroutine two_point
+
+    !> Each extra turn costs, asymptotically, the time of one turn round the circle
+    !! r = 3/2 (where the angular speed v/r is largest): 2 pi r/v = 2 pi sqrt(27/8), and
+    !! needs g smaller by exp(-2 pi sqrt3) (theta ~ -log(g)/sqrt3).
+    subroutine winding_asymptotics()
+        type(repulsive_solution), allocatable :: sol(:)
+        real(qp) :: dt, ratio, turn_time, turn_ratio
+        integer :: best, status, k
+        call section('repulsive: windings, each turn ~ one turn round r = 3/2')
+        turn_time = 2.0_qp*pi*sqrt(27.0_qp/8.0_qp)
+        turn_ratio = exp(-2.0_qp*pi*sqrt(3.0_qp))
+        call solve_repulsive(3.0_qp, 2.0_qp, 5, sol, best, status)
+        call check(status == status_ok .and. all(sol%status == status_ok), &
+                   'windings: m = 0..5 solved at rho = 3')
+        write (output_unit, '(a)') '   rho = 3, psi = 2 anticlockwise: m, g, '// &
+            't(m) - t(m-1) - 2 pi Kc, g(m)/g(m-1)/exp(-2 pi sqrt3) - 1'
+        do k = 3, size(sol), 2
+            dt = sol(k)%time - sol(k - 2)%time - turn_time
+            ratio = sol(k)%curve%gap/sol(k - 2)%curve%gap/turn_ratio - 1.0_qp
+            write (output_unit, '(a,i3,3es12.3)') '   ', sol(k)%winding, sol(k)%curve%gap, &
+                dt, ratio
+        end do
+        ! both converge like O(g): at m = 5 (g ~ 3e-25) measured 6e-21 and 1e-19
+        call check(abs(dt) < 1.0e-18_qp, 'windings: extra turn costs 2 pi sqrt(27/8)')
+        call check(abs(ratio) < 1.0e-17_qp, 'windings: g shrinks by exp(-2 pi sqrt3) per turn')
+        call check(best == 1, 'windings: least time on m = 0')
+    end subroutine winding_asymptotics
+
+    !> The constructors agree: K^2 = R^3/(2(R-1)) gives back the apse R; K^2 just above
+    !! and below 27/8 gives the gap from 27/4 - 2K^2 = g (9 - 2g)^2/(4 (4 - g)).
+    subroutine constructors()
+        type(repulsive_curve) :: a, b
+        real(qp) :: c, g
+        integer :: status
+        call section('repulsive: constructors')
+        call curve_from_k2(3.90625_qp, a, status)
+        call curve_from_apse(1.25_qp, b, status)
+        call check(a%bounded .and. b%bounded, 'K^2 = 3.90625 is bounded')
+        call check_close(a%apse, 1.25_qp, 8.0_qp, 'K^2 = 3.90625 has apse 5/4')
+        call check_close(a%gap, b%gap, 16.0_qp, 'gap from K^2 = gap from R')
+        call check_close(b%k2, 3.90625_qp, 4.0_qp, 'K^2 from R = 5/4')
+        c = 2.0_qp**(-100)
+        call curve_from_k2(critical_k2 - c, a, status)
+        g = a%gap
+        call check(.not. a%bounded, 'K^2 = 27/8 - 2^-100 is unbounded')
+        call check_close(2.0_qp*c, g*(9.0_qp - 2.0_qp*g)**2/(4.0_qp*(4.0_qp - g)), 8.0_qp, &
+                         'gap of K^2 = 27/8 - 2^-100 to full relative accuracy')
+        call curve_from_k2(critical_k2 + c, a, status)
+        call check(a%bounded .and. a%apse < 1.5_qp, 'K^2 = 27/8 + 2^-100 is bounded')
+        call curve_from_apse_gap(1.0e-30_qp, b, status)
+        call check_close(b%apse_gap, 1.0e-30_qp, 0.0_qp, 'apse gap 3 - 2R kept exactly')
+        call curve_from_gap(-1.0_qp, a, status)
+        call curve_from_apse(a%apse, b, status)
+        call check_close(b%gap, -1.0_qp, 64.0_qp, 'R of g = -1 gives back g = -1')
+        call curve_from_gap(4.0_qp, a, status)
+        call check(status == status_invalid_argument, 'g > 3 rejected')
+        call curve_from_apse(1.5_qp, a, status)
+        call check(status == status_invalid_argument, 'R = 3/2 rejected (critical limit)')
+    end subroutine constructors
 
     subroutine bad_input()
         type(repulsive_solution), allocatable :: sol(:)

@@ -636,7 +636,10 @@ contains
         f_hi = f_top
         lo = hi
         walks = 0
-        do
+        x = lambda_top
+        steps = 0
+        ! f_top = 0: the target is the angle at the top of the branch (B is the apse)
+        do while (f_top /= 0.0_qp)
             lo = max(lo - 4.0_qp, floor)
             call fun%evaluate(lo, f_lo, df, status)
             walks = walks + 1
@@ -644,7 +647,15 @@ contains
                 solution%status = status
                 return
             end if
-            if ((f_lo > 0.0_qp) .neqv. (f_hi > 0.0_qp)) exit
+            if ((f_lo > 0.0_qp) .neqv. (f_hi > 0.0_qp)) then
+                call bracketed_secant(fun, lo, f_lo, hi, f_hi, 4.0_qp*eps_qp, &
+                                      4.0_qp*eps_qp, max_steps, x, steps, status)
+                if (status /= status_ok) then
+                    solution%status = status
+                    return
+                end if
+                exit
+            end if
             if (lo <= floor) then
                 ! the angle is not reached before g (or 3 - 2R) = critical_floor
                 solution%status = status_no_convergence
@@ -653,18 +664,11 @@ contains
             hi = lo
             f_hi = f_lo
         end do
-        call bracketed_secant(fun, lo, f_lo, hi, f_hi, 4.0_qp*eps_qp, 4.0_qp*eps_qp, &
-                              max_steps, x, steps, status)
         solution%steps = steps + walks
-        if (status /= status_ok) then
-            solution%status = status
-            return
-        end if
         call curve_of_lambda(arch, x, solution%curve)
         call repulsive_values(solution%curve, rho, arch == arch_second_half, &
                               solution%angle, solution%arclength, solution%time, status)
         solution%status = status
-
     end subroutine solve_branch
 
     !> The two-point problem: every brachistochrone from A = (1, 0) to B = (rho, psi)
