@@ -40,8 +40,7 @@
 !!   radial) to infinity as K^2 -> 27/8- (theta ~ -log(g)/sqrt3: each extra turn needs g
 !!   smaller by exp(-2 pi sqrt3) ~ 1.9e-5). Every target angle has exactly one
 !!   brachistochrone, and t increases with the target angle: the least time is the one of
-!!   least swept angle (psi itself, or 2 pi - psi turning the other way, whichever is the
-!!   smaller, i.e. psi).
+!!   least swept angle, psi itself (2 pi - psi turning the other way is never smaller).
 !! * 1 < rho < 3/2: the unbounded curves give theta(rho) in (0, theta_c(rho)), theta_c the
 !!   critical curve's angle (finite since rho < 3/2); the first half-arches (R from 3/2
 !!   down to rho) continue it to (theta_c, Theta(rho, rho)], the second half-arches (R from
@@ -50,8 +49,17 @@
 !!   times increasing along the branch.
 !! * rho = 1: only complete arches return to radius 1; 2 Theta(R, R) runs from 0 (R -> 1,
 !!   locally a uniform field: a cycloid of height R - 1 spanning pi (R - 1)) to infinity.
+!! * rho = 3/2: as for rho > 3/2 (no bounded curve reaches 3/2, the critical one only
+!!   spirals towards it).
 !! The targets are psi + 2 pi m (turning anticlockwise) and 2 pi (m + 1) - psi (the mirror
-!! image, turning clockwise), m = 0, 1, ...; both are reported.
+!! image, turning clockwise), m = 0, 1, ...; both are reported. The least time is the
+!! anticlockwise m = 0 (two mirror-image minima when psi = pi).
+!! **Cost of a turn.** The many-turn curves spend their extra turns next to the circle
+!! r = 3/2, the circle where the angular speed v/r = sqrt(2(r-1)/r^3) is largest (its
+!! inverse r/v is the K of a circular path, K^2 = r^3/(2(r-1)) minimal = 27/8): each
+!! extra turn costs asymptotically 2 pi sqrt(27/8) = 11.5429... in time, and g shrinks
+!! by exp(-2 pi sqrt3) per turn;
+!! both limits are approached like O(g) (measured in test_repulsive).
 module repulsive
     use brachistochrone_kinds, only: qp, pi, eps_qp
     use brachistochrone_status, only: status_ok, status_psi_out_of_range, &
