@@ -34,6 +34,7 @@ contains
         call two_point()
         call winding_asymptotics()
         call constructors()
+        call cycloid_limit()
         call bad_input()
     end subroutine run_repulsive_tests
 
@@ -380,6 +381,26 @@ contains
         call curve_from_apse(1.5_qp, a, status)
         call check(status == status_invalid_argument, 'R = 3/2 rejected (critical limit)')
     end subroutine constructors
+
+    !> R -> 1: near A the field is uniform (|F| = 1), so the complete arch tends to the
+    !! cycloid of depth R - 1 = 2a: angle 2 pi a = pi (R - 1), time 2 pi sqrt(a).
+    subroutine cycloid_limit()
+        type(repulsive_curve) :: curve
+        real(qp) :: angle, length, time, a, worst_angle, worst_time
+        integer :: j, status
+        call section('repulsive: complete arch -> cycloid as R -> 1')
+        do j = 20, 60, 20
+            call curve_from_apse(1.0_qp + 2.0_qp**(-j), curve, status)
+            call repulsive_values(curve, 1.0_qp, .true., angle, length, time, status)
+            a = 0.5_qp*curve%apse_m1
+            worst_angle = abs(angle/(2.0_qp*pi*a) - 1.0_qp)
+            worst_time = abs(time/(2.0_qp*pi*sqrt(a)) - 1.0_qp)
+            write (output_unit, '(a,i3,2es12.3)') '   R - 1 = 2^-j, j, relative deviations: ', &
+                j, worst_angle, worst_time
+            call check(status == status_ok .and. worst_angle < 4.0_qp*curve%apse_m1 .and. &
+                       worst_time < 4.0_qp*curve%apse_m1, 'cycloid limit to O(R - 1)')
+        end do
+    end subroutine cycloid_limit
 
     subroutine bad_input()
         type(repulsive_solution), allocatable :: sol(:)
