@@ -11,6 +11,8 @@ tanh-sinh quadrature on intervals split near the start, the apse and x = 3/2. Bo
 curves take K^2 = R^3/(2(R-1)) from their apse R; second half-arch 2F(R) - F(r) (29).
 Every parameter is a dyadic rational, so the quad-precision tests use the same numbers.
 Columns: case, K^2 (or R), quantity, r, arch, value (40 digits), error estimate.
+Last rows (two_point_*): the two-point problem solved here independently (findroot);
+columns case, K^2 or R found, t, rho, target, t (40 digits), angle residual.
 """
 import mpmath as mp
 
@@ -107,5 +109,43 @@ def main():
                 row(case, big_r, name, r, "second", 2 * va - v, 2 * ea + e)
 
 
+def two_point():
+    """The two-point problem solved independently: mp.findroot (secant) on the angle at
+    rho, in K^2 (unbounded) or R (bounded), from starting values good to ~6 digits;
+    rows give the parameter found and t. (Slow: several minutes.)"""
+    br = [mp.mpf(1.25), mp.mpf(1.5) - mp.mpf(2)**-8, mp.mpf(1.5) - mp.mpf(2)**-12,
+          mp.mpf(1.5), mp.mpf(1.5) + mp.mpf(2)**-12, mp.mpf(1.5) + mp.mpf(2)**-8,
+          mp.mpf(2), mp.mpf(4)]
+    for rho, psi, m, guess in ((2, 1, 0, ("2.64508", "2.64510")),
+                               (2, 1, 1, ("3.3749884", "3.3749886"))):
+        rho, target = mp.mpf(rho), mp.mpf(str(psi)) + 2 * mp.pi * m
+        k2 = mp.findroot(lambda k2: integrals(k2, rho, br)[0][0] - target,
+                         (mp.mpf(guess[0]), mp.mpf(guess[1])), solver="illinois",
+                         verify=False, tol=mp.mpf(10)**-75)
+        v = integrals(k2, rho, br)
+        print(f"two_point_unbounded,{mp.nstr(k2, 40)},t,{rho},m={m} psi={psi},"
+              f"{mp.nstr(v[2][0], 40)},{mp.nstr(v[0][0] - target, 3)}")
+    for rho, psi, second, guess in ((1.25, 0.4, False, ("1.26097", "1.26099")),
+                                    (1.25, 1, True, ("1.30172", "1.30174")),
+                                    (1, 1, True, ("1.24769", "1.24771"))):
+        rho, target = mp.mpf(rho), mp.mpf(str(psi))
+
+        def angle(big_r, which=0):
+            k2 = big_r**3 / (2 * (big_r - 1))
+            brk = [1 + (big_r - 1) / 2, big_r - mp.mpf(10)**-2, big_r - mp.mpf(10)**-4]
+            first = integrals(k2, rho, brk, big_r) if rho > 1 else [(0, 0)] * 3
+            if not second:
+                return first[which][0]
+            apse = integrals(k2, big_r, brk, big_r)
+            return 2 * apse[which][0] - first[which][0]
+
+        big_r = mp.findroot(lambda x: angle(x) - target, (mp.mpf(guess[0]), mp.mpf(guess[1])),
+                            solver="illinois", verify=False, tol=mp.mpf(10)**-75)
+        print(f"two_point_{'second' if second else 'first'},{mp.nstr(big_r, 40)},t,{rho},"
+              f"psi={psi},{mp.nstr(angle(big_r, 2), 40)},"
+              f"{mp.nstr(angle(big_r) - target, 3)}")
+
+
 if __name__ == "__main__":
     main()
+    two_point()

@@ -32,6 +32,7 @@ contains
         call mpmath_reference()
         call branch_structure()
         call two_point()
+        call two_point_mpmath()
         call winding_asymptotics()
         call constructors()
         call cycloid_limit()
@@ -265,7 +266,8 @@ contains
     end subroutine branch_structure
 
     subroutine two_point()
-        real(qp), parameter :: rhos(6) = [1.0_qp, 1.125_qp, 1.25_qp, 1.4375_qp, 2.0_qp, 5.0_qp]
+        real(qp), parameter :: rhos(7) = [1.0_qp, 1.125_qp, 1.25_qp, 1.4375_qp, 1.5_qp, 2.0_qp, &
+                                           5.0_qp]
         real(qp), parameter :: psis(4) = [0.0_qp, 0.4_qp, 1.0_qp, 3.0_qp]
         type(repulsive_solution), allocatable :: sol(:)
         real(qp) :: worst, residual, apse(3)
@@ -295,7 +297,7 @@ contains
                 call check(all_ok, 'two-point: every target solved')
                 call check(ordered, 'two-point: time increases with the swept angle')
                 call check(best == 1, 'two-point: least time on the least swept angle')
-                if (i == 5 .and. j == 3) then
+                if (i == 6 .and. j == 3) then
                     write (output_unit, '(a)') '   rho = 2, psi = 1:  m  cw  gap g = 3 - P   t'
                     do k = 1, size(sol)
                         write (output_unit, '(a,i2,l3,es14.6,f40.34)') '   ', sol(k)%winding, &
@@ -322,6 +324,40 @@ contains
         call check_close(sol(1)%time, repulsive_radial_time(2.0_qp), 8.0_qp, &
                          'two-point: psi = 0 is radial, t = (49)')
     end subroutine two_point
+
+    !> Two-point solutions against the problem solved independently by mpmath (findroot on
+    !! the original integrals, last rows of data/reference/repulsive_mpmath.csv).
+    subroutine two_point_mpmath()
+        type(repulsive_solution), allocatable :: sol(:)
+        integer :: best, status
+        call section('repulsive: two-point solutions against mpmath findroot')
+        call solve_repulsive(2.0_qp, 1.0_qp, 1, sol, best, status)
+        call check_digits(sol(1)%curve%k2, 2.645088804285968552324521429348058561082_qp, &
+                          33.0_qp, 'rho = 2, psi = 1, m = 0: K^2')
+        call check_digits(sol(1)%time, 2.681630164465431617080797780894761881585_qp, &
+                          33.0_qp, 'rho = 2, psi = 1, m = 0: t')
+        call check_digits(sol(3)%curve%k2, 3.374988486845173448639438430583911265415_qp, &
+                          33.0_qp, 'rho = 2, psi = 1, m = 1: K^2')
+        call check_digits(sol(3)%time, 14.11614078964469775439951871173613963026_qp, &
+                          33.0_qp, 'rho = 2, psi = 1, m = 1: t')
+        call solve_repulsive(1.25_qp, 0.4_qp, 0, sol, best, status)
+        call check(sol(1)%arch == arch_first_half, 'rho = 5/4, psi = 0.4: first half-arch')
+        call check_digits(sol(1)%curve%apse, 1.260982129463187324371251899279339797443_qp, &
+                          33.0_qp, 'rho = 5/4, psi = 0.4: R')
+        call check_digits(sol(1)%time, 1.302101069487037272664073805610511465792_qp, &
+                          33.0_qp, 'rho = 5/4, psi = 0.4: t')
+        call solve_repulsive(1.25_qp, 1.0_qp, 0, sol, best, status)
+        call check(sol(1)%arch == arch_second_half, 'rho = 5/4, psi = 1: second half-arch')
+        call check_digits(sol(1)%curve%apse, 1.301727301114516485665968712614332589964_qp, &
+                          33.0_qp, 'rho = 5/4, psi = 1: R')
+        call check_digits(sol(1)%time, 2.472898487362827611486440077335108505319_qp, &
+                          33.0_qp, 'rho = 5/4, psi = 1: t')
+        call solve_repulsive(1.0_qp, 1.0_qp, 0, sol, best, status)
+        call check_digits(sol(1)%curve%apse, 1.247702771295926586612647102385209859044_qp, &
+                          33.0_qp, 'rho = 1, psi = 1 (complete arch): R')
+        call check_digits(sol(1)%time, 2.998405500762512523847012785093331940808_qp, &
+                          33.0_qp, 'rho = 1, psi = 1 (complete arch): t')
+    end subroutine two_point_mpmath
 
     !> Each extra turn costs, asymptotically, the time of one turn round the circle
     !! r = 3/2 (where the angular speed v/r is largest): 2 pi r/v = 2 pi sqrt(27/8), and
