@@ -11,7 +11,8 @@ module brachistochrone_status
               status_psi_out_of_range, status_not_finite, status_no_convergence, &
               status_outside_domain, status_invalid_argument, status_bad_estimates, &
               status_latitude_out_of_range, status_bad_planet, &
-              status_above_start, status_parameter_out_of_range
+              status_above_start, status_parameter_out_of_range, &
+              status_rho_below_start
     public :: status_word, status_message
 
     !> Success.
@@ -42,6 +43,8 @@ module brachistochrone_status
     !> A physical parameter is outside its domain: gravity, lengths and radii must be
     !! positive, x_B >= 0, release heights within the arch, amplitudes 0 <= theta0 <= pi.
     integer, parameter :: status_parameter_out_of_range = 12
+    !> Repulsive field: endpoint radius below the start (rho < 1), never reached.
+    integer, parameter :: status_rho_below_start = 13
 
 contains
 
@@ -63,6 +66,7 @@ contains
         case (status_bad_planet);       word = 'bad_planet'
         case (status_above_start);      word = 'above_start'
         case (status_parameter_out_of_range); word = 'parameter_out_of_range'
+        case (status_rho_below_start);  word = 'rho_below_start'
         case default;                   word = 'unknown_status'
         end select
     end function status_word
@@ -102,6 +106,9 @@ contains
         case (status_parameter_out_of_range)
             message = 'a physical parameter is outside its domain (g, lengths and radii > 0, '// &
                       'x_B >= 0, release height within the arch, 0 <= amplitude <= pi)'
+        case (status_rho_below_start)
+            message = 'repulsive field: rho must satisfy rho >= 1 (the start A is at radius '// &
+                      '1 and every path moves outward)'
         case default
             message = 'unknown status'
         end select

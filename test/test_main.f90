@@ -8,6 +8,7 @@ program test_main
     use test_curves, only: run_curve_tests
     use test_harmonic, only: run_harmonic_tests
     use test_uniform_gravity, only: run_uniform_gravity_tests
+    use test_repulsive, only: run_repulsive_tests
     implicit none
     integer :: code
     call run_numerics_tests()
@@ -17,6 +18,7 @@ program test_main
     call run_curve_tests()
     call run_harmonic_tests()
     call run_uniform_gravity_tests()
+    call run_repulsive_tests()
     code = summary()
     if (code /= 0) error stop 1
 end program test_main

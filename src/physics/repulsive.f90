@@ -1,0 +1,779 @@
+!> Brachistochrones for the repulsive inverse-square force, mu = -1 (Tee 1998, sec. 2, 3, 6).
+!!
+!! Start A = (1, 0) at rest, v^2 = 2(r - 1)/r for r >= 1 (44). A brachistochrone is the
+!! orbit of a free particle with speed 1/v and angular momentum K (17)-(22); with
+!! Q(x) = x^3 - 2 K^2 (x - 1) the integrals (23), (31), (37) read, for r increasing,
+!!   theta = K sqrt2 int sqrt(x-1)/(x sqrt Q) dx,   s = int x^(3/2)/sqrt Q dx,
+!!   t     = int x^2/(sqrt2 sqrt(x-1) sqrt Q) dx                      (from x = 1 to r).
+!! (The printed (52) lacks the square root over Q.)
+!!
+!! **One parameter for every curve.** Q always has one negative root r3 = -P, P > 0.
+!! Dividing Q by (x + P) gives
+!!   2 K^2 = P^3/(1 + P),    Q(x) = (x + P) ((x - P/2)^2 + P^2 (3 - P)/(4 (P + 1))),
+!! so with the *gap* g = 3 - P (kept as its own number, never as 3 - P rounded):
+!!   g > 0 (K^2 < 27/8): no real root above 1: unbounded curves; the near-double complex
+!!         pair is a +- i sqrt(beta), a = P/2, beta = P^2 g/(4 (P + 1)) (relative accuracy
+!!         of beta is that of g, however small);
+!!   g = 0 (K^2 = 27/8): Q = (x - 3/2)^2 (x + 3), the critical curve;
+!!   g < 0 (K^2 > 27/8): roots r1 = R < 3/2 < r2, the apse R and the gap d = r2 - R =
+!!         P sqrt(-g/(P + 1)), R - 1 = 2/((P + 1)(P - 2 + d)), all without cancellation.
+!! Also 27/4 - 2 K^2 = g (9 - 2g)^2/(4 (4 - g)): g is proportional to the distance of K^2
+!! from 27/8 (from the apse, g = -4 (3-2R)^2/((R-1)(S+3)(sqrt((R+3)(R-1)) + 3 - R)),
+!! S = sqrt((R+3)/(R-1)), second order in 3 - 2R as K^2 has its minimum there).
+!!
+!! **Precision near the double root.** As g -> 0 the integrands get a peak of width
+!! sqrt(beta) (unbounded, at x = a) or sqrt(d) (bounded, at the apse). Every difference to
+!! the peak is carried exactly: unbounded, x = a +- sqrt(beta) sinh(xi) makes
+!! (x - a)^2 + beta = beta cosh^2(xi) and cancels the peak against dx exactly, leaving a
+!! smooth integrand in xi; bounded, x = R - (R - 1) sin^2(nu/2) makes R - x and x - 1 exact
+!! products, and near the apse sin(nu/2) = sqrt(d/(R-1)) sinh(xi) turns r2 - x =
+!! d + (R - x) into d cosh^2(xi) in the same way. So no rounding is amplified by
+!! 1/sqrt(beta) or 1/sqrt(d): the integrals keep ~33 digits with g down to
+!! `critical_floor` (where a = (3 - g)/2 itself is no longer resolved against sqrt(beta)).
+!! The start x = 1 is regular through x - 1 = L sigma^2 (unbounded) or the nu map.
+!!
+!! **Structure of the two-point problem** (derived here, verified in test_repulsive):
+!! every integrand above increases with K at fixed x, so theta(r; K), s and t increase
+!! with K on the unbounded family and on the first half-arch of the bounded one (K^2 =
+!! R^3/(2(R-1)) decreases as R grows to 3/2). For B = (rho, psi):
+!! * rho >= 3/2: only unbounded curves reach rho; theta(rho; K) increases from 0 (K = 0,
+!!   radial) to infinity as K^2 -> 27/8- (theta ~ -log(g)/sqrt3: each extra turn needs g
+!!   smaller by exp(-2 pi sqrt3) ~ 1.9e-5). Every target angle has exactly one
+!!   brachistochrone, and t increases with the target angle: the least time is the one of
+!!   least swept angle, psi itself (2 pi - psi turning the other way is never smaller).
+!! * 1 < rho < 3/2: the unbounded curves give theta(rho) in (0, theta_c(rho)), theta_c the
+!!   critical curve's angle (finite since rho < 3/2); the first half-arches (R from 3/2
+!!   down to rho) continue it to (theta_c, Theta(rho, rho)], the second half-arches (R from
+!!   rho back up to 3/2) to (Theta(rho, rho), infinity) since Theta(R, R) ~ log(1/d).
+!!   One continuous monotone branch: again exactly one brachistochrone per target angle,
+!!   times increasing along the branch.
+!! * rho = 1: only complete arches return to radius 1; 2 Theta(R, R) runs from 0 (R -> 1,
+!!   locally a uniform field: a cycloid of height R - 1 spanning pi (R - 1)) to infinity.
+!! * rho = 3/2: as for rho > 3/2 (no bounded curve reaches 3/2, the critical one only
+!!   spirals towards it).
+!! The targets are psi + 2 pi m (turning anticlockwise) and 2 pi (m + 1) - psi (the mirror
+!! image, turning clockwise), m = 0, 1, ...; both are reported. The least time is the
+!! anticlockwise m = 0 (two mirror-image minima when psi = pi).
+!! **Cost of a turn.** The many-turn curves spend their extra turns next to the circle
+!! r = 3/2, the circle where the angular speed v/r = sqrt(2(r-1)/r^3) is largest (its
+!! inverse r/v is the K of a circular path, K^2 = r^3/(2(r-1)) minimal = 27/8): each
+!! extra turn costs asymptotically 2 pi sqrt(27/8) = 11.5429... in time, and g shrinks
+!! by exp(-2 pi sqrt3) per turn;
+!! both limits are approached like O(g) (measured in test_repulsive).
+module repulsive
+    use brachistochrone_kinds, only: qp, pi, eps_qp
+    use brachistochrone_status, only: status_ok, status_psi_out_of_range, &
+                                      status_not_finite, status_invalid_argument, &
+                                      status_no_convergence, status_rho_below_start
+    use quadrature, only: univariate_integrand, gauss_legendre_rule, gauss_legendre, &
+                          integrate_adaptive
+    use roots, only: root_function, bracketed_secant
+    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan, ieee_value, &
+                                             ieee_positive_inf
+    implicit none
+    private
+
+    public :: repulsive_curve, repulsive_solution
+    public :: curve_from_k2, curve_from_gap, curve_from_apse, curve_from_apse_gap
+    public :: repulsive_values, critical_values, repulsive_radial_time
+    public :: solve_repulsive
+    public :: arch_unbounded, arch_first_half, arch_second_half, critical_k2, critical_floor
+
+    !> K^2 of the critical brachistochrone.
+    real(qp), parameter :: critical_k2 = 27.0_qp/8.0_qp
+    !> Smallest |g| (and 3 - 2R) used by the solver: about eps^1.75 ~ 1e-59, where
+    !! sqrt(beta) ~ 1e-30 is still far above the rounding of a = (3 - g)/2.
+    real(qp), parameter :: critical_floor = eps_qp**1.75_qp
+    !> Values of `repulsive_solution%arch`.
+    integer, parameter :: arch_unbounded = 0, arch_first_half = 1, arch_second_half = 2
+
+    real(qp), parameter :: sqrt2 = sqrt(2.0_qp), sqrt3 = sqrt(3.0_qp)
+    !> Relative accuracy asked of each integral piece.
+    real(qp), parameter :: integral_tolerance = 2.0_qp*eps_qp
+    !> Breakpoints of the unbounded integrals: start piece up to x = 5/4, far piece beyond 4.
+    real(qp), parameter :: start_end = 1.25_qp, far_start = 4.0_qp
+    integer, parameter :: max_steps = 300
+    !> The sinh maps reach `stretch` widths from the near-double root (xi up to
+    !! asinh(64) ~ 4.85, so a rounded xi costs a few eps, not xi*eps ~ 70 eps).
+    real(qp), parameter :: stretch = 64.0_qp, xi_stretch = asinh(stretch)
+    integer, parameter :: want_angle = 1, want_length = 2, want_time = 3
+    integer, parameter :: piece_start = 1, piece_below = 2, piece_above = 3, &
+                          piece_far = 4, piece_arch = 5, piece_apse = 6
+
+    !> One brachistochrone from A, by its parameter. Build it with a `curve_from_*`.
+    type :: repulsive_curve
+        real(qp) :: k2 = 0.0_qp        !! K^2 (angular momentum of the free particle, squared)
+        real(qp) :: k = 0.0_qp         !! K
+        real(qp) :: gap = 3.0_qp       !! g = 3 - P: > 0 unbounded, 0 critical, < 0 bounded
+        real(qp) :: p = 0.0_qp         !! P = -r3, the negative root of Q negated
+        logical :: bounded = .false.   !! has an apse R < 3/2
+        real(qp) :: centre = 0.0_qp    !! a = P/2 (unbounded, critical)
+        real(qp) :: width2 = 0.0_qp    !! beta (unbounded): Q = (x + P)((x - a)^2 + beta)
+        real(qp) :: apse = 0.0_qp      !! R (bounded)
+        real(qp) :: apse_m1 = 0.0_qp   !! R - 1 (bounded)
+        real(qp) :: apse_gap = 0.0_qp  !! 3 - 2R (bounded)
+        real(qp) :: split = 0.0_qp     !! d = r2 - R (bounded)
+    end type repulsive_curve
+
+    !> One brachistochrone of the two-point problem.
+    type :: repulsive_solution
+        real(qp) :: target = 0.0_qp     !! swept angle: psi + 2 pi m or 2 pi (m+1) - psi
+        integer :: winding = 0          !! m
+        logical :: clockwise = .false.  !! mirror image (reaches B turning clockwise)
+        integer :: arch = arch_unbounded !! arch_unbounded, arch_first_half, arch_second_half
+        type(repulsive_curve) :: curve  !! K, g and (bounded) R
+        real(qp) :: angle = 0.0_qp      !! theta(rho) recomputed on the solution
+        real(qp) :: arclength = 0.0_qp  !! s
+        real(qp) :: time = 0.0_qp       !! t
+        integer :: steps = 0            !! evaluations of theta by the root finder
+        integer :: status = status_ok   !! status_ok or the reason
+    end type repulsive_solution
+
+    type, extends(univariate_integrand) :: repulsive_integrand
+        integer :: kind = want_angle
+        integer :: piece = piece_start
+        real(qp) :: k = 0.0_qp, p = 0.0_qp, a = 0.0_qp, beta = 0.0_qp
+        real(qp) :: span = 0.0_qp, rm1 = 0.0_qp, d = 0.0_qp
+        logical :: stretched = .false.
+    contains
+        procedure :: evaluate => integrand_evaluate
+    end type repulsive_integrand
+
+    !> theta(rho) - target in the solver's unknown lambda (log g or log(3 - 2R)).
+    type, extends(root_function) :: angle_mismatch
+        real(qp) :: rho = 1.0_qp, target = 0.0_qp
+        integer :: arch = arch_unbounded
+    contains
+        procedure :: evaluate => mismatch_evaluate
+    end type angle_mismatch
+
+contains
+
+    !> The curve with K^2 = k2 >= 0 (g to full relative accuracy from 27/8 - k2 near the
+    !! critical value: the fixed point g = 8 c (4 - g)/(9 - 2g)^2, c = 27/8 - K^2).
+    pure subroutine curve_from_k2(k2, curve, status)
+        real(qp), intent(in) :: k2                  !! K^2 >= 0
+        type(repulsive_curve), intent(out) :: curve !! the curve
+        integer, intent(out) :: status              !! status_ok or the reason
+        real(qp) :: p, p_new, g, g_new, c
+        integer :: i
+        status = status_ok
+        if (.not. ieee_is_finite(k2)) then
+            status = status_not_finite
+            return
+        else if (k2 < 0.0_qp) then
+            status = status_invalid_argument
+            return
+        end if
+        if (k2 == 0.0_qp) then
+            call set_from_gap(3.0_qp, curve)
+            return
+        end if
+        ! P^3 - 2 K^2 (P + 1) = 0: convex and increasing past the root; Newton from above
+        p = 1.0_qp + sqrt(2.0_qp*k2)
+        do i = 1, 400
+            p_new = p - (p**3 - 2.0_qp*k2*(p + 1.0_qp))/(3.0_qp*p**2 - 2.0_qp*k2)
+            if (.not. (p_new < p)) exit
+            p = p_new
+        end do
+        g = 3.0_qp - p
+        if (abs(g) < 1.0_qp) then
+            c = critical_k2 - k2
+            do i = 1, 400
+                g_new = 8.0_qp*c*(4.0_qp - g)/(9.0_qp - 2.0_qp*g)**2
+                if (g_new == g) exit
+                g = g_new
+            end do
+        end if
+        call set_from_gap(g, curve)
+        curve%k2 = k2
+        curve%k = sqrt(k2)
+    end subroutine curve_from_k2
+
+    !> The curve with gap g = 3 - P (g <= 3): g > 0 unbounded, 0 critical, < 0 bounded.
+    pure subroutine curve_from_gap(g, curve, status)
+        real(qp), intent(in) :: g                   !! gap, g <= 3
+        type(repulsive_curve), intent(out) :: curve !! the curve
+        integer, intent(out) :: status              !! status_ok or the reason
+        status = status_ok
+        if (.not. ieee_is_finite(g)) then
+            status = status_not_finite
+        else if (g > 3.0_qp) then
+            status = status_invalid_argument
+        else
+            call set_from_gap(g, curve)
+        end if
+    end subroutine curve_from_gap
+
+    !> The bounded curve with apse R, 1 < R < 3/2.
+    pure subroutine curve_from_apse(big_r, curve, status)
+        real(qp), intent(in) :: big_r               !! apse radius, 1 < R < 3/2
+        type(repulsive_curve), intent(out) :: curve !! the curve
+        integer, intent(out) :: status              !! status_ok or the reason
+        status = status_ok
+        if (.not. ieee_is_finite(big_r)) then
+            status = status_not_finite
+        else if (big_r <= 1.0_qp .or. big_r >= 1.5_qp) then
+            status = status_invalid_argument
+        else
+            call set_bounded(big_r - 1.0_qp, 3.0_qp - 2.0_qp*big_r, curve)
+        end if
+    end subroutine curve_from_apse
+
+    !> The bounded curve with apse R = (3 - e)/2 given by e = 3 - 2R in (0, 1): resolves
+    !! R arbitrarily close to 3/2.
+    pure subroutine curve_from_apse_gap(apse_gap, curve, status)
+        real(qp), intent(in) :: apse_gap            !! e = 3 - 2R, 0 < e < 1
+        type(repulsive_curve), intent(out) :: curve !! the curve
+        integer, intent(out) :: status              !! status_ok or the reason
+        status = status_ok
+        if (.not. ieee_is_finite(apse_gap)) then
+            status = status_not_finite
+        else if (apse_gap <= 0.0_qp .or. apse_gap >= 1.0_qp) then
+            status = status_invalid_argument
+        else
+            call set_bounded(0.5_qp*(1.0_qp - apse_gap), apse_gap, curve)
+        end if
+    end subroutine curve_from_apse_gap
+
+    pure subroutine set_from_gap(g, curve)
+        real(qp), intent(in) :: g
+        type(repulsive_curve), intent(out) :: curve
+        real(qp) :: p
+        p = 3.0_qp - g
+        curve%gap = g
+        curve%p = p
+        curve%k2 = p**3/(2.0_qp*(1.0_qp + p))
+        curve%k = sqrt(curve%k2)
+        if (g >= 0.0_qp) then
+            curve%bounded = .false.
+            curve%centre = 0.5_qp*p
+            curve%width2 = p*p*g/(4.0_qp*(p + 1.0_qp))
+        else
+            curve%bounded = .true.
+            curve%split = p*sqrt(-g/(p + 1.0_qp))
+            curve%apse_m1 = 2.0_qp/((p + 1.0_qp)*(p - 2.0_qp + curve%split))
+            curve%apse = 1.0_qp + curve%apse_m1
+            if (curve%apse_m1 < 0.25_qp) then
+                curve%apse_gap = 1.0_qp - 2.0_qp*curve%apse_m1
+            else
+                curve%apse_gap = g + curve%split
+            end if
+        end if
+    end subroutine set_from_gap
+
+    pure subroutine set_bounded(apse_m1, apse_gap, curve)
+        real(qp), intent(in) :: apse_m1, apse_gap   ! R - 1 and 3 - 2R, consistent
+        type(repulsive_curve), intent(out) :: curve
+        real(qp) :: big_r, s, e
+        big_r = 1.0_qp + apse_m1
+        e = apse_gap
+        s = sqrt((big_r + 3.0_qp)/apse_m1)
+        curve%bounded = .true.
+        curve%apse = big_r
+        curve%apse_m1 = apse_m1
+        curve%apse_gap = e
+        curve%split = 2.0_qp*big_r*e/(apse_m1*(s + 3.0_qp))
+        curve%gap = -4.0_qp*e*e/(apse_m1*(s + 3.0_qp)* &
+                                 (sqrt((big_r + 3.0_qp)*apse_m1) + 3.0_qp - big_r))
+        curve%p = 2.0_qp*big_r + curve%split
+        curve%k2 = big_r**3/(2.0_qp*apse_m1)
+        curve%k = sqrt(curve%k2)
+    end subroutine set_bounded
+
+    pure function integrand_evaluate(self, x) result(y)
+        class(repulsive_integrand), intent(in) :: self
+        real(qp), intent(in) :: x          ! the piece's variable
+        real(qp) :: y
+        real(qp) :: point, xm1, q, jac, h, sn, cs, rmx, w
+        select case (self%piece)
+        case (piece_start)
+            ! point = 1 + L sigma^2, sigma = x: the 1/sqrt(x - 1) of t is cancelled
+            xm1 = self%span*x*x
+            point = 1.0_qp + xm1
+            q = (point + self%p)*((point - self%a)**2 + self%beta)
+            select case (self%kind)
+            case (want_angle)
+                y = self%k*sqrt2*2.0_qp*self%span*sqrt(self%span)*x*x/(point*sqrt(q))
+            case (want_length)
+                y = 2.0_qp*self%span*x*point*sqrt(point)/sqrt(q)
+            case default
+                y = sqrt2*sqrt(self%span)*point**2/sqrt(q)
+            end select
+        case (piece_below, piece_above)
+            ! point = a -+ h; stretched (beta > 0, within `stretch` widths of the peak):
+            ! h = sqrt(beta) sinh(x), the peak cancelled exactly; otherwise h = x
+            if (self%stretched) then
+                h = sqrt(self%beta)*sinh(x)
+                jac = 1.0_qp
+            else
+                h = x
+                jac = 1.0_qp/sqrt(h*h + self%beta)
+            end if
+            if (self%piece == piece_below) then
+                point = self%a - h
+                xm1 = (self%a - 1.0_qp) - h
+            else
+                point = self%a + h
+                xm1 = (self%a - 1.0_qp) + h
+            end if
+            ! jac = dx/sqrt((x - a)^2 + beta) per unit of the variable
+            w = point + self%p
+            select case (self%kind)
+            case (want_angle)
+                y = self%k*sqrt2*sqrt(xm1)/(point*sqrt(w))*jac
+            case (want_length)
+                y = point*sqrt(point)/sqrt(w)*jac
+            case default
+                y = point**2/(sqrt2*sqrt(xm1)*sqrt(w))*jac
+            end select
+        case (piece_far)
+            ! point = 4/z, z = x in (0, 1]: theta's integrand tends to K sqrt2/4 at z = 0
+            point = far_start/x
+            xm1 = point - 1.0_qp
+            q = (point + self%p)*((point - self%a)**2 + self%beta)
+            jac = far_start/(x*x)
+            select case (self%kind)
+            case (want_angle)
+                y = self%k*sqrt2*sqrt(xm1)/(point*sqrt(q))*jac
+            case (want_length)
+                y = point*sqrt(point)/sqrt(q)*jac
+            case default
+                y = point**2/(sqrt2*sqrt(xm1)*sqrt(q))*jac
+            end select
+        case default
+            ! bounded: R - x = (R-1) sn^2, x - 1 = (R-1) cs^2 (sn = sin(nu/2) or, near the
+            ! apse, sqrt(d/(R-1)) sinh(xi)); w = (r2 - x)(x + P) without its r2 - x factor
+            ! when that is cancelled against d nu/d xi (piece_apse)
+            if (self%piece == piece_arch) then
+                sn = sin(0.5_qp*x)
+                cs = cos(0.5_qp*x)
+                rmx = self%rm1*sn*sn
+                xm1 = self%rm1*cs*cs
+                point = 1.0_qp + xm1
+                w = (self%d + rmx)*(point + self%p)
+                jac = 1.0_qp
+            else
+                sn = sqrt(self%d/self%rm1)*sinh(x)
+                cs = sqrt((1.0_qp - sn)*(1.0_qp + sn))
+                rmx = self%rm1*sn*sn
+                xm1 = self%rm1*cs*cs
+                point = 1.0_qp + xm1
+                w = point + self%p
+                jac = 2.0_qp/(sqrt(self%rm1)*cs)
+            end if
+            select case (self%kind)
+            case (want_angle)
+                y = self%k*sqrt2*xm1/(point*sqrt(w))*jac
+            case (want_length)
+                y = point*sqrt(point)*sqrt(xm1)/sqrt(w)*jac
+            case default
+                y = point**2/(sqrt2*sqrt(w))*jac
+            end select
+        end select
+    end function integrand_evaluate
+
+    pure subroutine add_piece(f, piece, lower, upper, rule, total, status)
+        type(repulsive_integrand), intent(inout) :: f
+        integer, intent(in) :: piece
+        real(qp), intent(in) :: lower, upper
+        type(gauss_legendre_rule), intent(in) :: rule
+        real(qp), intent(inout) :: total
+        integer, intent(inout) :: status
+        real(qp) :: value, error
+        integer :: stat
+        if (.not. (upper > lower)) return
+        f%piece = piece
+        call integrate_adaptive(f, lower, upper, rule, integral_tolerance, 0.0_qp, value, &
+                                error, stat)
+        total = total + value
+        status = max(status, stat)
+    end subroutine add_piece
+
+    !> One integral (kind) from radius 1 to r along the first (half-)arch.
+    pure subroutine first_integral(curve, kind, r, rule, value, status)
+        type(repulsive_curve), intent(in) :: curve
+        integer, intent(in) :: kind
+        real(qp), intent(in) :: r
+        type(gauss_legendre_rule), intent(in) :: rule
+        real(qp), intent(out) :: value
+        integer, intent(out) :: status
+        type(repulsive_integrand) :: f
+        real(qp) :: top, r_gap, c, xi_mid, nu_mid, nu_r
+        value = 0.0_qp
+        status = status_ok
+        if (r == 1.0_qp) return
+        f%kind = kind
+        f%k = curve%k
+        f%p = curve%p
+        if (curve%bounded) then
+            f%rm1 = curve%apse_m1
+            f%d = curve%split
+            ! R - r from 3 - 2r (exact near 3/2) and the stored 3 - 2R: R itself may not
+            ! be representable next to 3/2 (R = 3/2 - d/2 with d below eps)
+            if (r >= curve%apse) then
+                r_gap = 0.0_qp    ! the apse (R itself may be rounded: r = R is the apse)
+            else if (r > start_end) then
+                r_gap = 0.5_qp*((3.0_qp - 2.0_qp*r) - curve%apse_gap)
+            else
+                r_gap = curve%apse_m1 - (r - 1.0_qp)
+            end if
+            r_gap = max(r_gap, 0.0_qp)
+            ! nu from nu_r to pi (x from r down to 1); within `stretch` widths sqrt(d) of
+            ! the apse (and nu < pi/2) in xi, sin(nu/2) = c sinh(xi), c = sqrt(d/(R-1)),
+            ! split at a float xi_mid so that both pieces meet at nu_mid to a few ulps
+            c = sqrt(f%d/f%rm1)
+            xi_mid = min(xi_stretch, asinh(sqrt(0.5_qp)/c))
+            nu_mid = 2.0_qp*asin(min(c*sinh(xi_mid), 1.0_qp))
+            nu_r = 2.0_qp*atan2(sqrt(r_gap), sqrt(r - 1.0_qp))
+            if (nu_r < nu_mid) then
+                call add_piece(f, piece_apse, asinh(sqrt(r_gap/f%d)), xi_mid, rule, value, &
+                               status)
+                call add_piece(f, piece_arch, nu_mid, pi, rule, value, status)
+            else
+                call add_piece(f, piece_arch, nu_r, pi, rule, value, status)
+            end if
+            return
+        end if
+        f%a = curve%centre
+        f%beta = curve%width2
+        top = min(r, start_end)
+        f%span = top - 1.0_qp
+        call add_piece(f, piece_start, 0.0_qp, 1.0_qp, rule, value, status)
+        if (r <= start_end) return
+        if (f%a > start_end) then
+            call peak_pieces(f, piece_below, f%a - min(r, f%a), f%a - start_end, value, status)
+        end if
+        if (r > f%a) then
+            call peak_pieces(f, piece_above, max(f%a, start_end) - f%a, &
+                             min(r, far_start) - f%a, value, status)
+        end if
+        if (r > far_start) then
+            call add_piece(f, piece_far, far_start/r, 1.0_qp, rule, value, status)
+        end if
+    contains
+        !> h from h_lo to h_hi (distance to the peak at a): in sinh variable up to
+        !! `stretch` widths sqrt(beta) (the split point a float xi, so both pieces meet
+        !! at the same h to a few ulps), plain h beyond.
+        pure subroutine peak_pieces(g, piece, h_lo, h_hi, total, stat)
+            type(repulsive_integrand), intent(inout) :: g
+            integer, intent(in) :: piece
+            real(qp), intent(in) :: h_lo, h_hi
+            real(qp), intent(inout) :: total
+            integer, intent(inout) :: stat
+            real(qp) :: width, h_mid
+            if (.not. (h_hi > h_lo)) return
+            width = sqrt(g%beta)
+            if (g%beta > 0.0_qp .and. h_lo < stretch*width) then
+                h_mid = width*sinh(xi_stretch)
+                g%stretched = .true.
+                call add_piece(g, piece, asinh(h_lo/width), &
+                               merge(xi_stretch, asinh(h_hi/width), h_hi > h_mid), &
+                               rule, total, stat)
+                g%stretched = .false.
+                if (h_hi > h_mid) call add_piece(g, piece, h_mid, h_hi, rule, total, stat)
+            else
+                g%stretched = .false.
+                call add_piece(g, piece, h_lo, h_hi, rule, total, stat)
+            end if
+        end subroutine peak_pieces
+    end subroutine first_integral
+
+    !> theta, s, t at radius r along `curve` from A. Unbounded curves (g >= 0): any
+    !! 1 <= r <= +Infinity (theta converges; s and t are then +Infinity); the critical
+    !! curve only r < 3/2 (it spirals towards 3/2). Bounded: 1 <= r <= R on the first
+    !! half-arch, or on the second (`second`, eq. 29: 2 F(R) - F(r)) back to radius 1.
+    pure subroutine repulsive_values(curve, r, second, angle, length, time, status)
+        type(repulsive_curve), intent(in) :: curve !! the curve
+        real(qp), intent(in) :: r                  !! radius
+        logical, intent(in) :: second              !! on the second half-arch (bounded)
+        real(qp), intent(out) :: angle, length, time !! theta, s, t at r
+        integer, intent(out) :: status             !! status_ok or the reason
+        type(gauss_legendre_rule) :: rule
+        real(qp) :: apse(3)
+        integer :: stat(6)
+        angle = 0.0_qp
+        length = 0.0_qp
+        time = 0.0_qp
+        if (ieee_is_nan(r)) then
+            status = status_not_finite
+            return
+        end if
+        if (r < 1.0_qp .or. (curve%bounded .and. r > curve%apse) .or. &
+            (.not. curve%bounded .and. second) .or. &
+            (curve%gap == 0.0_qp .and. r >= 1.5_qp)) then
+            status = status_invalid_argument
+            return
+        end if
+        rule = gauss_legendre(20)
+        call first_integral(curve, want_angle, r, rule, angle, stat(1))
+        if (ieee_is_finite(r)) then
+            call first_integral(curve, want_length, r, rule, length, stat(2))
+            call first_integral(curve, want_time, r, rule, time, stat(3))
+        else
+            length = ieee_value(length, ieee_positive_inf)
+            time = length
+            stat(2:3) = status_ok
+        end if
+        stat(4:6) = status_ok
+        if (second) then
+            call first_integral(curve, want_angle, curve%apse, rule, apse(1), stat(4))
+            call first_integral(curve, want_length, curve%apse, rule, apse(2), stat(5))
+            call first_integral(curve, want_time, curve%apse, rule, apse(3), stat(6))
+            angle = 2.0_qp*apse(1) - angle
+            length = 2.0_qp*apse(2) - length
+            time = 2.0_qp*apse(3) - time
+        end if
+        status = maxval(stat)
+    end subroutine repulsive_values
+
+    !> The critical brachistochrone K^2 = 27/8, Q = (x - 3/2)^2 (x + 3), in closed form
+    !! (1 <= r < 3/2). With u = sqrt((r-1)/(r+3)) (so x = (1+3u^2)/(1-u^2)),
+    !! theta's integrand becomes 16u^2/((1+3u^2)(1-9u^2)) du and t's
+    !! 2 sqrt2 (1+3u^2)^2/((1-9u^2)(1-u^2)^2) du; with w = sqrt(r/(r+3)) s's becomes
+    !! 12 w^4/((1-3w^2)(1-w^2)^2) dw. Partial fractions give
+    !!   theta = (2/sqrt3) atanh(3u) - 2 atan(sqrt3 u),
+    !!   s     = sqrt3 (atanh(sqrt3 w) - atanh(sqrt3/2)) - (sqrt(r(r+3)) - 2),
+    !!   t     = (3 atanh(3u) - atanh(u) - sqrt((r-1)(r+3)))/sqrt2.
+    !! As r -> 3/2, 1 - 9u^2 = 4(3-2r)/(r+3) and 1 - 3w^2 = (3-2r)/(r+3) -> 0: theta, s, t
+    !! grow like -log(3 - 2r)/sqrt3, -(sqrt3/2) log(3-2r), -(3/(2 sqrt2)) log(3-2r): the
+    !! curve spirals round O infinitely often towards the circle r = 3/2, in infinite
+    !! time. The atanh near 1 are taken from 3 - 2r (exact there) to keep the digits.
+    pure subroutine critical_values(r, angle, length, time, status)
+        real(qp), intent(in) :: r                    !! radius, 1 <= r < 3/2
+        real(qp), intent(out) :: angle, length, time !! theta, s, t at r
+        integer, intent(out) :: status               !! status_ok or the reason
+        real(qp) :: u, w, e, atanh_3u, atanh_3w
+        angle = 0.0_qp
+        length = 0.0_qp
+        time = 0.0_qp
+        if (.not. ieee_is_finite(r)) then
+            status = status_not_finite
+            return
+        else if (r < 1.0_qp .or. r >= 1.5_qp) then
+            status = status_invalid_argument
+            return
+        end if
+        status = status_ok
+        u = sqrt((r - 1.0_qp)/(r + 3.0_qp))
+        w = sqrt(r/(r + 3.0_qp))
+        e = 3.0_qp - 2.0_qp*r
+        atanh_3u = log(1.0_qp + 3.0_qp*u) - 0.5_qp*log(4.0_qp*e/(r + 3.0_qp))
+        atanh_3w = log(1.0_qp + sqrt3*w) - 0.5_qp*log(e/(r + 3.0_qp))
+        angle = 2.0_qp/sqrt3*atanh_3u - 2.0_qp*atan(sqrt3*u)
+        length = sqrt3*(atanh_3w - atanh(0.5_qp*sqrt3)) - (sqrt(r*(r + 3.0_qp)) - 2.0_qp)
+        time = (3.0_qp*atanh_3u - atanh(u) - sqrt((r - 1.0_qp)*(r + 3.0_qp)))/sqrt2
+    end subroutine critical_values
+
+    !> Time of the radial motion (K = 0) from rest at radius 1 to r >= 1, eq. (49):
+    !! t = (sqrt(r (r - 1)) + asinh(sqrt(r - 1)))/sqrt2.
+    pure function repulsive_radial_time(r) result(time)
+        real(qp), intent(in) :: r !! radius, r >= 1
+        real(qp) :: time
+        time = (sqrt(r*(r - 1.0_qp)) + asinh(sqrt(r - 1.0_qp)))/sqrt2
+    end function repulsive_radial_time
+
+    !> The curve of the solver's unknown lambda: unbounded g = exp(lambda); bounded
+    !! 3 - 2R = exp(lambda), R - 1 = -expm1(lambda)/2 (accurate as R -> 1 too).
+    pure subroutine curve_of_lambda(arch, lambda, curve)
+        integer, intent(in) :: arch
+        real(qp), intent(in) :: lambda
+        type(repulsive_curve), intent(out) :: curve
+        if (arch == arch_unbounded) then
+            call set_from_gap(exp(lambda), curve)
+        else
+            call set_bounded(-0.5_qp*expm1_qp(lambda), exp(lambda), curve)
+        end if
+    end subroutine curve_of_lambda
+
+    !> exp(x) - 1 without cancellation for small |x| (series below 1/8, else direct).
+    pure function expm1_qp(x) result(y)
+        real(qp), intent(in) :: x
+        real(qp) :: y, term
+        integer :: n
+        if (abs(x) >= 0.125_qp) then
+            y = exp(x) - 1.0_qp
+            return
+        end if
+        y = 0.0_qp
+        term = 1.0_qp
+        do n = 1, 60
+            term = term*x/real(n, qp)
+            y = y + term
+            if (abs(term) <= 0.25_qp*eps_qp*abs(y)) exit
+        end do
+    end function expm1_qp
+
+    pure subroutine mismatch_evaluate(self, x, f, df, status)
+        class(angle_mismatch), intent(in) :: self
+        real(qp), intent(in) :: x
+        real(qp), intent(out) :: f, df
+        integer, intent(out) :: status
+        type(repulsive_curve) :: curve
+        type(gauss_legendre_rule) :: rule
+        real(qp) :: angle, apse
+        integer :: stat
+        df = 0.0_qp
+        call curve_of_lambda(self%arch, x, curve)
+        rule = gauss_legendre(20)
+        call first_integral(curve, want_angle, self%rho, rule, angle, status)
+        if (self%arch == arch_second_half) then
+            call first_integral(curve, want_angle, curve%apse, rule, apse, stat)
+            angle = 2.0_qp*apse - angle
+            status = max(status, stat)
+        end if
+        f = angle - self%target
+    end subroutine mismatch_evaluate
+
+    !> The brachistochrone from A through B = (rho, psi) sweeping the angle `target`
+    !! (> 0) on the branch `arch`, whose unknown lambda has the known end value
+    !! f_top = theta - target at lambda_top; lambda is walked down until f changes sign.
+    pure subroutine solve_branch(rho, target, arch, lambda_top, f_top, solution)
+        real(qp), intent(in) :: rho, target, lambda_top, f_top
+        integer, intent(in) :: arch
+        type(repulsive_solution), intent(inout) :: solution
+        type(angle_mismatch) :: fun
+        real(qp) :: lo, f_lo, hi, f_hi, x, df, floor
+        integer :: steps, status, walks
+        fun%rho = rho
+        fun%target = target
+        fun%arch = arch
+        solution%arch = arch
+        floor = log(critical_floor)
+        hi = lambda_top
+        f_hi = f_top
+        lo = hi
+        walks = 0
+        x = lambda_top
+        steps = 0
+        ! f_top = 0: the target is the angle at the top of the branch (B is the apse)
+        do while (f_top /= 0.0_qp)
+            lo = max(lo - 4.0_qp, floor)
+            call fun%evaluate(lo, f_lo, df, status)
+            walks = walks + 1
+            if (status /= status_ok) then
+                solution%status = status
+                return
+            end if
+            if ((f_lo > 0.0_qp) .neqv. (f_hi > 0.0_qp)) then
+                call bracketed_secant(fun, lo, f_lo, hi, f_hi, 4.0_qp*eps_qp, &
+                                      4.0_qp*eps_qp, max_steps, x, steps, status)
+                if (status /= status_ok) then
+                    solution%status = status
+                    return
+                end if
+                exit
+            end if
+            if (lo <= floor) then
+                ! the angle is not reached before g (or 3 - 2R) = critical_floor
+                solution%status = status_no_convergence
+                return
+            end if
+            hi = lo
+            f_hi = f_lo
+        end do
+        solution%steps = steps + walks
+        call curve_of_lambda(arch, x, solution%curve)
+        call repulsive_values(solution%curve, rho, arch == arch_second_half, &
+                              solution%angle, solution%arclength, solution%time, status)
+        solution%status = status
+    end subroutine solve_branch
+
+    !> The two-point problem: every brachistochrone from A = (1, 0) to B = (rho, psi)
+    !! sweeping an angle psi + 2 pi m (anticlockwise) or 2 pi (m + 1) - psi (clockwise,
+    !! the mirror image), m = 0..max_windings, in increasing order of the swept angle
+    !! (which is also increasing time, see the module notes); `best` indexes the least
+    !! time. One solution per target angle (the branch through rho is monotone).
+    !! Solutions that need g or 3 - 2R below `critical_floor` carry
+    !! status_no_convergence.
+    pure subroutine solve_repulsive(rho, psi, max_windings, solutions, best, status)
+        real(qp), intent(in) :: rho        !! endpoint radius, rho >= 1
+        real(qp), intent(in) :: psi        !! endpoint angle, 0 <= psi <= pi
+        integer, intent(in) :: max_windings !! largest m (>= 0)
+        type(repulsive_solution), allocatable, intent(out) :: solutions(:) !! by angle
+        integer, intent(out) :: best       !! index of the least time (0 if none)
+        integer, intent(out) :: status     !! status_ok or the reason for bad input
+        type(repulsive_curve) :: curve
+        type(gauss_legendre_rule) :: rule
+        real(qp) :: target, angle_critical, angle_apse, dummy(2)
+        integer :: m, sense, n, i, stat
+        logical :: mirror_distinct
+        best = 0
+        allocate (solutions(0))
+        if (.not. (ieee_is_finite(rho) .and. ieee_is_finite(psi))) then
+            status = status_not_finite
+            return
+        else if (rho < 1.0_qp) then
+            status = status_rho_below_start
+            return
+        else if (psi < 0.0_qp .or. psi > pi) then
+            status = status_psi_out_of_range
+            return
+        else if (max_windings < 0) then
+            status = status_invalid_argument
+            return
+        end if
+        status = status_ok
+        rule = gauss_legendre(20)
+        angle_critical = 0.0_qp
+        angle_apse = 0.0_qp
+        if (rho > 1.0_qp .and. rho < 1.5_qp) then
+            call critical_values(rho, angle_critical, dummy(1), dummy(2), stat)
+            call curve_from_apse(rho, curve, stat)
+            call first_integral(curve, want_angle, rho, rule, angle_apse, stat)
+        end if
+        mirror_distinct = psi > 0.0_qp .and. psi < pi
+        deallocate (solutions)
+        allocate (solutions(merge(2, 1, mirror_distinct)*(max_windings + 1)))
+        n = 0
+        do m = 0, max_windings
+            do sense = 0, merge(1, 0, mirror_distinct)
+                n = n + 1
+                if (sense == 0) then
+                    target = psi + 2.0_qp*pi*real(m, qp)
+                else
+                    target = 2.0_qp*pi*real(m + 1, qp) - psi
+                end if
+                solutions(n)%target = target
+                solutions(n)%winding = m
+                solutions(n)%clockwise = sense == 1
+                call solve_target(target, solutions(n))
+            end do
+        end do
+        do i = 1, n
+            if (solutions(i)%status /= status_ok) cycle
+            if (best == 0) then
+                best = i
+            else if (solutions(i)%time < solutions(best)%time) then
+                best = i
+            end if
+        end do
+    contains
+        pure subroutine solve_target(target, solution)
+            real(qp), intent(in) :: target
+            type(repulsive_solution), intent(inout) :: solution
+            integer :: stat_values
+            if (target == 0.0_qp) then
+                ! psi = 0, m = 0: the radial path (K = 0); B = A when rho = 1
+                call set_from_gap(3.0_qp, solution%curve)
+                solution%arch = arch_unbounded
+                call repulsive_values(solution%curve, rho, .false., solution%angle, &
+                                      solution%arclength, solution%time, stat_values)
+                solution%status = stat_values
+            else if (rho == 1.0_qp) then
+                ! complete arches: lambda = log(3 - 2R) up to 0 (R -> 1, angle -> 0)
+                call solve_branch(rho, target, arch_second_half, 0.0_qp, -target, solution)
+            else if (rho >= 1.5_qp .or. target < angle_critical) then
+                call solve_branch(rho, target, arch_unbounded, log(3.0_qp), -target, &
+                                  solution)
+            else if (target <= angle_apse) then
+                call solve_branch(rho, target, arch_first_half, log(3.0_qp - 2.0_qp*rho), &
+                                  angle_apse - target, solution)
+            else
+                call solve_branch(rho, target, arch_second_half, &
+                                  log(3.0_qp - 2.0_qp*rho), angle_apse - target, solution)
+            end if
+        end subroutine solve_target
+    end subroutine solve_repulsive
+
+end module repulsive

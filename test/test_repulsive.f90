@@ -1,0 +1,460 @@
+!> Repulsive inverse-square brachistochrones (src/physics/repulsive.f90) against
+!! independent values: the radial closed form (49), the critical curve in closed form,
+!! mpmath at 80 digits on the original integrals (data/reference/repulsive_mpmath.csv,
+!! scripts/make_repulsive_reference.py), and the two-point structure derived in the module.
+module test_repulsive
+    use, intrinsic :: iso_fortran_env, only: output_unit
+    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_positive_inf, ieee_quiet_nan, &
+                                             ieee_is_finite
+    use brachistochrone_kinds, only: qp, pi, eps_qp
+    use brachistochrone_status, only: status_ok, status_rho_below_start, &
+                                      status_not_finite, status_psi_out_of_range, &
+                                      status_invalid_argument
+    use repulsive, only: repulsive_curve, repulsive_solution, curve_from_k2, &
+                         curve_from_gap, curve_from_apse, curve_from_apse_gap, &
+                         repulsive_values, critical_values, repulsive_radial_time, &
+                         solve_repulsive, arch_unbounded, arch_first_half, &
+                         arch_second_half, critical_k2
+    use testing, only: check, check_close, check_digits, section, digits_of_agreement
+    implicit none
+    private
+
+    public :: run_repulsive_tests
+
+    real(qp), save :: worst_reference = 99.0_qp
+
+contains
+
+    !> Every repulsive test group.
+    subroutine run_repulsive_tests()
+        call radial_closed_form()
+        call critical_closed_form()
+        call mpmath_reference()
+        call branch_structure()
+        call two_point()
+        call two_point_mpmath()
+        call winding_asymptotics()
+        call constructors()
+        call cycloid_limit()
+        call bad_input()
+    end subroutine run_repulsive_tests
+
+    subroutine radial_closed_form()
+        type(repulsive_curve) :: curve
+        real(qp), parameter :: radii(4) = [1.0e-20_qp, 0.5_qp, 2.0_qp, 99.0_qp]
+        real(qp) :: angle, length, time, r
+        integer :: i, status
+        call section('repulsive: K = 0 is radial motion, t = (49)')
+        call curve_from_k2(0.0_qp, curve, status)
+        do i = 1, size(radii)
+            r = 1.0_qp + radii(i)
+            call repulsive_values(curve, r, .false., angle, length, time, status)
+            call check(status == status_ok .and. angle == 0.0_qp, 'radial: theta = 0')
+            call check_close(length, r - 1.0_qp, 8.0_qp, 'radial: s = r - 1')
+            call check_close(time, repulsive_radial_time(r), 8.0_qp, 'radial: t = (49)')
+        end do
+    end subroutine radial_closed_form
+
+    subroutine critical_closed_form()
+        type(repulsive_curve) :: curve, near
+        real(qp), parameter :: radii(5) = [1.0625_qp, 1.25_qp, 1.4375_qp, 1.4990234375_qp, &
+                                           1.5_qp - 2.0_qp**(-40)]
+        real(qp) :: a(3), b(3), worst, worst_near, r
+        integer :: i, j, status
+        call section('repulsive: critical curve K^2 = 27/8 in closed form')
+        call curve_from_gap(0.0_qp, curve, status)
+        call check(curve%k2 == critical_k2, 'critical: K^2 = 27/8')
+        worst = 99.0_qp
+        worst_near = 99.0_qp
+        do i = 1, size(radii)
+            r = radii(i)
+            call critical_values(r, b(1), b(2), b(3), status)
+            call repulsive_values(curve, r, .false., a(1), a(2), a(3), status)
+            call check(status == status_ok, 'critical: integrals converge')
+            do j = 1, 3
+                worst = min(worst, digits_of_agreement(a(j), b(j)))
+            end do
+            ! g = +-1e-60: unbounded and bounded curves agree with the critical one to
+            ! O(g/(3/2 - r)^2) (1e-36 at the last radius): the near-double root is resolved;
+            ! 31.5 digits (not 32) as the angle there is a log of 3 - 2r: ~40 eps absolute
+            call curve_from_gap(1.0e-60_qp, near, status)
+            call repulsive_values(near, r, .false., a(1), a(2), a(3), status)
+            do j = 1, 3
+                worst_near = min(worst_near, digits_of_agreement(a(j), b(j)))
+            end do
+            call curve_from_gap(-1.0e-60_qp, near, status)
+            call repulsive_values(near, r, .false., a(1), a(2), a(3), status)
+            do j = 1, 3
+                worst_near = min(worst_near, digits_of_agreement(a(j), b(j)))
+            end do
+        end do
+        write (output_unit, '(a,f6.2)') '   integrals (g = 0) vs closed form, fewest digits: ', &
+            worst
+        write (output_unit, '(a,f6.2)') '   g = +-1e-60 vs closed form, fewest digits:        ', &
+            worst_near
+        call check(worst >= 32.0_qp, 'critical: theta, s, t integrals = closed form')
+        call check(worst_near >= 31.5_qp, 'critical: g = +-1e-60 = closed form')
+        ! the spiral: theta -> infinity as r -> 3/2 (about -log(3 - 2r)/sqrt3)
+        call critical_values(1.5_qp - 2.0_qp**(-100), b(1), b(2), b(3), status)
+        call check(b(1) > 6.0_qp*2.0_qp*pi, 'critical: six turns before 3/2 - 2^-100')
+        call check_close(b(1), -log(2.0_qp**(-99))/sqrt(3.0_qp), 1.0e32_qp, &
+                         'critical: theta ~ -log(3 - 2r)/sqrt3 (to O(1))', 1.0_qp)
+        call critical_values(1.5_qp, b(1), b(2), b(3), status)
+        call check(status == status_invalid_argument, 'critical: r = 3/2 is never reached')
+    end subroutine critical_closed_form
+
+    !> One mpmath row: bounded (parameter R) or not (parameter K^2); arch 0 first, 1
+    !! second, 2 apse.
+    subroutine ref(bounded, parameter, kind, r_in, arch, expected)
+        integer, intent(in) :: bounded, kind, arch
+        real(qp), intent(in) :: parameter, r_in, expected
+        type(repulsive_curve) :: curve
+        real(qp) :: v(3), r, have
+        integer :: status
+        if (bounded == 1) then
+            call curve_from_apse(parameter, curve, status)
+        else
+            call curve_from_k2(parameter, curve, status)
+        end if
+        r = r_in
+        if (r == huge(1.0_qp)) r = ieee_value(r, ieee_positive_inf)
+        if (arch == 2) r = curve%apse
+        call repulsive_values(curve, r, arch == 1, v(1), v(2), v(3), status)
+        call check(status == status_ok, 'mpmath reference: status ok')
+        have = digits_of_agreement(v(kind), expected)
+        worst_reference = min(worst_reference, have)
+        call check_digits(v(kind), expected, 32.5_qp, 'mpmath reference value')
+    end subroutine ref
+
+    subroutine mpmath_reference()
+        call section('repulsive: theta, s, t against mpmath (80 digits, original integrals)')
+        call ref(0, 2.0_qp, 1, 1.25_qp, 0, &
+                 0.1503153673364795377413777400831607370603_qp)
+        call ref(0, 2.0_qp, 2, 1.25_qp, 0, &
+                 0.3081968781880009748911681110922466966128_qp)
+        call ref(0, 2.0_qp, 3, 1.25_qp, 0, &
+                 0.8542869370951081459206231142045906191353_qp)
+        call ref(0, 2.0_qp, 1, 2.0_qp, 0, &
+                 0.6833543139198826172847456535466151040376_qp)
+        call ref(0, 2.0_qp, 2, 2.0_qp, 0, &
+                 1.440509456931057470960729853346853663407_qp)
+        call ref(0, 2.0_qp, 3, 2.0_qp, 0, &
+                 2.195963826926483544813951243469639118814_qp)
+        call ref(0, 2.0_qp, 1, 5.0_qp, 0, &
+                 1.270014642580120035392608535630470459778_qp)
+        call ref(0, 2.0_qp, 2, 5.0_qp, 0, &
+                 4.957241196357012893917692574355698753103_qp)
+        call ref(0, 2.0_qp, 3, 5.0_qp, 0, &
+                 5.211623875978052471803218759488059902902_qp)
+        call ref(0, 2.0_qp, 1, huge(1.0_qp), 0, &
+                 1.658186782211470232732915257771101751021_qp)
+        call ref(0, 0.5_qp, 1, 10.0_qp, 0, &
+                 0.5968374619310927994082428676252042101222_qp)
+        call ref(0, 0.5_qp, 2, 10.0_qp, 0, &
+                 9.21614251202794694849652253807463313935_qp)
+        call ref(0, 0.5_qp, 3, 10.0_qp, 0, &
+                 8.210085603882717593826688073452641068719_qp)
+        call ref(0, 0.5_qp, 1, huge(1.0_qp), 0, &
+                 0.694443053726348236162411275037684594966_qp)
+        call ref(0, 3.3740234375_qp, 1, 1.4375_qp, 0, &
+                 1.024560378803230273072789236546779116381_qp)
+        call ref(0, 3.3740234375_qp, 2, 1.4375_qp, 0, &
+                 1.464435655308067772396203255487617672885_qp)
+        call ref(0, 3.3740234375_qp, 3, 1.4375_qp, 0, &
+                 2.497383062466599567783344450423662876559_qp)
+        call ref(0, 3.3740234375_qp, 1, 1.5625_qp, 0, &
+                 3.507617046866501084613915077084042300821_qp)
+        call ref(0, 3.3740234375_qp, 2, 1.5625_qp, 0, &
+                 5.191809106709124114258296078042392258486_qp)
+        call ref(0, 3.3740234375_qp, 3, 1.5625_qp, 0, &
+                 7.064751408596231452132124573314183020176_qp)
+        call ref(0, 3.3740234375_qp, 1, 3.0_qp, 0, &
+                 5.322759162773522302248173264906343154813_qp)
+        call ref(0, 3.3740234375_qp, 2, 3.0_qp, 0, &
+                 9.090955501770870241085143259479373857574_qp)
+        call ref(0, 3.3740234375_qp, 3, 3.0_qp, 0, &
+                 11.04425410705178253938927719008082946874_qp)
+        call ref(0, 3.3740234375_qp, 1, huge(1.0_qp), 0, &
+                 6.206349543757123448150889695101818381959_qp)
+        call ref(1, 1.25_qp, 1, 1.25_qp, 2, &
+                 0.5062816633637656473370533343986577254931_qp)
+        call ref(1, 1.25_qp, 2, 1.25_qp, 2, &
+                 0.6858463901784349992773014137128890056401_qp)
+        call ref(1, 1.25_qp, 3, 1.25_qp, 2, &
+                 1.511629455341574255615206637844296146361_qp)
+        call ref(1, 1.25_qp, 1, 1.125_qp, 0, &
+                 0.09574348562571619383264954386427847675488_qp)
+        call ref(1, 1.25_qp, 1, 1.125_qp, 1, &
+                 0.9168198411018151008414571249330369742314_qp)
+        call ref(1, 1.25_qp, 2, 1.125_qp, 0, &
+                 0.1661039663722047248336693807350432835699_qp)
+        call ref(1, 1.25_qp, 2, 1.125_qp, 1, &
+                 1.20558881398466527372093344669073472771_qp)
+        call ref(1, 1.25_qp, 3, 1.125_qp, 0, &
+                 0.6206498674779540937671011857918161636757_qp)
+        call ref(1, 1.25_qp, 3, 1.125_qp, 1, &
+                 2.402609043205194417463312089896776129046_qp)
+        call ref(1, 1.49999904632568359375_qp, 1, 1.49999904632568359375_qp, 2, &
+                 7.824955674976647296262586398590750489353_qp)
+        call ref(1, 1.49999904632568359375_qp, 2, 1.49999904632568359375_qp, 2, &
+                 11.62968177286026166874958669536526413447_qp)
+        call ref(1, 1.49999904632568359375_qp, 3, 1.49999904632568359375_qp, 2, &
+                 14.99346153528675466262072575539990900729_qp)
+        call ref(1, 1.49999904632568359375_qp, 1, 1.25_qp, 0, &
+                 0.2711091946628360960656012677363481353053_qp)
+        call ref(1, 1.49999904632568359375_qp, 1, 1.25_qp, 1, &
+                 15.3788021552904584964595715294451528434_qp)
+        call ref(1, 1.49999904632568359375_qp, 2, 1.25_qp, 0, &
+                 0.4146442619188507309255425610277675260018_qp)
+        call ref(1, 1.49999904632568359375_qp, 2, 1.25_qp, 1, &
+                 22.84471928380167260657363082970276074293_qp)
+        call ref(1, 1.49999904632568359375_qp, 3, 1.25_qp, 0, &
+                 1.055446150661995072882886210398106294265_qp)
+        call ref(1, 1.49999904632568359375_qp, 3, 1.25_qp, 1, &
+                 28.93147691991151425235856530040171172032_qp)
+        write (output_unit, '(a,f6.2)') '   fewest digits against mpmath: ', worst_reference
+    end subroutine mpmath_reference
+
+    !> theta(rho) along the branch of curves through rho is increasing: unbounded (g from 3
+    !! down to 0), then for rho < 3/2 first half-arches (R from 3/2 down to rho) and second
+    !! ones (R from rho back up to 3/2); t increases with it.
+    subroutine branch_structure()
+        real(qp), parameter :: rhos(4) = [1.25_qp, 1.4375_qp, 1.5_qp, 3.0_qp]
+        type(repulsive_curve) :: curve
+        real(qp) :: angle, length, time, last_angle, last_time, e
+        integer :: i, j, status
+        logical :: increasing
+        call section('repulsive: theta(rho) and t increase along the branch of curves')
+        do i = 1, size(rhos)
+            increasing = .true.
+            last_angle = -1.0_qp
+            last_time = -1.0_qp
+            do j = 0, 60
+                call curve_from_gap(3.0_qp*2.0_qp**(-j), curve, status)
+                if (j == 0) call curve_from_k2(0.0_qp, curve, status)
+                call repulsive_values(curve, rhos(i), .false., angle, length, time, status)
+                call step()
+            end do
+            if (rhos(i) < 1.5_qp) then
+                do j = 60, 1, -1
+                    e = (3.0_qp - 2.0_qp*rhos(i))*2.0_qp**(-j)
+                    call curve_from_apse_gap(e, curve, status)
+                    call repulsive_values(curve, rhos(i), .false., angle, length, time, status)
+                    call step()
+                end do
+                do j = 0, 60
+                    e = (3.0_qp - 2.0_qp*rhos(i))*2.0_qp**(-j)
+                    call curve_from_apse_gap(e, curve, status)
+                    call repulsive_values(curve, rhos(i), .true., angle, length, time, status)
+                    call step()
+                end do
+            end if
+            write (output_unit, '(a,f7.4,a,es10.3)') '   rho = ', rhos(i), &
+                ': largest angle on the grid ', last_angle
+            call check(increasing, 'theta and t increase along the branch')
+        end do
+    contains
+        subroutine step()
+            ! non-decreasing to rounding: near R = 3/2 the first half-arch angle moves by
+            ! O(g) = O((3 - 2R)^2), below the quadrature's noise (a few eps: 2 eps per
+            ! piece) on the finest steps of the grid
+            if (status /= status_ok .or. angle < last_angle*(1.0_qp - 16.0_qp*eps_qp) .or. &
+                time < last_time*(1.0_qp - 16.0_qp*eps_qp)) increasing = .false.
+            last_angle = angle
+            last_time = time
+        end subroutine step
+    end subroutine branch_structure
+
+    subroutine two_point()
+        real(qp), parameter :: rhos(7) = [1.0_qp, 1.125_qp, 1.25_qp, 1.4375_qp, 1.5_qp, 2.0_qp, &
+                                           5.0_qp]
+        real(qp), parameter :: psis(4) = [0.0_qp, 0.4_qp, 1.0_qp, 3.0_qp]
+        type(repulsive_solution), allocatable :: sol(:)
+        real(qp) :: worst, residual, apse(3)
+        type(repulsive_curve) :: curve
+        integer :: i, j, k, best, status, arches(0:2)
+        logical :: ordered, all_ok
+        call section('repulsive: two-point problem, windings m = 0..2, both senses')
+        worst = 0.0_qp
+        arches = 0
+        do i = 1, size(rhos)
+            do j = 1, size(psis)
+                if (rhos(i) == 1.0_qp .and. psis(j) == 0.0_qp) cycle
+                call solve_repulsive(rhos(i), psis(j), 2, sol, best, status)
+                call check(status == status_ok, 'two-point: endpoint accepted')
+                all_ok = .true.
+                ordered = .true.
+                do k = 1, size(sol)
+                    if (sol(k)%status /= status_ok) all_ok = .false.
+                    residual = abs(sol(k)%angle - sol(k)%target)/max(sol(k)%target, 1.0_qp)
+                    worst = max(worst, residual/eps_qp)
+                    arches(sol(k)%arch) = arches(sol(k)%arch) + 1
+                    if (k > 1) then
+                        if (sol(k)%target <= sol(k - 1)%target .or. &
+                            sol(k)%time <= sol(k - 1)%time) ordered = .false.
+                    end if
+                end do
+                call check(all_ok, 'two-point: every target solved')
+                call check(ordered, 'two-point: time increases with the swept angle')
+                call check(best == 1, 'two-point: least time on the least swept angle')
+                if (i == 6 .and. j == 3) then
+                    write (output_unit, '(a)') '   rho = 2, psi = 1:  m  cw  gap g = 3 - P   t'
+                    do k = 1, size(sol)
+                        write (output_unit, '(a,i2,l3,es14.6,f40.34)') '   ', sol(k)%winding, &
+                            sol(k)%clockwise, sol(k)%curve%gap, sol(k)%time
+                    end do
+                end if
+            end do
+        end do
+        write (output_unit, '(a,f8.2)') '   worst |theta(rho) - target|/max(target,1) in eps: ', &
+            worst
+        write (output_unit, '(a,3i4)') '   solutions unbounded, first, second half-arch: ', &
+            arches
+        call check(worst <= 16.0_qp, 'two-point: endpoint angle reproduced to 16 eps')
+        call check(all(arches > 0), 'two-point: every kind of branch exercised')
+        ! B at the apse of the curve with R = rho: psi = Theta(rho, rho), top of the branch
+        call curve_from_apse(1.25_qp, curve, status)
+        call repulsive_values(curve, 1.25_qp, .false., apse(1), apse(2), apse(3), status)
+        call solve_repulsive(1.25_qp, apse(1), 0, sol, best, status)
+        call check_close(sol(1)%curve%apse, 1.25_qp, 4.0_qp, 'two-point: B at the apse: R = rho')
+        call check_close(sol(1)%time, apse(3), 4.0_qp, 'two-point: B at the apse: t = T(R, R)')
+        ! psi = 0, m = 0 is the radial path
+        call solve_repulsive(2.0_qp, 0.0_qp, 0, sol, best, status)
+        call check(size(sol) == 1, 'two-point: psi = 0 has one sense')
+        call check_close(sol(1)%time, repulsive_radial_time(2.0_qp), 8.0_qp, &
+                         'two-point: psi = 0 is radial, t = (49)')
+    end subroutine two_point
+
+    !> Two-point solutions against the problem solved independently by mpmath (findroot on
+    !! the original integrals, last rows of data/reference/repulsive_mpmath.csv).
+    subroutine two_point_mpmath()
+        type(repulsive_solution), allocatable :: sol(:)
+        integer :: best, status
+        call section('repulsive: two-point solutions against mpmath findroot')
+        call solve_repulsive(2.0_qp, 1.0_qp, 1, sol, best, status)
+        call check_digits(sol(1)%curve%k2, 2.645088804285968552324521429348058561082_qp, &
+                          33.0_qp, 'rho = 2, psi = 1, m = 0: K^2')
+        call check_digits(sol(1)%time, 2.681630164465431617080797780894761881585_qp, &
+                          33.0_qp, 'rho = 2, psi = 1, m = 0: t')
+        call check_digits(sol(3)%curve%k2, 3.374988486845173448639438430583911265415_qp, &
+                          33.0_qp, 'rho = 2, psi = 1, m = 1: K^2')
+        call check_digits(sol(3)%time, 14.11614078964469775439951871173613963026_qp, &
+                          33.0_qp, 'rho = 2, psi = 1, m = 1: t')
+        call solve_repulsive(1.25_qp, 0.4_qp, 0, sol, best, status)
+        call check(sol(1)%arch == arch_first_half, 'rho = 5/4, psi = 0.4: first half-arch')
+        call check_digits(sol(1)%curve%apse, 1.260982129463187324371251899279339797443_qp, &
+                          33.0_qp, 'rho = 5/4, psi = 0.4: R')
+        call check_digits(sol(1)%time, 1.302101069487037272664073805610511465792_qp, &
+                          33.0_qp, 'rho = 5/4, psi = 0.4: t')
+        call solve_repulsive(1.25_qp, 1.0_qp, 0, sol, best, status)
+        call check(sol(1)%arch == arch_second_half, 'rho = 5/4, psi = 1: second half-arch')
+        call check_digits(sol(1)%curve%apse, 1.301727301114516485665968712614332589964_qp, &
+                          33.0_qp, 'rho = 5/4, psi = 1: R')
+        call check_digits(sol(1)%time, 2.472898487362827611486440077335108505319_qp, &
+                          33.0_qp, 'rho = 5/4, psi = 1: t')
+        call solve_repulsive(1.0_qp, 1.0_qp, 0, sol, best, status)
+        call check_digits(sol(1)%curve%apse, 1.247702771295926586612647102385209859044_qp, &
+                          33.0_qp, 'rho = 1, psi = 1 (complete arch): R')
+        call check_digits(sol(1)%time, 2.998405500762512523847012785093331940808_qp, &
+                          33.0_qp, 'rho = 1, psi = 1 (complete arch): t')
+    end subroutine two_point_mpmath
+
+    !> Each extra turn costs, asymptotically, the time of one turn round the circle
+    !! r = 3/2 (where the angular speed v/r is largest): 2 pi r/v = 2 pi sqrt(27/8), and
+    !! needs g smaller by exp(-2 pi sqrt3) (theta ~ -log(g)/sqrt3).
+    subroutine winding_asymptotics()
+        type(repulsive_solution), allocatable :: sol(:)
+        real(qp) :: dt, ratio, turn_time, turn_ratio
+        integer :: best, status, k
+        call section('repulsive: windings, each turn ~ one turn round r = 3/2')
+        turn_time = 2.0_qp*pi*sqrt(27.0_qp/8.0_qp)
+        turn_ratio = exp(-2.0_qp*pi*sqrt(3.0_qp))
+        call solve_repulsive(3.0_qp, 2.0_qp, 5, sol, best, status)
+        call check(status == status_ok .and. all(sol%status == status_ok), &
+                   'windings: m = 0..5 solved at rho = 3')
+        write (output_unit, '(a)') '   rho = 3, psi = 2 anticlockwise: m, g, '// &
+            't(m) - t(m-1) - 2 pi Kc, g(m)/g(m-1)/exp(-2 pi sqrt3) - 1'
+        do k = 3, size(sol), 2
+            dt = sol(k)%time - sol(k - 2)%time - turn_time
+            ratio = sol(k)%curve%gap/sol(k - 2)%curve%gap/turn_ratio - 1.0_qp
+            write (output_unit, '(a,i3,3es12.3)') '   ', sol(k)%winding, sol(k)%curve%gap, &
+                dt, ratio
+        end do
+        ! both converge like O(g): at m = 5 (g ~ 3e-25) measured 6e-21 and 1e-19
+        call check(abs(dt) < 1.0e-18_qp, 'windings: extra turn costs 2 pi sqrt(27/8)')
+        call check(abs(ratio) < 1.0e-17_qp, 'windings: g shrinks by exp(-2 pi sqrt3) per turn')
+        call check(best == 1, 'windings: least time on m = 0')
+    end subroutine winding_asymptotics
+
+    !> The constructors agree: K^2 = R^3/(2(R-1)) gives back the apse R; K^2 just above
+    !! and below 27/8 gives the gap from 27/4 - 2K^2 = g (9 - 2g)^2/(4 (4 - g)).
+    subroutine constructors()
+        type(repulsive_curve) :: a, b
+        real(qp) :: c, g
+        integer :: status
+        call section('repulsive: constructors')
+        call curve_from_k2(3.90625_qp, a, status)
+        call curve_from_apse(1.25_qp, b, status)
+        call check(a%bounded .and. b%bounded, 'K^2 = 3.90625 is bounded')
+        call check_close(a%apse, 1.25_qp, 8.0_qp, 'K^2 = 3.90625 has apse 5/4')
+        call check_close(a%gap, b%gap, 16.0_qp, 'gap from K^2 = gap from R')
+        call check_close(b%k2, 3.90625_qp, 4.0_qp, 'K^2 from R = 5/4')
+        c = 2.0_qp**(-100)
+        call curve_from_k2(critical_k2 - c, a, status)
+        g = a%gap
+        call check(.not. a%bounded, 'K^2 = 27/8 - 2^-100 is unbounded')
+        call check_close(2.0_qp*c, g*(9.0_qp - 2.0_qp*g)**2/(4.0_qp*(4.0_qp - g)), 8.0_qp, &
+                         'gap of K^2 = 27/8 - 2^-100 to full relative accuracy')
+        call curve_from_k2(critical_k2 + c, a, status)
+        call check(a%bounded .and. a%apse < 1.5_qp, 'K^2 = 27/8 + 2^-100 is bounded')
+        call curve_from_apse_gap(1.0e-30_qp, b, status)
+        call check_close(b%apse_gap, 1.0e-30_qp, 0.0_qp, 'apse gap 3 - 2R kept exactly')
+        call curve_from_gap(-1.0_qp, a, status)
+        call curve_from_apse(a%apse, b, status)
+        call check_close(b%gap, -1.0_qp, 64.0_qp, 'R of g = -1 gives back g = -1')
+        call curve_from_gap(4.0_qp, a, status)
+        call check(status == status_invalid_argument, 'g > 3 rejected')
+        call curve_from_apse(1.5_qp, a, status)
+        call check(status == status_invalid_argument, 'R = 3/2 rejected (critical limit)')
+    end subroutine constructors
+
+    !> R -> 1: near A the field is uniform (|F| = 1), so the complete arch tends to the
+    !! cycloid of depth R - 1 = 2a: angle 2 pi a = pi (R - 1), time 2 pi sqrt(a).
+    subroutine cycloid_limit()
+        type(repulsive_curve) :: curve
+        real(qp) :: angle, length, time, a, worst_angle, worst_time
+        integer :: j, status
+        call section('repulsive: complete arch -> cycloid as R -> 1')
+        do j = 20, 60, 20
+            call curve_from_apse(1.0_qp + 2.0_qp**(-j), curve, status)
+            call repulsive_values(curve, 1.0_qp, .true., angle, length, time, status)
+            a = 0.5_qp*curve%apse_m1
+            worst_angle = abs(angle/(2.0_qp*pi*a) - 1.0_qp)
+            worst_time = abs(time/(2.0_qp*pi*sqrt(a)) - 1.0_qp)
+            write (output_unit, '(a,i3,2es12.3)') '   R - 1 = 2^-j, j, relative deviations: ', &
+                j, worst_angle, worst_time
+            call check(status == status_ok .and. worst_angle < 4.0_qp*curve%apse_m1 .and. &
+                       worst_time < 4.0_qp*curve%apse_m1, 'cycloid limit to O(R - 1)')
+        end do
+    end subroutine cycloid_limit
+
+    subroutine bad_input()
+        type(repulsive_solution), allocatable :: sol(:)
+        integer :: best, status
+        real(qp) :: nan
+        call section('repulsive: bad endpoints')
+        nan = ieee_value(nan, ieee_quiet_nan)
+        call solve_repulsive(0.5_qp, 1.0_qp, 1, sol, best, status)
+        call check(status == status_rho_below_start .and. size(sol) == 0 .and. best == 0, &
+                   'rho < 1: rho_below_start')
+        call solve_repulsive(nan, 1.0_qp, 1, sol, best, status)
+        call check(status == status_not_finite, 'rho NaN: not_finite')
+        call solve_repulsive(2.0_qp, nan, 1, sol, best, status)
+        call check(status == status_not_finite, 'psi NaN: not_finite')
+        call solve_repulsive(2.0_qp, 4.0_qp, 1, sol, best, status)
+        call check(status == status_psi_out_of_range, 'psi > pi: psi_out_of_range')
+        call solve_repulsive(2.0_qp, -0.5_qp, 1, sol, best, status)
+        call check(status == status_psi_out_of_range, 'psi < 0: psi_out_of_range')
+    end subroutine bad_input
+
+end module test_repulsive
