@@ -5,10 +5,15 @@
 !! program solve rows and write files with the same code and give the same bytes.
 module batch_run
     use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
+    use brachistochrone_kinds, only: qp
     use inverse_square, only: inverse_square_model
     use two_point, only: endpoint_solution, solve_endpoint, solve_endpoint_secant
     use central_force, only: central_force_model, new_central_force_model
     use speed_laws, only: power_law, logarithmic_law, harmonic_law
+    use repulsive, only: repulsive_solution, solve_repulsive, repulsive_arch_unbounded => &
+                         arch_unbounded, repulsive_arch_first => arch_first_half
+    use arches, only: arch_first, arch_second, arch_complete, arch_radial, arch_unbounded
+    use brachistochrone_status, only: status_ok, status_no_convergence
     use endpoint_input, only: endpoint_table, message, read_endpoint_file, max_curve_points
     use result_output, only: output_request
     use brachistochrone_version, only: program_name
@@ -109,7 +114,9 @@ contains
         call progress%start(last - first + 1, report)
         !$omp parallel do schedule(dynamic, 16) default(shared) private(i)
         do i = first, last
-            if (.not. fast) then
+            if (table%force == 'repulsive') then
+                solutions(i) = least_time_repulsive(table%rho(i), table%psi(i))
+            else if (.not. fast) then
                 solutions(i) = general%solve(table%rho(i), table%psi(i))
             else if (table%has_estimates(i)) then
                 solutions(i) = solve_endpoint_secant(model, table%rho(i), table%psi(i), &
@@ -123,6 +130,48 @@ contains
         !$omp end parallel do
         call progress%finish()
     end subroutine solve_rows
+
+    !> The least-time brachistochrone through B under repulsive force (Tee sec. 6): every
+    !! target angle has exactly one curve and time grows with the angle swept, so it is
+    !! the one sweeping psi itself (`repulsive` derives this; the library API lists the
+    !! curves with more windings). R-bar exists for bounded curves only.
+    pure function least_time_repulsive(rho, psi) result(solution)
+        real(qp), intent(in) :: rho, psi
+        type(endpoint_solution) :: solution
+        type(repulsive_solution), allocatable :: found(:)
+        integer :: best, status
+        solution%rho = rho
+        solution%psi = psi
+        call solve_repulsive(rho, psi, 0, found, best, status)
+        if (status /= status_ok) then
+            solution%status = status
+            return
+        else if (best == 0) then
+            solution%status = status_no_convergence
+            if (size(found) > 0) solution%status = found(1)%status
+            return
+        end if
+        associate (b => found(best))
+            solution%status = b%status
+            if (b%status /= status_ok) return
+            if (b%curve%k2 == 0.0_qp) then
+                solution%arch = arch_radial
+            else if (b%arch == repulsive_arch_unbounded) then
+                solution%arch = arch_unbounded
+            else if (rho == 1.0_qp) then
+                solution%arch = arch_complete
+            else
+                solution%arch = merge(arch_first, arch_second, b%arch == repulsive_arch_first)
+            end if
+            solution%has_apse_radius = b%curve%bounded
+            if (b%curve%bounded) solution%apse_radius = b%curve%apse
+            solution%arclength = b%arclength
+            solution%time = b%time
+            solution%steps = b%steps
+            solution%has_arclength = .true.
+            solution%has_time = .true.
+        end associate
+    end function least_time_repulsive
 
     !> Resolve the slice (-1 means the table's first or last row) and check it.
     subroutine check_slice(table, first, last, ok, message)

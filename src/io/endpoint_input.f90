@@ -41,7 +41,7 @@ module endpoint_input
         'n, rho, psi, r0, r1, secant_tolerance, curve_points, force, exponent'
     !> The force fields `force` may name.
     character(len=*), parameter :: force_names = &
-        "'inverse_square', 'power', 'logarithmic', 'harmonic'"
+        "'inverse_square', 'power', 'logarithmic', 'harmonic', 'repulsive'"
     !> Most points per curve (`curve_points`); the fewest is 2 (A and B).
     integer, parameter :: max_curve_points = 100000
     !> Value no input can produce: marks an array element the namelist did not set.
@@ -158,8 +158,14 @@ contains
                      ': must be 0 (no curves) or 2 <= curve_points <= '// &
                      integer_text(max_curve_points)//' (points per curve, A and B included)')
         end if
-        call check_rows(table, text, scan, 'rho', a_rho, rho, n, &
-                        'must satisfy 0 < rho <= 1 (A is at radius 1)', in_rho_range)
+        if (trim(force) == 'repulsive') then
+            call check_rows(table, text, scan, 'rho', a_rho, rho, n, 'must satisfy rho >= 1'// &
+                            ' (force = ''repulsive'': paths move outward from A at radius 1)', &
+                            in_repulsive_rho_range)
+        else
+            call check_rows(table, text, scan, 'rho', a_rho, rho, n, &
+                            'must satisfy 0 < rho <= 1 (A is at radius 1)', in_rho_range)
+        end if
         call check_rows(table, text, scan, 'psi', a_psi, psi, n, &
                         'must satisfy 0 <= psi <= pi radians (by symmetry use '// &
                         '2*pi - psi for an angle beyond pi)', in_psi_range)
@@ -416,6 +422,11 @@ contains
         real(qp), intent(in) :: x
         in_rho_range = x > 0.0_qp .and. x <= 1.0_qp
     end function in_rho_range
+
+    pure logical function in_repulsive_rho_range(x)
+        real(qp), intent(in) :: x
+        in_repulsive_rho_range = x >= 1.0_qp
+    end function in_repulsive_rho_range
 
     pure logical function in_psi_range(x)
         real(qp), intent(in) :: x

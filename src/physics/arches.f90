@@ -8,7 +8,7 @@ module arches
     private
 
     public :: arch_none, arch_first, arch_second, arch_complete, arch_radial, &
-              arch_inaccessible, arch_word
+              arch_inaccessible, arch_unbounded, arch_word
 
     !> No answer (bad input).
     integer, parameter :: arch_none = 0
@@ -22,6 +22,8 @@ module arches
     integer, parameter :: arch_radial = 4
     !> psi >= 2 pi/3: no brachistochrone; t is the greatest lower bound kappa(rho).
     integer, parameter :: arch_inaccessible = 5
+    !> Repulsive force: an unbounded brachistochrone (no apse) through B.
+    integer, parameter :: arch_unbounded = 6
 
 contains
 
@@ -35,6 +37,7 @@ contains
         case (arch_complete);     word = 'complete'
         case (arch_radial);       word = 'radial'
         case (arch_inaccessible); word = 'inaccessible'
+        case (arch_unbounded);    word = 'unbounded'
         case default;             word = 'none'
         end select
     end function arch_word

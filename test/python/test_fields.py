@@ -73,3 +73,23 @@ def test_field_input_errors(run, tmp_path, extra, fragment):
     assert result.returncode == 1
     assert fragment in result.stderr, result.stderr
     assert rows is None
+
+
+def test_repulsive_field_end_to_end(run, tmp_path):
+    """force = 'repulsive' (rho >= 1): radial time (49); a bounded brachistochrone's angle
+    at rho recomputed by mpmath on the original integral (28) with K^2 = R^3/(2(R - 1))."""
+    result, rows = solve(run, tmp_path, ["5.0", "1.2", "2.0"], ["0", "0.3", "1.0"],
+                         "force = 'repulsive'")
+    assert result.returncode == 0, result.stderr
+    rho = mp.mpf(5)
+    t49 = (mp.sqrt(rho * (rho - 1)) + mp.log(mp.sqrt(rho) + mp.sqrt(rho - 1))) / mp.sqrt(2)
+    assert rows[0]["arch"] == "radial" and abs(mp.mpf(rows[0]["t"]) - t49) < mp.mpf("1e-32")
+    assert rows[1]["arch"] == "first"
+    big_r, r = mp.mpf(rows[1]["R"]), mp.mpf("1.2")
+    k2 = big_r ** 3 / (2 * (big_r - 1))
+    v2 = lambda x: 2 * (x - 1) / x
+    theta = mp.quad(lambda x: 1 / (x * mp.sqrt(x * x / (k2 * v2(x)) - 1)), [1, r])
+    assert abs(theta - mp.mpf("0.3")) < mp.mpf("1e-30")
+    assert rows[2]["arch"] == "unbounded" and rows[2]["R"] == ""
+    result, rows = solve(run, tmp_path, ["0.5"], ["1.0"], "force = 'repulsive'")
+    assert result.returncode == 1 and "rho >= 1" in result.stderr
