@@ -266,8 +266,8 @@ contains
                 star = index(token, '*')
                 if (star > 0) then
                     read (token(:star - 1), *, iostat=ios) repeat
-                    if (ios /= 0 .or. repeat < 1 .or. verify(token(:star - 1), '0123456789') /= 0) &
-                        then
+                    if (ios /= 0 .or. repeat < 1 .or. &
+                        verify(token(:star - 1), '0123456789') /= 0) then
                         call bad_value('a repeat count r*value needs a whole number r >= 1')
                         cycle
                     end if

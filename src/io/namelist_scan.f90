@@ -79,7 +79,8 @@ contains
                 g%closed = .true.
                 return
             end if
-            if ((text(i:i) == '&' .or. text(i:i) == '$') .and. matches_word(text, i + 1, 'end')) then
+            if ((text(i:i) == '&' .or. text(i:i) == '$') .and. &
+                matches_word(text, i + 1, 'end')) then
                 g%closed = .true.
                 return
             end if
