@@ -136,22 +136,14 @@ contains
             do
                 ! separators: blanks, new lines, comments, commas (a second comma in a
                 ! row is a null value)
-                do while (i <= len(text))
-                    if (text(i:i) == new_line('a')) then
-                        line = line + 1
-                    else if (text(i:i) == '!') then
-                        call skip_comment(text, i)
-                        cycle
-                    else if (text(i:i) == ',') then
-                        commas_seen = commas_seen + 1
-                        if (commas_seen > 1) call add_token(i, i - 1)
-                    else if (text(i:i) /= ' ' .and. text(i:i) /= achar(9) &
-                             .and. text(i:i) /= achar(13)) then
-                        exit
-                    end if
-                    i = i + 1
-                end do
+                call skip_blanks(text, i, line, commas=.false.)
                 if (i > len(text)) return
+                if (text(i:i) == ',') then
+                    commas_seen = commas_seen + 1
+                    if (commas_seen > 1) call add_token(i, i - 1)
+                    i = i + 1
+                    cycle
+                end if
                 if (text(i:i) == '/' .or. text(i:i) == '&' .or. text(i:i) == '$') return
                 ! a token; is it the next variable's name?
                 start_token = i
