@@ -300,7 +300,7 @@ contains
         effect = 2.0_qp*eps_qp*r*[k_v_over_r2*ds_dr, ds_dr, ds_dr/v]
     end function rounding_effect
 
-    !> The apsidal locus against the periodic-rule apse angle and the sampled arches.
+    !> The apsidal locus against the tabulated apse angle and the sampled arches.
     subroutine locus_tests(model)
         type(inverse_square_model), intent(in) :: model
         real(qp) :: radii(41), theta
@@ -320,7 +320,7 @@ contains
                    'near pi/3 at R = 1e-6')
         do k = 2, size(radii)
             call model%apse_angle(radii(k), theta, status)
-            call check_close(locus%theta(k), theta, 8.0_qp, 'locus = periodic-rule Theta(R,R)')
+            call check_close(locus%theta(k), theta, 8.0_qp, 'locus (Gauss sweep) = tabulated Theta(R,R)')
         end do
         c = sample_complete_arch(model, radii(9), 5)
         call check(c%theta(3) == locus%theta(9) .and. c%s(3) == locus%s(9) .and. &

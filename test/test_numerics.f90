@@ -6,6 +6,8 @@ module test_numerics
                           integrate, integrate_adaptive, even_periodic_rule, &
                           even_periodic_trapezoid
     use roots, only: root_function, newton_bracketed, secant
+    use chebyshev, only: chebyshev_table, chebyshev_points, chebyshev_fit
+    use summation, only: compensated_sum
     use testing, only: check, check_close, section
     implicit none
     private
@@ -137,6 +139,75 @@ contains
         call check_close(x, exp(log(2.0_qp)/3.0_qp), 8.0_qp, 'secant: cube root of 2')
         call secant(f, 1.0_qp, 1.0_qp, 1.0e-30_qp, 0.0_qp, 2.0_qp, 100, x, steps, status)
         call check(status /= status_ok, 'secant rejects equal estimates')
+
+        call chebyshev_tests()
+        call summation_tests()
     end subroutine run_numerics_tests
+
+    !> Piecewise Chebyshev interpolation of 1/(x + 2) on [-1, 1]: values and slopes
+    !! against the closed forms, the noise cut and the truncation to a tolerance.
+    subroutine chebyshev_tests()
+        real(qp) :: points(32, 8), x, value, slope, worst_value, worst_slope
+        type(chebyshev_table) :: table
+        integer :: k
+
+        call section('numerics: piecewise Chebyshev interpolation')
+        points = chebyshev_points(-1.0_qp, 1.0_qp, 8, 32)
+        call check(all(points(:, 1) > -1.0_qp .and. points(:, 1) < -0.75_qp) .and. &
+                   all(points(:, 8) > 0.75_qp .and. points(:, 8) < 1.0_qp), &
+                   'points lie inside their pieces')
+        table = chebyshev_fit(-1.0_qp, 1.0_qp, 1.0_qp/(points + 2.0_qp), 4.0_qp*eps_qp)
+        ! pole at -2: Bernstein radius 9 + sqrt 80 on the first piece (27 terms for 34
+        ! digits), larger on the others
+        call check(all(table%used < 32) .and. all(table%used > 10), &
+                   'noise cut keeps 11-31 of 32 terms per piece')
+        print '(a,8i3)', '   terms per piece', table%used
+        worst_value = 0.0_qp
+        worst_slope = 0.0_qp
+        do k = 0, 400
+            x = -1.0_qp + real(k, qp)/200.0_qp
+            call table%evaluate(x, value, slope)
+            worst_value = max(worst_value, abs(value*(x + 2.0_qp) - 1.0_qp))
+            worst_slope = max(worst_slope, abs(slope + 1.0_qp/(x + 2.0_qp)**2))
+        end do
+        print '(a,2es10.2)', '   worst relative value, absolute slope error in eps', &
+            worst_value/eps_qp, worst_slope/eps_qp
+        ! the interpolant carries the rounding of the values, coefficients and Clenshaw
+        ! sum (a few eps); its derivative carries that noise times at most
+        ! (terms - 1)^2 (2/width) by Markov's inequality
+        call check(worst_value <= 8.0_qp*eps_qp, '1/(x+2): values within 8 eps on 401 points')
+        call check(worst_slope <= 8.0_qp*eps_qp*real(maxval(table%used) - 1, qp)**2*8.0_qp, &
+                   '1/(x+2): slopes within Markov''s bound on 8 eps of noise')
+        call table%evaluate(0.3_qp, value, slope, 1.0e-12_qp)
+        call check(abs(value - 1.0_qp/2.3_qp) <= 1.0e-12_qp .and. &
+                   abs(value - 1.0_qp/2.3_qp) > 1.0e-30_qp, &
+                   'a tolerance of 1e-12 drops terms and keeps the error below it')
+    end subroutine chebyshev_tests
+
+    !> Compensated summation recovers what plain summation rounds away.
+    subroutine summation_tests()
+        type(compensated_sum) :: sum
+        real(qp) :: plain, x
+        integer :: k
+
+        call section('numerics: compensated summation')
+        sum = compensated_sum()
+        call sum%add(1.0_qp)
+        call sum%add(1.0e-40_qp)
+        call sum%add(-1.0_qp)
+        call check(sum%value() == 1.0e-40_qp, '1 + 1e-40 - 1 = 1e-40 exactly')
+        ! 10^5 copies of 0.1: the exact sum is 10^5 x, one rounding away from 1e5*x
+        x = 0.1_qp
+        sum = compensated_sum()
+        plain = 0.0_qp
+        do k = 1, 100000
+            call sum%add(x)
+            plain = plain + x
+        end do
+        call check(abs(sum%value() - 1.0e5_qp*x) <= spacing(1.0e4_qp), &
+                   'sum of 1e5 copies of 0.1 within one rounding')
+        call check(abs(plain - 1.0e5_qp*x) > 8.0_qp*spacing(1.0e4_qp), &
+                   'the plain sum is off by more (the test can fail)')
+    end subroutine summation_tests
 
 end module test_numerics

@@ -89,7 +89,9 @@ contains
             call legendre(rule%n, x, p, dp)
             rule%node(rule%n + 1 - i) = x
             rule%node(i) = -x
-            rule%weight(i) = 2.0_qp/((1.0_qp - x*x)*dp*dp)
+            ! 1 - x^2 as (1 - x)(1 + x): exact factors, where 1 - x*x would lose the digits
+            ! of the nodes next to +-1 (whose weights it would bias)
+            rule%weight(i) = 2.0_qp/(((1.0_qp - x)*(1.0_qp + x))*dp*dp)
             rule%weight(rule%n + 1 - i) = rule%weight(i)
         end do
     end function gauss_legendre
@@ -112,7 +114,7 @@ contains
             p = 1.0_qp
             dp = 0.0_qp
         else
-            dp = real(n, qp)*(x*p - p_previous)/(x*x - 1.0_qp)
+            dp = real(n, qp)*(x*p - p_previous)/((x - 1.0_qp)*(x + 1.0_qp))
         end if
     end subroutine legendre
 

@@ -21,8 +21,14 @@
 !!
 !! The lambda integrals are taken in trig-free half-angle variables: tau = tan(lambda/2)
 !! on [0, L] (from the apse) and eta = tan((pi/2 - lambda)/2) on [L, pi/2] (from A), so
-!! c and s are rational in the node; one sqrt and two divisions per node. The full
-!! half-arch Theta(R,R) (eq. 66) is an even periodic integral in 2 lambda: trapezoid rule.
+!! c and s are rational in the node; one sqrt and two divisions per node.
+!!
+!! The whole half-arch (lambda in [0, pi/2]: Theta(R,R), eq. 66, and the S and T
+!! corrections) depends on R alone. Divided by 1-R (Theta, S) or sqrt(1-R) (T) these are
+!! analytic on a neighbourhood of [0, 1]: the nearest singularity is at R = 3/2, where q
+!! vanishes at lambda = 0 (another at R = -3, where q's zeros in cos^2 lambda meet). They
+!! are tabulated once, as piecewise Chebyshev series, when the model is built; an
+!! evaluation then costs a Clenshaw sum of at most ~26 terms instead of a quadrature.
 !! Second half-arch (eq. 29): F = 2 F(R,R) - F(r,R) = F(R,R) + int_0^L.
 module inverse_square
     use brachistochrone_kinds, only: qp, pi, eps_qp
@@ -30,8 +36,9 @@ module inverse_square
                                       status_not_finite
     use closed_forms, only: radial_time
     use fast_math, only: inverse_sqrt
-    use quadrature, only: gauss_legendre_rule, gauss_legendre, even_periodic_rule, &
-                          even_periodic_trapezoid
+    use chebyshev, only: chebyshev_table, chebyshev_points, chebyshev_fit
+    use summation, only: compensated_sum
+    use quadrature, only: gauss_legendre_rule, gauss_legendre
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     use, intrinsic :: iso_fortran_env, only: real64
     implicit none
@@ -55,11 +62,10 @@ module inverse_square
     !> Digits aimed at by the node choice: fine (with a margin over 34) and coarse.
     real(qp), parameter :: fine_digits = 36.0_qp, coarse_digits = 17.0_qp, &
                            rough_digits = 9.0_qp
-    !> Most intervals on [0, pi] of the periodic rule: relative error 2e-38 at R -> 0 (the
-    !! worst case: the singularities then lie closest to the real axis).
-    integer, parameter :: max_intervals = 26
-    !> Fewest intervals of the periodic rule.
-    integer, parameter :: min_intervals = 4
+    !> Pieces of [0, 1] and points per piece of the whole-half-arch tables: the slowest
+    !! piece, next to R = 1 (Bernstein radius 18 from the singularity at 3/2), reaches
+    !! the rounding level at 26 terms.
+    integer, parameter :: table_pieces = 8, table_points = 32
 
     !> One Gauss-Legendre rule with the node data the sweeps use.
     type :: gauss_nodes
@@ -68,23 +74,17 @@ module inverse_square
         real(qp), allocatable :: double_weight(:) !! 2 w_k for the weights w_k
     end type gauss_nodes
 
-    !> Trapezoid rule on the whole half-arch, tabulated.
-    type :: periodic_nodes
-        integer :: m = 0                          !! intervals on [0, pi] in 2 lambda
-        real(qp), allocatable :: cos2(:)          !! cos^2(lambda_k), k = 0..m
-        real(qp), allocatable :: sin2(:)          !! sin^2(lambda_k)
-        real(qp), allocatable :: weighted_cos2(:) !! trapezoid weight times cos2
-    end type periodic_nodes
-
     !> The inverse-square evaluator: quadrature rules built once, then used read-only
     !! (so one model can be shared by all threads).
     type :: inverse_square_model
         !> Gauss rules with n = 2j nodes in element j (j = min_nodes/2 .. max_nodes/2)
         type(gauss_nodes) :: gauss(max_nodes/2)
-        !> Trapezoid rules with m = 2j intervals in element j (j = min_intervals/2 ..)
-        type(periodic_nodes) :: periodic(max_intervals/2)
         !> d Theta(R,R)/dR at R = 0 (about -0.8096): the slope of the apse angle there
         real(qp) :: apse_slope_at_zero = 0.0_qp
+        !> The whole half-arch as functions of R in [0, 1]: Theta(R,R)/(1-R), and the
+        !! S and T corrections over lambda in [0, pi/2] without their factors (1-R) and
+        !! sqrt(1-R) (see `whole_half_arch`)
+        type(chebyshev_table) :: whole(3)
     contains
         procedure :: half_arch      !! Theta, S, T on the first or second half-arch
         procedure :: theta          !! Theta(r,R), eq. (55)
@@ -104,6 +104,10 @@ module inverse_square
         real(qp) :: angle_dr_smooth = 0.0_qp
         real(qp) :: boundary = 0.0_qp      !! coefficient of the 1/sqrt(r-R) term, >= 0
         real(qp) :: boundary_sign = 1.0_qp !! +1 on the first half-arch, -1 on the second
+        !> d(arclength)/dR = arclength_dr_smooth + boundary_sign * arclength_boundary
+        !! / sqrt(r - R) (with both the derivative and arclength requested)
+        real(qp) :: arclength_dr_smooth = 0.0_qp
+        real(qp) :: arclength_boundary = 0.0_qp  !! its 1/sqrt(r - R) coefficient, >= 0
     end type arch_values
 
 contains
@@ -119,11 +123,12 @@ contains
         end select
     end function level_digits
 
-    !> Build the quadrature rules (the only costly step; do it once and share the model).
+    !> Build the quadrature rules and the whole-half-arch tables (the only costly step,
+    !! about 40 ms: do it once and share the model).
     function new_inverse_square_model() result(model)
         type(inverse_square_model) :: model
         type(gauss_legendre_rule) :: rule
-        real(qp) :: slope(2)
+        real(qp) :: angle, slope
         integer :: j
         do j = min_nodes/2, max_nodes/2
             rule = gauss_legendre(2*j)
@@ -131,31 +136,69 @@ contains
             model%gauss(j)%offset = 0.5_qp*(1.0_qp + rule%node)
             model%gauss(j)%double_weight = 2.0_qp*rule%weight
         end do
-        do j = min_intervals/2, max_intervals/2
-            model%periodic(j) = new_periodic_nodes(2*j)
-        end do
-        ! d Theta(R,R)/dR at R -> 0 (Theta(R,R) = pi/3 - 0.8095502 R + ...): from the
-        ! differentiated integrand (69) at R = 1e-40, where O(R) terms are below rounding
-        call periodic_sweep(model%periodic(max_intervals/2), 1.0e-40_qp, 1.0_qp, .true., &
-                            slope)
-        model%apse_slope_at_zero = slope(2)
+        call build_whole_tables(model)
+        ! d Theta(R,R)/dR at R = 0 (Theta(R,R) = pi/3 - 0.8095502 R + ...), with
+        ! Theta(R,R) = (1 - R) A(R): A'(0) - A(0)
+        call model%whole(1)%evaluate(0.0_qp, angle, slope)
+        model%apse_slope_at_zero = slope - angle
     end function new_inverse_square_model
 
-    pure function new_periodic_nodes(intervals) result(nodes)
-        integer, intent(in) :: intervals
-        type(periodic_nodes) :: nodes
-        type(even_periodic_rule) :: rule
-        integer :: k
-        rule = even_periodic_trapezoid(intervals)
-        nodes%m = rule%m
-        allocate (nodes%cos2(0:rule%m), nodes%sin2(0:rule%m), nodes%weighted_cos2(0:rule%m))
-        do k = 0, rule%m
-            ! lambda_k = angle_k / 2 covers [0, pi/2]
-            nodes%cos2(k) = cos(0.5_qp*rule%angle(k))**2
-            nodes%sin2(k) = sin(0.5_qp*rule%angle(k))**2
-            nodes%weighted_cos2(k) = rule%weight(k)*nodes%cos2(k)
+    !> Tabulate the whole half-arch integrals in R (`whole_half_arch`).
+    pure subroutine build_whole_tables(model)
+        type(inverse_square_model), intent(inout) :: model
+        real(qp) :: points(table_points, table_pieces)
+        real(qp) :: values(table_points, table_pieces, 3)
+        integer :: k, piece
+        points = chebyshev_points(0.0_qp, 1.0_qp, table_pieces, table_points)
+        do piece = 1, table_pieces
+            do k = 1, table_points
+                values(k, piece, :) = whole_half_arch(model, points(k, piece))
+            end do
         end do
-    end function new_periodic_nodes
+        ! the values are about 1 with rounding errors of about eps: coefficients below
+        ! 4 eps are noise
+        do k = 1, 3
+            model%whole(k) = chebyshev_fit(0.0_qp, 1.0_qp, values(:, :, k), 4.0_qp*eps_qp)
+        end do
+    end subroutine build_whole_tables
+
+    !> The integrals over the whole half-arch lambda in [0, pi/2]:
+    !! [int 2 c^2/Q, int 2 c^3/(Q D), int 2 c^2/(Q D)], that is Theta(R,R)/(1-R) and the
+    !! S and T corrections without their factors 1-R and sqrt(1-R). For the tables, so
+    !! accuracy first: two panels split at pi/4, each far inside the reach of the
+    !! 48-point rule, summed with compensation.
+    pure function whole_half_arch(model, big_r) result(values)
+        type(inverse_square_model), intent(in) :: model
+        real(qp), intent(in) :: big_r
+        real(qp) :: values(3)
+        type(compensated_sum) :: sums(3)
+        real(qp) :: one_minus_big_r, upper, v, v2, jacobian, c, s, c2, z, q, root_q, term
+        integer :: k, panel
+        one_minus_big_r = 1.0_qp - big_r
+        upper = tan(0.125_qp*pi)
+        associate (rule => model%gauss(max_nodes/2))
+        do panel = 1, 2
+            do k = 1, rule%n
+                v = upper*rule%offset(k)
+                v2 = v*v
+                jacobian = 1.0_qp/(1.0_qp + v2)
+                ! panel 1 from the apse (v = tau), panel 2 from A (v = eta)
+                c = merge(1.0_qp - v2, v + v, panel == 1)*jacobian
+                s = merge(v + v, 1.0_qp - v2, panel == 1)*jacobian
+                c2 = c*c
+                z = big_r + one_minus_big_r*c2
+                q = z*(z + one_minus_big_r) + one_minus_big_r
+                root_q = sqrt(q)
+                term = rule%double_weight(k)*jacobian*c2/root_q
+                call sums(1)%add(term)
+                term = term/(1.0_qp + s*root_q)
+                call sums(2)%add(term*c)
+                call sums(3)%add(term)
+            end do
+        end do
+        end associate
+        values = upper*sums%value()
+    end function whole_half_arch
 
     !> cos(2 lambda_s) at the zeros of q in the lambda plane (double precision):
     !! w = 2 (z_s - R)/(1 - R) - 1 with z_s = (-(1-R) + i sqrt((1-R)(3+R)))/2.
@@ -211,23 +254,6 @@ contains
         end function bernstein
     end function nodes_needed
 
-    !> Intervals on [0, pi] the periodic rule needs for `digits` digits of Theta(R,R).
-    !!
-    !! In the angle 2 lambda the integrand is 2 pi-periodic and analytic in the strip
-    !! |Im| < a, a = Im acos(w) (the zeros of q); the trapezoid rule with 2m points per
-    !! period then errs by about exp(-2 m a) (Trefethen & Weideman 2014, thm 3.2).
-    !! At R -> 0, a = 1.66 and m = 26 for 38 digits; a grows as R -> 1.
-    pure function intervals_needed(big_r, digits) result(m)
-        real(qp), intent(in) :: big_r, digits
-        integer :: m
-        real(real64) :: a
-        m = min_intervals
-        if (big_r >= 1.0_qp) return
-        a = abs(aimag(acos(singular_cosine(big_r))))
-        m = ceiling(real(digits, real64)*log(10.0_real64)/(2.0_real64*a)) + 1
-        m = min(max_intervals, max(min_intervals, m + mod(m, 2)))
-    end function intervals_needed
-
     !> The kernel: angle (and optionally arclength, time, d(angle)/dR) at radius r on the
     !! first (`second = .false.`) or second half-arch of the brachistochrone with apse R.
     !! The caller passes d = r - R separately so that endpoints near the apse keep full
@@ -256,8 +282,9 @@ contains
         logical, intent(in) :: second, want_derivative, want_length_time
         real(qp), intent(in) :: r, big_r, d
         type(arch_values) :: values
-        real(qp) :: one_minus_r, one_minus_big_r, cos_l, sin_l, z_l, q_l
-        real(qp) :: from_start(4), from_apse(4), periodic(2), correction_scale, digits
+        real(qp) :: one_minus_r, one_minus_big_r, cos_l, sin_l, z_l, q_l, length_ratio
+        real(qp) :: part(5), whole(3), whole_slope(3), correction_scale, digits
+        real(qp) :: sqrt_one_minus_big_r
 
         digits = level_digits(level)
         one_minus_r = 1.0_qp - r
@@ -265,27 +292,21 @@ contains
         cos_l = sqrt(big_r*one_minus_r/(r*one_minus_big_r))
         sin_l = sqrt(d/(r*one_minus_big_r))
 
-        ! lambda in [L, pi/2]: from A to the point (on the second half-arch only s and t
-        ! need this part)
-        if (.not. second .or. want_length_time) then
-            call sweep(model, digits, big_r, one_minus_big_r, cos_l/(1.0_qp + sin_l), &
-                       .false., want_derivative .and. .not. second, want_length_time, &
-                       from_start)
-        else
-            from_start = 0.0_qp
-        end if
         if (second) then
-            ! lambda in [0, L]: from the apse back out to the point
+            ! whole half-arch from the tables, plus lambda in [0, L] from the apse back out
+            call whole_half_arch_table(model, level, big_r, want_length_time, whole, &
+                                       whole_slope)
             call sweep(model, digits, big_r, one_minus_big_r, sin_l/(1.0_qp + cos_l), &
-                       .true., want_derivative, want_length_time, from_apse)
-            call periodic_sweep(model%periodic(intervals_needed(big_r, digits)/2), big_r, &
-                                one_minus_big_r, want_derivative, periodic)
-            values%angle = periodic(1) + from_apse(1)
-            values%angle_dr_smooth = periodic(2) + from_apse(2)
+                       .true., want_derivative, want_length_time, part)
+            values%angle = one_minus_big_r*whole(1) + part(1)
+            values%angle_dr_smooth = one_minus_big_r*whole_slope(1) - whole(1) + part(2)
             values%boundary_sign = -1.0_qp
         else
-            values%angle = from_start(1)
-            values%angle_dr_smooth = from_start(2)
+            ! lambda in [L, pi/2]: from A to the point
+            call sweep(model, digits, big_r, one_minus_big_r, cos_l/(1.0_qp + sin_l), &
+                       .false., want_derivative, want_length_time, part)
+            values%angle = part(1)
+            values%angle_dr_smooth = part(2)
             values%boundary_sign = 1.0_qp
         end if
 
@@ -299,27 +320,70 @@ contains
         if (want_length_time) then
             correction_scale = big_r*sqrt(big_r)/sqrt(2.0_qp)
             if (second) then
+                ! int_L^(pi/2) + 2 int_0^L = whole + int_0^L
+                sqrt_one_minus_big_r = sqrt(one_minus_big_r)
                 values%arclength = (one_minus_big_r + d) &
-                                   + big_r*(from_start(3) + 2.0_qp*from_apse(3))
+                                   + big_r*(one_minus_big_r*whole(2) + part(3))
                 values%time = 2.0_qp*radial_time(big_r, one_minus_big_r) - radial_time(r) &
-                              + correction_scale*(from_start(4) + 2.0_qp*from_apse(4))
+                              + correction_scale*(sqrt_one_minus_big_r*whole(3) + part(4))
             else
-                values%arclength = one_minus_r + big_r*from_start(3)
-                values%time = radial_time(r) + correction_scale*from_start(4)
+                values%arclength = one_minus_r + big_r*part(3)
+                values%time = radial_time(r) + correction_scale*part(4)
+            end if
+            if (want_derivative) then
+                ! dS/dR: S = (1 - r) + R I on the first half-arch, (1 + r - 2R) + R I on
+                ! the second; the moving limit adds R G(L) |L'(R)|, G the S integrand,
+                ! G(L)/Theta integrand(L) = cos L/(1 + sin L Q(L))
+                length_ratio = cos_l/(1.0_qp + sin_l*sqrt(q_l))
+                values%arclength_boundary = big_r*length_ratio*values%boundary
+                if (second) then
+                    values%arclength_dr_smooth = -2.0_qp &
+                        + (one_minus_big_r*whole(2) + part(3)) &
+                        + big_r*(one_minus_big_r*whole_slope(2) - whole(2) + part(5))
+                else
+                    values%arclength_dr_smooth = part(3) + big_r*part(5)
+                end if
             end if
         end if
     end function arch_with_rules
 
-    !> Gauss-Legendre sweep over v in [0, upper] of the four integrands
-    !! (Theta, dTheta/dR, S correction, T correction); v = tau from the apse or
-    !! v = eta from the start, both with d lambda = 2 dv/(1 + v^2).
+    !> The whole-half-arch integrals at R from the tables, to the level's accuracy:
+    !! whole = [Theta(R,R)/(1-R), S and T corrections without 1-R, sqrt(1-R)] and their
+    !! R-derivatives (the last two only when `want_length_time`).
+    pure subroutine whole_half_arch_table(model, level, big_r, want_length_time, whole, &
+                                          slope)
+        type(inverse_square_model), intent(in) :: model
+        integer, intent(in) :: level
+        real(qp), intent(in) :: big_r
+        logical, intent(in) :: want_length_time
+        real(qp), intent(out) :: whole(3), slope(3)
+        real(qp) :: tolerance
+        integer :: k
+        whole = 0.0_qp
+        slope = 0.0_qp
+        ! the tables' values are about 1: an absolute tolerance a tenth of the level's
+        tolerance = 0.1_qp*10.0_qp**(-level_digits(level))
+        do k = 1, merge(3, 1, want_length_time)
+            if (level == level_fine) then
+                call model%whole(k)%evaluate(big_r, whole(k), slope(k))
+            else
+                call model%whole(k)%evaluate(big_r, whole(k), slope(k), tolerance)
+            end if
+        end do
+    end subroutine whole_half_arch_table
+
+    !> Gauss-Legendre sweep over v in [0, upper] of the integrands
+    !! (Theta, dTheta/dR, S correction, T correction, d(S correction)/dR);
+    !! v = tau from the apse or v = eta from the start, both with
+    !! d lambda = 2 dv/(1 + v^2). The last entry is filled only with both flags set.
     pure subroutine sweep(model, digits, big_r, one_minus_big_r, upper, from_apse, &
                           want_derivative, want_length_time, sums)
         type(inverse_square_model), intent(in) :: model
         real(qp), intent(in) :: digits, big_r, one_minus_big_r, upper
         logical, intent(in) :: from_apse, want_derivative, want_length_time
-        real(qp), intent(out) :: sums(4)
+        real(qp), intent(out) :: sums(5)
         real(qp) :: v, v2, jacobian, c, s, c2, z, q, theta_term, lengths, inverse
+        real(qp) :: s_big_q, inverse_d, length_term, two_z_plus
         integer :: k, j
 
         sums = 0.0_qp
@@ -342,56 +406,39 @@ contains
             end if
             c2 = c*c
             z = big_r + one_minus_big_r*c2
+            two_z_plus = z + z + one_minus_big_r
             q = z*(z + one_minus_big_r) + one_minus_big_r
             inverse = inverse_sqrt(q)
             theta_term = rule%double_weight(k)*jacobian*c2*inverse
             sums(1) = sums(1) + theta_term
             if (want_derivative) then
                 sums(2) = sums(2) - theta_term*(inverse*inverse)*(z*(z + z) + &
-                          one_minus_big_r*(z + 1.0_qp + (z + z + one_minus_big_r)*(s*s)))
+                          one_minus_big_r*(z + 1.0_qp + two_z_plus*(s*s)))
             end if
             if (want_length_time) then
-                lengths = theta_term/(1.0_qp + s*(q*inverse))
-                sums(3) = sums(3) + lengths*c
+                s_big_q = s*(q*inverse)
+                inverse_d = 1.0_qp/(1.0_qp + s_big_q)
+                lengths = theta_term*inverse_d
+                length_term = lengths*c
+                sums(3) = sums(3) + length_term
                 sums(4) = sums(4) + lengths
+                if (want_derivative) then
+                    ! dq/dR = (2z + 1 - R) s^2 - (1 + z); d(1/(QD))/dR = -(1/(QD)) dq/dR
+                    ! (D + sQ)/(2 Q^2 D)
+                    sums(5) = sums(5) + length_term*(two_z_plus*(s*s) - (1.0_qp + z)) &
+                              *(1.0_qp + s_big_q + s_big_q)*(inverse*inverse)*inverse_d
+                end if
             end if
         end do
         end associate
-        ! common factors: Theta 2(1-R) c^2/Q; S 2(1-R) c^3/(QD); T 2 sqrt(1-R) c^2/(QD)
+        ! common factors: Theta 2(1-R) c^2/Q; S 2(1-R) c^3/(QD); T 2 sqrt(1-R) c^2/(QD);
+        ! d/dR of the S integrand: -2 c^3/(QD) - (1-R) c^3 q_R (D + sQ)/(Q^3 D^2)
         sums(1) = sums(1)*upper*one_minus_big_r
         sums(2) = sums(2)*0.5_qp*upper
+        sums(5) = -sums(3)*upper - 0.5_qp*one_minus_big_r*sums(5)*upper
         sums(3) = sums(3)*upper*one_minus_big_r
         sums(4) = sums(4)*upper*sqrt(one_minus_big_r)
     end subroutine sweep
-
-    !> Trapezoid sweep of Theta(R,R) and its R-derivative over the whole half-arch
-    !! lambda in [0, pi/2] (eq. 66-69): an even, pi-periodic integrand in lambda.
-    pure subroutine periodic_sweep(rules, big_r, one_minus_big_r, want_derivative, sums)
-        type(periodic_nodes), intent(in) :: rules
-        real(qp), intent(in) :: big_r, one_minus_big_r
-        logical, intent(in) :: want_derivative
-        real(qp), intent(out) :: sums(2)
-        real(qp) :: z, q, c2, inverse, theta_term
-        integer :: k
-
-        sums = 0.0_qp
-        do k = 0, rules%m
-            c2 = rules%cos2(k)
-            z = big_r + one_minus_big_r*c2
-            q = z*(z + one_minus_big_r) + one_minus_big_r
-            inverse = inverse_sqrt(q)
-            theta_term = rules%weighted_cos2(k)*inverse
-            sums(1) = sums(1) + theta_term
-            if (want_derivative) then
-                sums(2) = sums(2) - theta_term*(inverse*inverse)*(z*(z + z) &
-                          + one_minus_big_r*(z + 1.0_qp + (z + z + one_minus_big_r) &
-                          *rules%sin2(k)))
-            end if
-        end do
-        ! int_0^{pi/2} f d lambda = (1/2) int_0^pi f(angle/2) d angle; Theta factor 2(1-R)
-        sums(1) = sums(1)*one_minus_big_r
-        sums(2) = 0.5_qp*sums(2)
-    end subroutine periodic_sweep
 
     !> Check 0 < R < 1, R <= r <= 1, all finite.
     pure function check_radii(r, big_r) result(status)
@@ -467,23 +514,22 @@ contains
         call self%half_arch(r, big_r, .false., angle, length, value, status)
     end subroutine travel_time
 
-    !> Theta(R,R), eq. (66): the apse angle, by the periodic trapezoid rule.
+    !> Theta(R,R), eq. (66): the apse angle, from its table (`whole_half_arch`).
     !! Strictly decreasing from pi/3 (R -> 0) to 0 (R -> 1); R = 1 gives 0.
     pure subroutine apse_angle(self, big_r, value, status)
         class(inverse_square_model), intent(in) :: self
         real(qp), intent(in) :: big_r  !! apse radius, 0 < R <= 1
         real(qp), intent(out) :: value !! Theta(R,R); 0 on error
         integer, intent(out) :: status !! status_ok or the reason
-        real(qp) :: sums(2)
+        real(qp) :: scaled, slope
         value = 0.0_qp
         if (.not. ieee_is_finite(big_r)) then
             status = status_not_finite
         else if (big_r <= 0.0_qp .or. big_r > 1.0_qp) then
             status = status_invalid_argument
         else
-            call periodic_sweep(self%periodic(intervals_needed(big_r, fine_digits)/2), &
-                                big_r, 1.0_qp - big_r, .false., sums)
-            value = sums(1)
+            call self%whole(1)%evaluate(big_r, scaled, slope)
+            value = (1.0_qp - big_r)*scaled
             status = status_ok
         end if
     end subroutine apse_angle

@@ -83,7 +83,6 @@ contains
         real(qp), intent(out) :: apse_angle_rho
         logical, intent(out) :: done
         integer :: status
-        type(arch_values) :: values
 
         solution%rho = rho
         solution%psi = psi
@@ -112,15 +111,7 @@ contains
             solution%has_time = .true.
         else
             done = .false.
-            if (rho < 1.0_qp) then
-                ! Theta(rho,rho) on 17-digit rules; on full ones where psi is that close
-                values = model%evaluate_arch(level_coarse, .true., rho, rho, 0.0_qp, .false., &
-                                             .false.)
-                apse_angle_rho = values%angle
-                if (abs(psi - apse_angle_rho) < 1.0e-12_qp*psi) then
-                    call model%apse_angle(rho, apse_angle_rho, status)
-                end if
-            end if
+            if (rho < 1.0_qp) call model%apse_angle(rho, apse_angle_rho, status)
             if (rho == 1.0_qp) then
                 solution%arch = arch_complete
             else if (psi <= apse_angle_rho) then

@@ -1,0 +1,161 @@
+!> Piecewise Chebyshev interpolation of a smooth function of one variable.
+!!
+!! The interval [lower, upper] is split into equal pieces; on each the function is
+!! interpolated at the n Chebyshev points of the first kind, t_k = cos(pi (k + 1/2)/n),
+!! and stored as the coefficients of p(t) = sum_j c_j T_j(t). For a function analytic
+!! inside the Bernstein ellipse of radius r around a piece, c_j falls like r^(-j), so a
+!! few dozen terms reach quad precision. Evaluation is Clenshaw's recurrence, with the
+!! derivative from the differentiated recurrence, and may drop the tail of each piece
+!! down to a requested absolute tolerance (fewer terms for a root finder's first steps).
+!!
+!! Building is in two steps so that the caller can evaluate several functions at the
+!! same points in one pass: `chebyshev_points` gives the points, `chebyshev_fit` turns
+!! the values there into a `chebyshev_table`.
+module chebyshev
+    use brachistochrone_kinds, only: qp, pi
+    use summation, only: compensated_sum
+    implicit none
+    private
+
+    public :: chebyshev_table, chebyshev_points, chebyshev_fit
+
+    !> A piecewise Chebyshev interpolant on [lower, upper].
+    type :: chebyshev_table
+        real(qp) :: lower = 0.0_qp   !! left end of the interval
+        real(qp) :: upper = 0.0_qp   !! right end of the interval
+        integer :: pieces = 0        !! number of equal pieces
+        integer :: terms = 0         !! coefficients per piece
+        !> c_j of piece k in coefficient(j, k), j = 0 .. terms-1 (c_0 already halved)
+        real(qp), allocatable :: coefficient(:, :)
+        !> Terms of each piece above the noise of the values (see `chebyshev_fit`)
+        integer, allocatable :: used(:)
+        !> tail(j, k) = sum of |c_i| over i >= j: the error bound of dropping those terms
+        real(qp), allocatable :: tail(:, :)
+    contains
+        procedure :: evaluate     !! value and derivative at x
+        procedure :: terms_for    !! terms needed on a piece for an absolute tolerance
+    end type chebyshev_table
+
+contains
+
+    !> The n Chebyshev points of the first kind on each of `pieces` equal pieces of
+    !! [lower, upper]: x(k, piece), k = 1 .. n, in decreasing order on each piece.
+    pure function chebyshev_points(lower, upper, pieces, n) result(x)
+        real(qp), intent(in) :: lower   !! left end
+        real(qp), intent(in) :: upper   !! right end
+        integer, intent(in) :: pieces   !! number of equal pieces, >= 1
+        integer, intent(in) :: n        !! points per piece, >= 1
+        real(qp) :: x(n, pieces)
+        real(qp) :: width, a, t
+        integer :: k, piece
+        width = (upper - lower)/real(pieces, qp)
+        do piece = 1, pieces
+            a = lower + real(piece - 1, qp)*width
+            do k = 1, n
+                t = cos(pi*(real(k, qp) - 0.5_qp)/real(n, qp))
+                x(k, piece) = a + 0.5_qp*width*(1.0_qp + t)
+            end do
+        end do
+    end function chebyshev_points
+
+    !> The interpolant through values(k, piece) at chebyshev_points(lower, upper, pieces, n).
+    !!
+    !! Values carry rounding errors, and so do the coefficients, at about that level:
+    !! once the true coefficients have decayed below it, the rest is noise. Each piece
+    !! keeps its terms up to the last one above `noise` times its largest coefficient
+    !! (default: all terms). Dropping the noise changes the interpolant by about the
+    !! noise of the values, and makes it cheaper where the function is smoother.
+    pure function chebyshev_fit(lower, upper, values, noise) result(table)
+        real(qp), intent(in) :: lower          !! left end (as given to chebyshev_points)
+        real(qp), intent(in) :: upper          !! right end
+        real(qp), intent(in) :: values(:, :)   !! f at the points, (n, pieces)
+        real(qp), intent(in), optional :: noise  !! relative noise level of the values
+        type(chebyshev_table) :: table
+        real(qp), allocatable :: cosines(:)
+        type(compensated_sum) :: sum
+        integer :: n, j, k, piece
+        n = size(values, 1)
+        table%lower = lower
+        table%upper = upper
+        table%pieces = size(values, 2)
+        table%terms = n
+        allocate (table%coefficient(0:n - 1, table%pieces), table%tail(0:n, table%pieces), &
+                  table%used(table%pieces))
+        ! cos(pi j (k - 1/2)/n) = cos(pi m/(2n)) with m = j (2k - 1) mod 4n
+        allocate (cosines(0:4*n - 1))
+        do j = 0, 4*n - 1
+            cosines(j) = cos(pi*real(j, qp)/real(2*n, qp))
+        end do
+        do piece = 1, table%pieces
+            do j = 0, n - 1
+                sum = compensated_sum()
+                do k = 1, n
+                    call sum%add(values(k, piece)*cosines(mod(j*(2*k - 1), 4*n)))
+                end do
+                table%coefficient(j, piece) = 2.0_qp*sum%value()/real(n, qp)
+            end do
+            table%coefficient(0, piece) = 0.5_qp*table%coefficient(0, piece)
+            table%used(piece) = n
+            if (present(noise)) then
+                associate (c => table%coefficient(:, piece))
+                table%used(piece) = max(1, findloc(abs(c) > noise*maxval(abs(c)), .true., &
+                                                   dim=1, back=.true.))
+                end associate
+            end if
+            table%coefficient(table%used(piece):, piece) = 0.0_qp
+            table%tail(n, piece) = 0.0_qp
+            do j = n - 1, 0, -1
+                table%tail(j, piece) = table%tail(j + 1, piece) &
+                                       + abs(table%coefficient(j, piece))
+            end do
+        end do
+    end function chebyshev_fit
+
+    !> Terms of piece `piece` needed so that the dropped ones sum to at most `tolerance`.
+    pure function terms_for(self, piece, tolerance) result(terms)
+        class(chebyshev_table), intent(in) :: self
+        integer, intent(in) :: piece         !! the piece, 1 .. pieces
+        real(qp), intent(in) :: tolerance    !! absolute tolerance
+        integer :: terms
+        terms = self%used(piece)
+        do while (terms > 1)
+            if (self%tail(terms - 1, piece) > tolerance) exit
+            terms = terms - 1
+        end do
+    end function terms_for
+
+    !> Value and derivative of the interpolant at x (lower <= x <= upper; points outside
+    !! are evaluated on the end pieces). With `tolerance`, each piece's tail is dropped
+    !! down to that absolute error.
+    pure subroutine evaluate(self, x, value, slope, tolerance)
+        class(chebyshev_table), intent(in) :: self
+        real(qp), intent(in) :: x                    !! the point
+        real(qp), intent(out) :: value               !! p(x)
+        real(qp), intent(out) :: slope               !! p'(x)
+        real(qp), intent(in), optional :: tolerance  !! absolute tolerance (default: all)
+        real(qp) :: width, position, t, two_t, b1, b2, b0, d1, d2, d0
+        integer :: piece, terms, j
+        width = (self%upper - self%lower)/real(self%pieces, qp)
+        position = (x - self%lower)/width
+        piece = min(self%pieces, max(1, int(position) + 1))
+        t = 2.0_qp*(position - real(piece - 1, qp)) - 1.0_qp
+        terms = self%used(piece)
+        if (present(tolerance)) terms = self%terms_for(piece, tolerance)
+        two_t = t + t
+        b1 = 0.0_qp
+        b2 = 0.0_qp
+        d1 = 0.0_qp
+        d2 = 0.0_qp
+        do j = terms - 1, 1, -1
+            d0 = (b1 + b1) + two_t*d1 - d2
+            b0 = self%coefficient(j, piece) + two_t*b1 - b2
+            d2 = d1
+            d1 = d0
+            b2 = b1
+            b1 = b0
+        end do
+        value = self%coefficient(0, piece) + t*b1 - b2
+        slope = (b1 + t*d1 - d2)*(2.0_qp/width)
+    end subroutine evaluate
+
+end module chebyshev
