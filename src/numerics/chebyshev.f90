@@ -2,11 +2,17 @@
 !!
 !! The interval [lower, upper] is split into equal pieces; on each the function is
 !! interpolated at the n Chebyshev points of the first kind, t_k = cos(pi (k + 1/2)/n),
-!! and stored as the coefficients of p(t) = sum_j c_j T_j(t). For a function analytic
-!! inside the Bernstein ellipse of radius r around a piece, c_j falls like r^(-j), so a
-!! few dozen terms reach quad precision. Evaluation is Clenshaw's recurrence, with the
-!! derivative from the differentiated recurrence, and may drop the tail of each piece
-!! down to a requested absolute tolerance (fewer terms for a root finder's first steps).
+!! giving the coefficients of p(t) = sum_j c_j T_j(t). For a function analytic inside
+!! the Bernstein ellipse of radius r around a piece, c_j falls like r^(-j), so a few
+!! dozen terms reach quad precision.
+!!
+!! For evaluation each piece is also stored in powers of t, p(t) = sum_k a_k t^k: Horner's
+!! rule then costs one multiply-add per term (two with the derivative), against
+!! Clenshaw's two multiplies and five additions. The conversion is safe when the pieces
+!! are short against the distance to the nearest singularity (r well above 1 + sqrt 2,
+!! the growth rate of T_j's power coefficients), and then Horner's sum is as accurate
+!! as Clenshaw's, dominated by a_0. Evaluation may drop the tail of each piece down to
+!! a requested absolute tolerance (fewer terms for a root finder's first steps).
 !!
 !! Building is in two steps so that the caller can evaluate several functions at the
 !! same points in one pass: `chebyshev_points` gives the points, `chebyshev_fit` turns
@@ -27,9 +33,11 @@ module chebyshev
         integer :: terms = 0         !! coefficients per piece
         !> c_j of piece k in coefficient(j, k), j = 0 .. terms-1 (c_0 already halved)
         real(qp), allocatable :: coefficient(:, :)
+        !> The same polynomials in powers of t: a_j of piece k in power(j, k)
+        real(qp), allocatable :: power(:, :)
         !> Terms of each piece above the noise of the values (see `chebyshev_fit`)
         integer, allocatable :: used(:)
-        !> tail(j, k) = sum of |c_i| over i >= j: the error bound of dropping those terms
+        !> tail(j, k) = sum of |a_i| over i >= j: the error bound of dropping those terms
         real(qp), allocatable :: tail(:, :)
     contains
         procedure :: evaluate     !! value and derivative at x
@@ -71,7 +79,7 @@ contains
         real(qp), intent(in) :: values(:, :)   !! f at the points, (n, pieces)
         real(qp), intent(in), optional :: noise  !! relative noise level of the values
         type(chebyshev_table) :: table
-        real(qp), allocatable :: cosines(:)
+        real(qp), allocatable :: cosines(:), t_previous(:), t_current(:), t_next(:)
         type(compensated_sum) :: sum
         integer :: n, j, k, piece
         n = size(values, 1)
@@ -80,7 +88,8 @@ contains
         table%pieces = size(values, 2)
         table%terms = n
         allocate (table%coefficient(0:n - 1, table%pieces), table%tail(0:n, table%pieces), &
-                  table%used(table%pieces))
+                  table%used(table%pieces), table%power(0:n - 1, table%pieces))
+        allocate (t_previous(0:n - 1), t_current(0:n - 1), t_next(0:n - 1))
         ! cos(pi j (k - 1/2)/n) = cos(pi m/(2n)) with m = j (2k - 1) mod 4n
         allocate (cosines(0:4*n - 1))
         do j = 0, 4*n - 1
@@ -103,10 +112,28 @@ contains
                 end associate
             end if
             table%coefficient(table%used(piece):, piece) = 0.0_qp
+            ! powers of t: add c_j times the power coefficients of T_j, from
+            ! T_(j+1) = 2t T_j - T_(j-1)
+            t_previous = 0.0_qp
+            t_current = 0.0_qp
+            t_current(0) = 1.0_qp
+            table%power(:, piece) = table%coefficient(0, piece)*t_current
+            do j = 1, table%used(piece) - 1
+                if (j == 1) then
+                    t_next = 0.0_qp
+                    t_next(1) = 1.0_qp
+                else
+                    t_next = -t_previous
+                    t_next(1:) = t_next(1:) + 2.0_qp*t_current(:n - 2)
+                end if
+                t_previous = t_current
+                t_current = t_next
+                table%power(:, piece) = table%power(:, piece) &
+                                        + table%coefficient(j, piece)*t_current
+            end do
             table%tail(n, piece) = 0.0_qp
             do j = n - 1, 0, -1
-                table%tail(j, piece) = table%tail(j + 1, piece) &
-                                       + abs(table%coefficient(j, piece))
+                table%tail(j, piece) = table%tail(j + 1, piece) + abs(table%power(j, piece))
             end do
         end do
     end function chebyshev_fit
@@ -124,16 +151,16 @@ contains
         end do
     end function terms_for
 
-    !> Value and derivative of the interpolant at x (lower <= x <= upper; points outside
-    !! are evaluated on the end pieces). With `tolerance`, each piece's tail is dropped
-    !! down to that absolute error.
+    !> Value (and derivative) of the interpolant at x (lower <= x <= upper; points
+    !! outside are evaluated on the end pieces). With `tolerance`, each piece's tail is
+    !! dropped down to that absolute error.
     pure subroutine evaluate(self, x, value, slope, tolerance)
         class(chebyshev_table), intent(in) :: self
         real(qp), intent(in) :: x                    !! the point
         real(qp), intent(out) :: value               !! p(x)
-        real(qp), intent(out) :: slope               !! p'(x)
+        real(qp), intent(out), optional :: slope     !! p'(x)
         real(qp), intent(in), optional :: tolerance  !! absolute tolerance (default: all)
-        real(qp) :: width, position, t, two_t, b1, b2, b0, d1, d2, d0
+        real(qp) :: width, position, t, derivative
         integer :: piece, terms, j
         width = (self%upper - self%lower)/real(self%pieces, qp)
         position = (x - self%lower)/width
@@ -141,21 +168,19 @@ contains
         t = 2.0_qp*(position - real(piece - 1, qp)) - 1.0_qp
         terms = self%used(piece)
         if (present(tolerance)) terms = self%terms_for(piece, tolerance)
-        two_t = t + t
-        b1 = 0.0_qp
-        b2 = 0.0_qp
-        d1 = 0.0_qp
-        d2 = 0.0_qp
-        do j = terms - 1, 1, -1
-            d0 = (b1 + b1) + two_t*d1 - d2
-            b0 = self%coefficient(j, piece) + two_t*b1 - b2
-            d2 = d1
-            d1 = d0
-            b2 = b1
-            b1 = b0
-        end do
-        value = self%coefficient(0, piece) + t*b1 - b2
-        slope = (b1 + t*d1 - d2)*(2.0_qp/width)
+        value = self%power(terms - 1, piece)
+        if (present(slope)) then
+            derivative = 0.0_qp
+            do j = terms - 2, 0, -1
+                derivative = derivative*t + value
+                value = value*t + self%power(j, piece)
+            end do
+            slope = derivative*(2.0_qp/width)
+        else
+            do j = terms - 2, 0, -1
+                value = value*t + self%power(j, piece)
+            end do
+        end if
     end subroutine evaluate
 
 end module chebyshev
