@@ -65,7 +65,7 @@ module inverse_square
     !> Pieces of [0, 1] and points per piece of the whole-half-arch tables: the slowest
     !! piece, next to R = 1 (Bernstein radius 18 from the singularity at 3/2), reaches
     !! the rounding level at 26 terms.
-    integer, parameter :: table_pieces = 8, table_points = 32
+    integer, parameter :: table_pieces = 16, table_points = 32
 
     !> One Gauss-Legendre rule with the node data the sweeps use.
     type :: gauss_nodes
@@ -284,7 +284,8 @@ contains
         type(arch_values) :: values
         real(qp) :: one_minus_r, one_minus_big_r, cos_l, sin_l, z_l, q_l, length_ratio
         real(qp) :: part(5), whole(3), whole_slope(3), correction_scale, digits
-        real(qp) :: sqrt_one_minus_big_r
+        real(qp) :: upper_apse, upper_start, whole_factor, length_integral, time_integral
+        integer :: rule_apse, rule_start
 
         digits = level_digits(level)
         one_minus_r = 1.0_qp - r
@@ -292,23 +293,41 @@ contains
         cos_l = sqrt(big_r*one_minus_r/(r*one_minus_big_r))
         sin_l = sqrt(d/(r*one_minus_big_r))
 
+        ! One Gauss panel, from the apse (lambda in [0, L]) or from A ([L, pi/2]), and on
+        ! the second half-arch the whole-half-arch tables: F = whole_factor * whole + part.
+        ! - First half-arch: int_L^(pi/2). (whole - int_0^L would often be cheaper, but
+        !   cancels: the integrand is largest near the apse.)
+        ! - Second half-arch: whole + int_0^L = 2 whole - int_L^(pi/2), whichever panel
+        !   needs fewer nodes (the result is >= whole: the difference costs one bit).
+        upper_apse = sin_l/(1.0_qp + cos_l)
+        upper_start = cos_l/(1.0_qp + sin_l)
+        rule_start = rule_index(big_r, upper_start, .false., digits, want_length_time)
         if (second) then
-            ! whole half-arch from the tables, plus lambda in [0, L] from the apse back out
             call whole_half_arch_table(model, level, big_r, want_length_time, whole, &
                                        whole_slope)
-            call sweep(model, digits, big_r, one_minus_big_r, sin_l/(1.0_qp + cos_l), &
-                       .true., want_derivative, want_length_time, part)
-            values%angle = one_minus_big_r*whole(1) + part(1)
-            values%angle_dr_smooth = one_minus_big_r*whole_slope(1) - whole(1) + part(2)
+            rule_apse = rule_index(big_r, upper_apse, .true., digits, want_length_time)
+            if (rule_apse <= rule_start) then
+                call sweep(model, rule_apse, big_r, one_minus_big_r, upper_apse, .true., &
+                           want_derivative, want_length_time, part)
+                whole_factor = 1.0_qp
+            else
+                call sweep(model, rule_start, big_r, one_minus_big_r, upper_start, .false., &
+                           want_derivative, want_length_time, part)
+                whole_factor = 2.0_qp
+                part = -part
+            end if
             values%boundary_sign = -1.0_qp
         else
-            ! lambda in [L, pi/2]: from A to the point
-            call sweep(model, digits, big_r, one_minus_big_r, cos_l/(1.0_qp + sin_l), &
-                       .false., want_derivative, want_length_time, part)
-            values%angle = part(1)
-            values%angle_dr_smooth = part(2)
+            call sweep(model, rule_start, big_r, one_minus_big_r, upper_start, .false., &
+                       want_derivative, want_length_time, part)
+            whole_factor = 0.0_qp
+            whole = 0.0_qp
+            whole_slope = 0.0_qp
             values%boundary_sign = 1.0_qp
         end if
+        values%angle = whole_factor*one_minus_big_r*whole(1) + part(1)
+        values%angle_dr_smooth = whole_factor*(one_minus_big_r*whole_slope(1) - whole(1)) &
+                                 + part(2)
 
         if (want_derivative) then
             z_l = big_r/r
@@ -319,16 +338,16 @@ contains
 
         if (want_length_time) then
             correction_scale = big_r*sqrt(big_r)/sqrt(2.0_qp)
+            ! the S and T corrections: I = whole_factor * whole + part as for the angle
+            length_integral = whole_factor*one_minus_big_r*whole(2) + part(3)
+            time_integral = whole_factor*sqrt(one_minus_big_r)*whole(3) + part(4)
             if (second) then
-                ! int_L^(pi/2) + 2 int_0^L = whole + int_0^L
-                sqrt_one_minus_big_r = sqrt(one_minus_big_r)
-                values%arclength = (one_minus_big_r + d) &
-                                   + big_r*(one_minus_big_r*whole(2) + part(3))
+                values%arclength = (one_minus_big_r + d) + big_r*length_integral
                 values%time = 2.0_qp*radial_time(big_r, one_minus_big_r) - radial_time(r) &
-                              + correction_scale*(sqrt_one_minus_big_r*whole(3) + part(4))
+                              + correction_scale*time_integral
             else
-                values%arclength = one_minus_r + big_r*part(3)
-                values%time = radial_time(r) + correction_scale*part(4)
+                values%arclength = one_minus_r + big_r*length_integral
+                values%time = radial_time(r) + correction_scale*time_integral
             end if
             if (want_derivative) then
                 ! dS/dR: S = (1 - r) + R I on the first half-arch, (1 + r - 2R) + R I on
@@ -336,20 +355,16 @@ contains
                 ! G(L)/Theta integrand(L) = cos L/(1 + sin L Q(L))
                 length_ratio = cos_l/(1.0_qp + sin_l*sqrt(q_l))
                 values%arclength_boundary = big_r*length_ratio*values%boundary
-                if (second) then
-                    values%arclength_dr_smooth = -2.0_qp &
-                        + (one_minus_big_r*whole(2) + part(3)) &
-                        + big_r*(one_minus_big_r*whole_slope(2) - whole(2) + part(5))
-                else
-                    values%arclength_dr_smooth = part(3) + big_r*part(5)
-                end if
+                values%arclength_dr_smooth = merge(-2.0_qp, 0.0_qp, second) &
+                    + length_integral + big_r*(whole_factor*(one_minus_big_r*whole_slope(2) &
+                                                             - whole(2)) + part(5))
             end if
         end if
     end function arch_with_rules
 
     !> The whole-half-arch integrals at R from the tables, to the level's accuracy:
     !! whole = [Theta(R,R)/(1-R), S and T corrections without 1-R, sqrt(1-R)] and their
-    !! R-derivatives (the last two only when `want_length_time`).
+    !! R-derivatives of the first two (the second only when `want_length_time`).
     pure subroutine whole_half_arch_table(model, level, big_r, want_length_time, whole, &
                                           slope)
         type(inverse_square_model), intent(in) :: model
@@ -363,35 +378,50 @@ contains
         slope = 0.0_qp
         ! the tables' values are about 1: an absolute tolerance a tenth of the level's
         tolerance = 0.1_qp*10.0_qp**(-level_digits(level))
-        do k = 1, merge(3, 1, want_length_time)
-            if (level == level_fine) then
-                call model%whole(k)%evaluate(big_r, whole(k), slope(k))
-            else
-                call model%whole(k)%evaluate(big_r, whole(k), slope(k), tolerance)
+        ! (the T correction's slope is not needed: see two_point's Hamilton-Jacobi step)
+        if (level == level_fine) then
+            call model%whole(1)%evaluate(big_r, whole(1), slope(1))
+            if (want_length_time) then
+                call model%whole(2)%evaluate(big_r, whole(2), slope(2))
+                call model%whole(3)%evaluate(big_r, whole(3))
             end if
-        end do
+        else
+            call model%whole(1)%evaluate(big_r, whole(1), slope(1), tolerance)
+            if (want_length_time) then
+                call model%whole(2)%evaluate(big_r, whole(2), slope(2), tolerance)
+                call model%whole(3)%evaluate(big_r, whole(3), tolerance=tolerance)
+            end if
+        end if
     end subroutine whole_half_arch_table
+
+    !> The Gauss rule (element of model%gauss) for the panel v in [0, upper].
+    pure function rule_index(big_r, upper, from_apse, digits, want_length_time) result(j)
+        real(qp), intent(in) :: big_r, upper, digits
+        logical, intent(in) :: from_apse, want_length_time
+        integer :: j
+        j = nodes_needed(big_r, upper, from_apse, digits)/2
+        ! s and t converge at the rate Theta does (their extra zeros, of D, lie farther
+        ! out: at tau = -1 as R -> 0); 4 more nodes cover their larger constants
+        if (want_length_time) j = min(max_nodes/2, j + 1)
+    end function rule_index
 
     !> Gauss-Legendre sweep over v in [0, upper] of the integrands
     !! (Theta, dTheta/dR, S correction, T correction, d(S correction)/dR);
     !! v = tau from the apse or v = eta from the start, both with
     !! d lambda = 2 dv/(1 + v^2). The last entry is filled only with both flags set.
-    pure subroutine sweep(model, digits, big_r, one_minus_big_r, upper, from_apse, &
+    pure subroutine sweep(model, j, big_r, one_minus_big_r, upper, from_apse, &
                           want_derivative, want_length_time, sums)
         type(inverse_square_model), intent(in) :: model
-        real(qp), intent(in) :: digits, big_r, one_minus_big_r, upper
+        integer, intent(in) :: j  !! the rule: model%gauss(j), from `rule_index`
+        real(qp), intent(in) :: big_r, one_minus_big_r, upper
         logical, intent(in) :: from_apse, want_derivative, want_length_time
         real(qp), intent(out) :: sums(5)
         real(qp) :: v, v2, jacobian, c, s, c2, z, q, theta_term, lengths, inverse
         real(qp) :: s_big_q, inverse_d, length_term, two_z_plus
-        integer :: k, j
+        integer :: k
 
         sums = 0.0_qp
         if (upper <= 0.0_qp) return
-        j = nodes_needed(big_r, upper, from_apse, digits)/2
-        ! s and t converge at the rate Theta does (their extra zeros, of D, lie farther
-        ! out: at tau = -1 as R -> 0); 4 more nodes cover their larger constants
-        if (want_length_time) j = min(max_nodes/2, j + 1)
         associate (rule => model%gauss(j))
         do k = 1, rule%n
             v = upper*rule%offset(k)

@@ -38,6 +38,9 @@ module two_point
 
     !> Limit on root-finder evaluations per phase.
     integer, parameter :: max_steps = 200
+    !> Relative tolerance of the 17-digit phase: near its noise, so that one
+    !! full-precision Newton step is short enough for `final_step`.
+    real(qp), parameter :: coarse_tolerance = 1.0e-16_qp
 
     !> Unknowns of the default solver.
     integer, parameter :: unknown_u = 1, unknown_r = 2, unknown_log_r = 3
@@ -70,6 +73,8 @@ module two_point
         real(qp) :: psi = 0.0_qp
     contains
         procedure :: evaluate => upsilon_evaluate
+        procedure :: radius_of
+        procedure :: slope_in_unknown
     end type upsilon_function
 
 contains
@@ -122,17 +127,12 @@ contains
         end if
     end subroutine classify
 
-    !> Upsilon - psi and its derivative in the chosen unknown.
-    pure subroutine upsilon_evaluate(self, x, f, df, status)
+    !> R and r - R at the unknown x; `inside` is false outside 0 < R < 1, R <= rho.
+    pure subroutine radius_of(self, x, big_r, d, inside)
         class(upsilon_function), intent(in) :: self
         real(qp), intent(in) :: x
-        real(qp), intent(out) :: f, df
-        integer, intent(out) :: status
-        real(qp) :: big_r, d, slope
-        type(arch_values) :: values
-
-        f = 0.0_qp
-        df = 0.0_qp
+        real(qp), intent(out) :: big_r, d
+        logical, intent(out) :: inside
         select case (self%unknown)
         case (unknown_u)
             d = x*x
@@ -144,34 +144,58 @@ contains
             big_r = x
             d = self%rho - big_r
         end select
-        if (.not. (big_r > 0.0_qp .and. d >= 0.0_qp .and. big_r < 1.0_qp)) then
+        inside = big_r > 0.0_qp .and. d >= 0.0_qp .and. big_r < 1.0_qp
+    end subroutine radius_of
+
+    !> d/dx, in the unknown x, of a quantity whose R-derivative is
+    !! smooth + boundary/sqrt(rho - R) (`boundary` signed). Finite at the apse for u.
+    pure function slope_in_unknown(self, x, big_r, d, smooth, boundary) result(slope)
+        class(upsilon_function), intent(in) :: self
+        real(qp), intent(in) :: x, big_r, d, smooth, boundary
+        real(qp) :: slope
+        if (self%unknown == unknown_u) then
+            ! dR/du = -2u, and u/sqrt(rho - R) = 1
+            slope = -2.0_qp*x*smooth - 2.0_qp*boundary
+        else
+            ! dUpsilon/dR is infinite at the apse (R = rho)
+            if (d > 0.0_qp) then
+                slope = smooth + boundary/sqrt(d)
+            else
+                slope = sign(huge(1.0_qp), boundary)
+            end if
+            if (self%unknown == unknown_log_r) slope = big_r*slope
+        end if
+    end function slope_in_unknown
+
+    !> Upsilon - psi and its derivative in the chosen unknown (log(Upsilon/psi) for
+    !! the unknown log R).
+    pure subroutine upsilon_evaluate(self, x, f, df, status)
+        class(upsilon_function), intent(in) :: self
+        real(qp), intent(in) :: x
+        real(qp), intent(out) :: f, df
+        integer, intent(out) :: status
+        real(qp) :: big_r, d
+        logical :: inside
+        type(arch_values) :: values
+
+        f = 0.0_qp
+        df = 0.0_qp
+        call self%radius_of(x, big_r, d, inside)
+        if (.not. inside) then
             status = status_outside_domain
             return
         end if
         status = status_ok
         values = self%model%evaluate_arch(self%level, self%second, self%rho, big_r, d, &
                                           .true., .false.)
-        select case (self%unknown)
-        case (unknown_u)
-            ! dUpsilon/du = -2u dUpsilon/dR, finite at u = 0
+        df = self%slope_in_unknown(x, big_r, d, values%angle_dr_smooth, &
+                                   values%boundary_sign*values%boundary)
+        if (self%unknown == unknown_log_r) then
+            f = log(values%angle/self%psi)
+            df = df/values%angle
+        else
             f = values%angle - self%psi
-            df = -2.0_qp*x*values%angle_dr_smooth &
-                 - 2.0_qp*values%boundary_sign*values%boundary
-        case default
-            ! dUpsilon/dR is infinite at the apse (R = rho)
-            if (d > 0.0_qp) then
-                slope = values%angle_dr_smooth + values%boundary_sign*values%boundary/sqrt(d)
-            else
-                slope = values%boundary_sign*huge(1.0_qp)
-            end if
-            if (self%unknown == unknown_log_r) then
-                f = log(values%angle/self%psi)
-                df = big_r*slope/values%angle
-            else
-                f = values%angle - self%psi
-                df = slope
-            end if
-        end select
+        end if
     end subroutine upsilon_evaluate
 
     !> Solve the two-point problem for B = (rho, psi) to full quad precision, without
@@ -187,7 +211,7 @@ contains
         real(qp) :: apse_angle_rho, half, f_half, f_end, lo, hi, f_lo, f_hi, x, x0
         real(qp) :: big_r, d, log_lo, theta_half, slope, slope_lo, curvature
         integer :: steps, status, probe
-        logical :: done, low_region
+        logical :: done, low_region, inside
 
         call classify(model, rho, psi, solution, apse_angle_rho, done)
         if (done) return
@@ -258,29 +282,35 @@ contains
                     if (status == status_ok .and. f_lo < 0.0_qp) exit
                     log_lo = log_lo - 4.0_qp
                 end do
-                call newton_bracketed(fun, log_lo, f_lo, hi, 1.0_qp, x0, 1.0e-13_qp, &
-                                      0.0_qp, max_steps, x, steps, status)
+                call newton_bracketed(fun, log_lo, f_lo, hi, 1.0_qp, x0, coarse_tolerance, &
+                                      0.0_qp, max_steps, x, steps, status, curvature, &
+                                      10.0_qp**(-level_digits(level_coarse)))
                 solution%steps = solution%steps + steps
-                ! then R itself at full precision, on the same bracket
+                ! then R itself at full precision, on the same bracket; with f(R) = g(log R)
+                ! the curvature |f''/2f'| = |g'' - g'|/(2 |g'| R) <= (2 |g''/2g'| + 1)/(2R)
                 fun%unknown = unknown_r
                 lo = exp(log_lo)
                 hi = half
                 f_lo = -1.0_qp
                 f_hi = f_half
                 x0 = exp(x)
+                if (curvature > 0.0_qp) curvature = (2.0_qp*curvature + 1.0_qp)/(2.0_qp*x0)
             end if
             if (fun%unknown /= unknown_r .or. fun%second) then
                 ! 17-digit phase, which also measures the curvature of Upsilon - psi:
                 ! the full-precision phase then usually needs one step
                 x = x0
                 fun%level = level_coarse
-                call newton_bracketed(fun, lo, f_lo, hi, f_hi, x, 1.0e-13_qp, 0.0_qp, &
+                call newton_bracketed(fun, lo, f_lo, hi, f_hi, x, coarse_tolerance, 0.0_qp, &
                                       max_steps, x0, steps, status, curvature, &
                                       10.0_qp**(-level_digits(level_coarse)))
                 solution%steps = solution%steps + steps
             end if
             ! full-precision phase
             fun%level = level_fine
+            call final_step(fun, lo, hi, x0, curvature, solution, done)
+            if (done) return
+            ! otherwise iterate on, from the Newton step final_step took when in the bracket
             call newton_bracketed(fun, lo, f_lo, hi, f_hi, x0, 4.0_qp*eps_qp, &
                                   tiny(1.0_qp), max_steps, x, steps, status, curvature)
             solution%steps = solution%steps + steps
@@ -288,16 +318,65 @@ contains
                 solution%status = status
                 return
             end if
-            if (fun%unknown == unknown_u) then
-                d = x*x
-                big_r = rho - d
-            else
-                big_r = x
-                d = rho - big_r
-            end if
+            call fun%radius_of(x, big_r, d, inside)
         end if
         call finish(model, solution, fun%second, big_r, d)
     end function solve_endpoint
+
+    !> The full-precision step, when one suffices: one evaluation at x0 on the full rules,
+    !! with s and t there and the slopes of Upsilon and s. The Newton step dx from x0 is
+    !! accepted when it stays in the bracket, the curvature measured on the 17-digit
+    !! phase certifies it (error about K dx^2 below the tolerance), and it is so short
+    !! (|dx| <= 1e-17 of the bracket) that s is linear over it to far below rounding.
+    !! Then the root and s, t there need no further evaluation:
+    !! - s(x0 + dx) = s(x0) + s'(x0) dx;
+    !! - t by Hamilton-Jacobi: along the extremals from A at fixed rho, dt/dpsi = K, the
+    !!   conserved r^2 dtheta/ds / v = sqrt(R^3/(2(1-R))); so t(x0 + dx) = t(x0) +
+    !!   K(R(x0 + dx/2)) (psi - Upsilon(x0)), exact to O(dx^3).
+    !! Otherwise `done` is false and x0 becomes the Newton step's point if that is in
+    !! the bracket, for the caller to iterate on.
+    pure subroutine final_step(fun, lo, hi, x0, curvature, solution, done)
+        type(upsilon_function), intent(in) :: fun
+        real(qp), intent(in) :: lo, hi, curvature
+        real(qp), intent(inout) :: x0
+        type(endpoint_solution), intent(inout) :: solution
+        logical, intent(out) :: done
+        type(arch_values) :: values
+        real(qp) :: big_r, d, f, df, ds, dx, x, tolerance, mid_r, mid_d, conserved
+        logical :: inside
+
+        done = .false.
+        call fun%radius_of(x0, big_r, d, inside)
+        if (.not. inside) return
+        values = fun%model%evaluate_arch(level_fine, fun%second, fun%rho, big_r, d, &
+                                         .true., .true.)
+        solution%steps = solution%steps + 1
+        f = values%angle - fun%psi
+        df = fun%slope_in_unknown(x0, big_r, d, values%angle_dr_smooth, &
+                                  values%boundary_sign*values%boundary)
+        dx = -f/df
+        x = x0 + dx
+        tolerance = 4.0_qp*eps_qp*abs(x) + tiny(1.0_qp)
+        if (.not. (ieee_is_finite(x) .and. x > lo .and. x < hi)) return
+        x0 = x
+        if (abs(dx) > 1.0e-17_qp*(hi - lo)) return
+        if (abs(dx) > tolerance .and. 4.0_qp*curvature*dx*dx > tolerance) return
+        ds = fun%slope_in_unknown(x - dx, big_r, d, values%arclength_dr_smooth, &
+                                  values%boundary_sign*values%arclength_boundary)
+        call fun%radius_of(x - 0.5_qp*dx, mid_r, mid_d, inside)
+        conserved = sqrt(mid_r**3/(2.0_qp*((1.0_qp - fun%rho) + mid_d)))
+        call fun%radius_of(x, big_r, d, inside)
+        if (.not. inside) return
+        solution%apse_radius = big_r
+        solution%apse_gap = d
+        solution%arclength = values%arclength + ds*dx
+        solution%time = values%time - conserved*f
+        solution%has_apse_radius = .true.
+        solution%has_arclength = .true.
+        solution%has_time = .true.
+        solution%status = status_ok
+        done = .true.
+    end subroutine final_step
 
     !> First iterate on [0, h]: the root of the cubic Hermite interpolant of F from
     !! F(0) = f0, F'(0) = slope0, F(h) = fh, F'(h) = slope_h, found by Newton's method on
