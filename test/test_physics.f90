@@ -11,7 +11,8 @@ module test_physics
     use closed_forms, only: radial_time, kappa_time, fall_to_centre_time, &
                             apse_angle_limit, inaccessible_angle, radial_fall_time
     use quadrature, only: univariate_integrand, gauss_legendre, integrate_adaptive
-    use inverse_square, only: inverse_square_model, new_inverse_square_model
+    use inverse_square, only: inverse_square_model, new_inverse_square_model, arch_values, &
+                              level_fine
     use two_point, only: endpoint_solution, solve_endpoint, solve_endpoint_secant, &
                          arch_first, arch_second, arch_complete, arch_radial, &
                          arch_inaccessible, arch_word
@@ -47,7 +48,65 @@ contains
         call reference_tests(model)
         call special_endpoint_tests(model)
         call robustness_tests(model)
+        call derivative_tests(model)
     end subroutine run_physics_tests
+
+    !> What the solver's last step relies on, against central differences:
+    !! d(s)/dR from evaluate_arch (the integrand's derivative plus the moving limit), and
+    !! Hamilton-Jacobi, dt/dpsi = K = sqrt(R^3/(2(1-R))) at fixed rho.
+    !! With h = 1e-9 of the scale, the difference errs by ~h^2 (1e-18) plus eps/h (1e-25).
+    subroutine derivative_tests(model)
+        type(inverse_square_model), intent(in) :: model
+        type(arch_values) :: values, plus, minus
+        type(endpoint_solution) :: b, b_plus, b_minus
+        real(qp) :: rho(5), fraction(3), big_r, d, h, analytic, difference, worst, conserved
+        integer :: i, j, arch
+        logical :: second
+
+        call section('physics: d(s)/dR and Hamilton-Jacobi against central differences')
+        rho = [0.05_qp, 0.3_qp, 0.6_qp, 0.9_qp, 0.999_qp]
+        fraction = [0.02_qp, 0.5_qp, 0.97_qp]
+        worst = 0.0_qp
+        do arch = 1, 2
+            second = arch == 2
+            do i = 1, size(rho)
+                do j = 1, size(fraction)
+                    big_r = fraction(j)*rho(i)
+                    d = rho(i) - big_r
+                    h = 1.0e-9_qp*min(big_r, d)
+                    values = model%evaluate_arch(level_fine, second, rho(i), big_r, d, &
+                                                 .true., .true.)
+                    plus = model%evaluate_arch(level_fine, second, rho(i), big_r + h, d - h, &
+                                               .false., .true.)
+                    minus = model%evaluate_arch(level_fine, second, rho(i), big_r - h, &
+                                                d + h, .false., .true.)
+                    analytic = values%arclength_dr_smooth &
+                               + values%boundary_sign*values%arclength_boundary/sqrt(d)
+                    difference = (plus%arclength - minus%arclength)/(2.0_qp*h)
+                    worst = max(worst, abs(analytic - difference)/abs(difference))
+                end do
+            end do
+        end do
+        write (output_unit, '(3x,a,es10.2)') &
+            '30 (rho, R) on both half-arches: worst relative |dS/dR - difference|', worst
+        call check(worst < 1.0e-15_qp, 'dS/dR agrees with central differences')
+
+        worst = 0.0_qp
+        do i = 1, size(rho)
+            do j = 1, 3
+                b = solve_endpoint(model, rho(i), real(j, qp)*0.6_qp)
+                h = 1.0e-9_qp
+                b_plus = solve_endpoint(model, rho(i), real(j, qp)*0.6_qp + h)
+                b_minus = solve_endpoint(model, rho(i), real(j, qp)*0.6_qp - h)
+                conserved = sqrt(b%apse_radius**3/(2.0_qp*(1.0_qp - b%apse_radius)))
+                difference = (b_plus%time - b_minus%time)/(2.0_qp*h)
+                worst = max(worst, abs(conserved - difference)/conserved)
+            end do
+        end do
+        write (output_unit, '(3x,a,es10.2)') &
+            '15 endpoints: worst relative |K - dt/dpsi|', worst
+        call check(worst < 1.0e-15_qp, 'dt/dpsi at fixed rho = K (Hamilton-Jacobi)')
+    end subroutine derivative_tests
 
     subroutine closed_form_tests()
         type(fall_integrand) :: fall
