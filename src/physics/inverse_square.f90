@@ -28,8 +28,8 @@
 !! analytic on a neighbourhood of [0, 1]: the nearest singularity is at R = 3/2, where q
 !! vanishes at lambda = 0 (another at R = -3, where q's zeros in cos^2 lambda meet). They
 !! are tabulated once, as piecewise Chebyshev series, when the model is built; an
-!! evaluation then costs a Clenshaw sum of at most ~26 terms instead of a quadrature.
-!! Second half-arch (eq. 29): F = 2 F(R,R) - F(r,R) = F(R,R) + int_0^L.
+!! evaluation then costs a Horner sum of at most 21 terms instead of a quadrature.
+!! Second half-arch (eq. 29): F = 2 F(R,R) - F(r,R) = F(R,R) + int_0^L, one panel.
 module inverse_square
     use brachistochrone_kinds, only: qp, pi, eps_qp
     use brachistochrone_status, only: status_ok, status_invalid_argument, &
@@ -124,7 +124,7 @@ contains
     end function level_digits
 
     !> Build the quadrature rules and the whole-half-arch tables (the only costly step,
-    !! about 40 ms: do it once and share the model).
+    !! about 70 ms: do it once and share the model).
     function new_inverse_square_model() result(model)
         type(inverse_square_model) :: model
         type(gauss_legendre_rule) :: rule

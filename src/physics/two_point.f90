@@ -12,9 +12,10 @@
 !!   u^2 keep full precision for endpoints next to the apse. In the lower part the unknown
 !!   is R itself (second half-arch: Upsilon = 2 pi/3 - 1.619 R + O(R^(3/2))) or log R
 !!   (first half-arch: Theta(rho,R) ~ C R^(3/2)), so tiny R-bar keeps its relative
-!!   precision. Safeguarded Newton on 15-digit rules, then on full quad-precision rules;
-!!   the derivative is differentiated under the integral sign (eq. 67-71) plus the
-!!   boundary term of the moving limit L(R).
+!!   precision. Safeguarded Newton on 17-digit rules, then one step on full
+!!   quad-precision rules that also yields s and t (`final_step`); the derivative is
+!!   differentiated under the integral sign (eq. 67-71) plus the boundary term of the
+!!   moving limit L(R).
 !! - `solve_endpoint_secant`: the paper's secant method from R0, R1 with its stopping
 !!   rule |R_n - R_(n-1)| < tol and a step count, which reproduces Table 1.
 module two_point
