@@ -8,7 +8,11 @@ module test_numerics
     use roots, only: root_function, newton_bracketed, secant
     use chebyshev, only: chebyshev_table, chebyshev_points, chebyshev_fit
     use summation, only: compensated_sum
+    use double_quad, only: double_quad_number, two_sum, two_product, &
+                           operator(*), operator(/), operator(-)
+    use reference_tables, only: csv_table, read_csv
     use testing, only: check, check_close, section
+    use, intrinsic :: iso_fortran_env, only: output_unit
     implicit none
     private
 
@@ -105,6 +109,7 @@ contains
                          'int_0^1 1/(1+x^2) = pi/4 (48 nodes)')
         rule = gauss_legendre(7)
         call check(abs(rule%node(4)) == 0.0_qp, 'odd rule has the node 0')
+        call gauss_reference_tests()
 
         call section('numerics: adaptive Gauss-Legendre with error estimate')
         rule = gauss_legendre(16)
@@ -142,7 +147,98 @@ contains
 
         call chebyshev_tests()
         call summation_tests()
+        call double_quad_tests()
     end subroutine run_numerics_tests
+
+    !> The rules n = 2..48 and 96 against data/reference/gauss_legendre_mpmath.csv
+    !! (mpmath at 80 digits, checked against Golub-Welsch; see the script's header): every
+    !! node within 1 eps absolute, every weight within 2 eps relative, in both halves.
+    !! The reference holds the nodes x_k >= 0, rounded to quad on reading (0.5 ulp), so
+    !! a value that is the correct rounding of the exact one matches it exactly.
+    subroutine gauss_reference_tests()
+        integer, parameter :: largest = 96
+        type(csv_table) :: table
+        type(gauss_legendre_rule) :: rule
+        logical :: ok
+        integer :: i, n, k, mirror, rows(largest), exact, values
+        real(qp) :: node, weight, node_error(largest), weight_error(largest)
+        character(len=60) :: name
+
+        call read_csv('data/reference/gauss_legendre_mpmath.csv', table, ok)
+        call check(ok .and. table%row_count() >= 600, 'Gauss-Legendre mpmath reference read')
+        if (.not. ok) return
+        rows = 0
+        node_error = 0.0_qp
+        weight_error = 0.0_qp
+        exact = 0
+        values = 0
+        do i = 1, table%row_count()
+            n = nint(table%real_value(i, 'n'))
+            k = nint(table%real_value(i, 'k'))
+            node = table%real_value(i, 'node')
+            weight = table%real_value(i, 'weight')
+            if (n < 1 .or. n > largest .or. k < 1 .or. k > (n + 1)/2) then
+                call check(.false., 'Gauss-Legendre reference row in range: '//table%text(i, 'n'))
+                cycle
+            end if
+            if (rule%n /= n) rule = gauss_legendre(n)
+            rows(n) = rows(n) + 1
+            mirror = n + 1 - k   ! reference node k = the k-th largest
+            node_error(n) = max(node_error(n), abs(rule%node(mirror) - node), &
+                                abs(rule%node(k) + node))
+            weight_error(n) = max(weight_error(n), abs(rule%weight(mirror) - weight)/weight, &
+                                  abs(rule%weight(k) - weight)/weight)
+            exact = exact + count([rule%node(mirror), -rule%node(k)] == node) &
+                    + count([rule%weight(mirror), rule%weight(k)] == weight)
+            values = values + 4
+        end do
+        do n = 1, largest
+            if (rows(n) == 0) cycle
+            write (name, '(a,i0,a)') 'Gauss-Legendre n = ', n, ': reference has every node'
+            call check(rows(n) == (n + 1)/2, trim(name))
+            write (name, '(a,i0,a)') 'Gauss-Legendre n = ', n, ': nodes within 1 eps'
+            call check(node_error(n) <= eps_qp, trim(name))
+            write (name, '(a,i0,a)') 'Gauss-Legendre n = ', n, ': weights within 2 eps'
+            call check(weight_error(n) <= 2.0_qp*eps_qp, trim(name))
+        end do
+        write (output_unit, '(a,i0,a,2f9.3,a,i0,a,i0)') '   ', count(rows > 0), &
+            ' rules; largest node, weight error in eps:', maxval(node_error)/eps_qp, &
+            maxval(weight_error)/eps_qp, '; equal to the rounded reference: ', exact, &
+            ' of ', values
+    end subroutine gauss_reference_tests
+
+    !> The error-free transformations and double-quad operations on cases whose exact
+    !! results are known by hand.
+    subroutine double_quad_tests()
+        type(double_quad_number) :: exact_product, exact_sum, one, third, square, residual
+        real(qp) :: tiny_part
+
+        call section('numerics: double-quad arithmetic')
+        tiny_part = 2.0_qp**(-120)
+        exact_sum = two_sum(1.0_qp, tiny_part)
+        call check(exact_sum%hi == 1.0_qp .and. exact_sum%lo == tiny_part, &
+                   'two_sum: 1 + 2^-120 exactly')
+        ! (2^56 + 1)(2^57 + 1) = 2^113 + 2^57 + 2^56 + 1: a tie at the spacing 2 of quad
+        ! there, rounded to the even 2^113 + 2^57 + 2^56, leaving 1
+        exact_product = two_product(2.0_qp**56 + 1.0_qp, 2.0_qp**57 + 1.0_qp)
+        call check(exact_product%hi == 2.0_qp**113 + 2.0_qp**57 + 2.0_qp**56 .and. &
+                   exact_product%lo == 1.0_qp, 'two_product: (2^56 + 1)(2^57 + 1) exactly')
+        ! (1 + 2^-60)^2 = 1 + 2^-59 + 2^-120
+        exact_product = two_product(1.0_qp + 2.0_qp**(-60), 1.0_qp + 2.0_qp**(-60))
+        call check(exact_product%hi == 1.0_qp + 2.0_qp**(-59) .and. &
+                   exact_product%lo == tiny_part, 'two_product: (1 + 2^-60)^2 exactly')
+        ! 1/3 to double-quad precision: 3 (1/3) - 1 and (1/3)^2/(1/3) - 1/3 at rounding level
+        one = double_quad_number(1.0_qp, 0.0_qp)
+        third = one/3
+        residual = third*3 - one
+        call check(abs(residual%hi) <= 4.0_qp*eps_qp**2, 'double-quad: 3 (1/3) = 1 to 4 eps^2')
+        square = third*third
+        residual = square/third - third
+        call check(abs(residual%hi) <= 4.0_qp*eps_qp**2*third%hi, &
+                   'double-quad: (1/3)^2/(1/3) = 1/3 to 4 eps^2')
+        call check(abs(third%lo) > 0.0_qp .and. abs(third%lo) <= 0.5_qp*spacing(third%hi), &
+                   'double-quad: 1/3 has a trailing part below half an ulp')
+    end subroutine double_quad_tests
 
     !> Piecewise Chebyshev interpolation of 1/(x + 2) on [-1, 1]: values and slopes
     !! against the closed forms, the noise cut and the truncation to a tolerance.

@@ -1,11 +1,12 @@
 !> Quadrature rules in quad precision, with error estimates.
 !!
 !! Choice of rules (measured on the brachistochrone integrands; see README "Numerics"):
-!! - **Gauss-Legendre** with nodes computed here to full quad precision. After the
-!!   smoothing substitutions the integrands are analytic in a neighbourhood of the
-!!   interval, and an n-point Gauss rule converges like rho^(-2n), where rho is the
-!!   Bernstein ellipse reaching the nearest singularity: about 44 nodes give 34 digits on
-!!   the worst half-arch, where Romberg would need tens of thousands of evaluations.
+!! - **Gauss-Legendre** with nodes and weights computed here to the last bit (correctly
+!!   rounded in practice; see `legendre_root`). After the smoothing substitutions the
+!!   integrands are analytic in a neighbourhood of the interval, and an n-point Gauss
+!!   rule converges like rho^(-2n), where rho is the Bernstein ellipse reaching the
+!!   nearest singularity: about 44 nodes give 34 digits on the worst half-arch, where
+!!   Romberg would need tens of thousands of evaluations.
 !! - **The trapezoid rule for even periodic integrands**: for a full period it converges
 !!   geometrically with the width of the strip of analyticity (Trefethen & Weideman), and
 !!   for an even integrand only half the nodes are distinct. Its nodes are nested: the
@@ -18,6 +19,8 @@ module quadrature
     use brachistochrone_kinds, only: qp, pi, eps_qp
     use brachistochrone_status, only: status_ok, status_no_convergence, &
                                       status_invalid_argument
+    use double_quad, only: double_quad_number, two_sum, two_product, to_quad, &
+                           operator(+), operator(-), operator(*), operator(/)
     implicit none
     private
 
@@ -63,60 +66,170 @@ module quadrature
     !! grows with the depth, not 2**depth: an integrand with structure on the scale 1e-30
     !! of the interval needs about 100 levels near it.
     integer, parameter :: max_depth = 120
+    !> Most Newton steps for one node of a Gauss-Legendre rule, in each precision (from
+    !! Tricomi's estimate, n <= 96 needs at most three in quad and one compensated).
+    integer, parameter :: max_newton_steps = 20
 
 contains
 
-    !> Gauss-Legendre rule with n nodes, computed by Newton's method on the three-term
-    !! recurrence of P_n in quad precision (nodes and weights accurate to a few ulps).
+    !> Gauss-Legendre rule with n nodes. Each node and weight is within 0.501 ulp of the
+    !! exact value, so in practice its correct rounding (see `legendre_root`).
     pure function gauss_legendre(n) result(rule)
         integer, intent(in) :: n !! number of nodes, n >= 1
         type(gauss_legendre_rule) :: rule
-        integer :: i, iteration
-        real(qp) :: x, dx, p, dp
+        type(double_quad_number), allocatable :: ratio(:)
+        integer :: i, k
 
         rule%n = max(n, 1)
         allocate (rule%node(rule%n), rule%weight(rule%n))
+        ratio = [(double_quad_number(real(k - 1, qp), 0.0_qp)/k, k = 1, rule%n)]
         do i = 1, (rule%n + 1)/2
-            ! Tricomi's estimate of the i-th largest root, then Newton to convergence.
-            x = cos(pi*(real(i, qp) - 0.25_qp)/(real(rule%n, qp) + 0.5_qp))
-            do iteration = 1, 100
-                call legendre(rule%n, x, p, dp)
-                dx = p/dp
-                x = x - dx
-                if (abs(dx) <= eps_qp) exit
-            end do
-            if (2*i - 1 == rule%n) x = 0.0_qp
-            call legendre(rule%n, x, p, dp)
-            rule%node(rule%n + 1 - i) = x
-            rule%node(i) = -x
-            ! 1 - x^2 as (1 - x)(1 + x): exact factors, where 1 - x*x would lose the digits
-            ! of the nodes next to +-1 (whose weights it would bias)
-            rule%weight(i) = 2.0_qp/(((1.0_qp - x)*(1.0_qp + x))*dp*dp)
-            rule%weight(rule%n + 1 - i) = rule%weight(i)
+            call legendre_root(ratio, i, rule%node(rule%n + 1 - i), &
+                               rule%weight(rule%n + 1 - i))
+            rule%node(i) = -rule%node(rule%n + 1 - i)
+            rule%weight(i) = rule%weight(rule%n + 1 - i)
         end do
     end function gauss_legendre
 
-    !> P_n(x) and its derivative by the three-term recurrence.
-    pure subroutine legendre(n, x, p, dp)
-        integer, intent(in) :: n
-        real(qp), intent(in) :: x
-        real(qp), intent(out) :: p, dp
-        real(qp) :: p_previous, p_next
+    !> The i-th largest root x of P_n and its weight w = 2/((1 - x^2) P_n'(x)^2).
+    !!
+    !! Newton's method in quad on the three-term recurrence finds the root to about an
+    !! ulp, the limit in quad, where P_n near its root is rounding noise. But the weight
+    !! formula magnifies the error d of a node: d[(1 - x^2) P_n'^2]/dx = 2 x P_n'^2 at a
+    !! root (Legendre's equation), a relative change 2 x d/(1 - x^2) of the weight, 800
+    !! ulps next to +-1 for n = 48; and P_n' from the quad recurrence carries a few ulps
+    !! of rounding. So the last step evaluates P_n(x) and P_{n-1}(x) at the quad estimate
+    !! x with an error of order n eps^2 (`legendre_compensated`). The Newton correction
+    !! d = P_n/P_n' is then known to many more digits than the ulp, and with
+    !! q = x P_n - P_{n-1} = -(1 - x^2) P_n'/n the weight at the root x - d is
+    !!
+    !!     w = 2 (1 - x^2)/(n q (n q + 2 x P_n)),
+    !!
+    !! that is 2/[(1 - x^2) P_n'^2 - 2 x P_n P_n'] at x: the second term cancels the
+    !! first-order change with the node; the second-order one is below 1e-3 ulp
+    !! (`settled`). The node x - d and the weight, evaluated in double-quad arithmetic,
+    !! are each rounded to quad once, at the end.
+    pure subroutine legendre_root(ratio, i, node, weight)
+        !> (k - 1)/k for k = 1..n, n the degree
+        type(double_quad_number), intent(in) :: ratio(:)
+        integer, intent(in) :: i         !! which root, 1 = the largest, i <= (n + 1)/2
+        real(qp), intent(out) :: node    !! the root x_i of P_n
+        real(qp), intent(out) :: weight  !! its Gauss-Legendre weight
+        type(double_quad_number) :: p, p_previous, q, one_minus_square
+        real(qp) :: x, step, p_quad, dp_quad
+        integer :: n, iteration
+
+        n = size(ratio)
+        if (2*i - 1 == n) then
+            x = 0.0_qp        ! the middle root of an odd degree is exact
+        else
+            x = tricomi_estimate(n, i)
+            do iteration = 1, max_newton_steps
+                call legendre(ratio, x, p_quad, dp_quad)
+                step = p_quad/dp_quad
+                x = x - step
+                ! Newton's error after this step: about step^2 |x|/(1 - x^2)
+                if (settled(n, x, step*step*abs(x)/((1.0_qp - x)*(1.0_qp + x)))) exit
+            end do
+        end if
+        do iteration = 1, max_newton_steps
+            call legendre_compensated(ratio, x, p, p_previous)
+            q = p*x - p_previous
+            one_minus_square = two_sum(1.0_qp, -x)*two_sum(1.0_qp, x)
+            step = -(p%hi*one_minus_square%hi)/(real(n, qp)*q%hi)
+            if (settled(n, x, step)) exit
+            x = x - step
+        end do
+        node = x - step
+        q = q*n
+        weight = to_quad((one_minus_square*2)/(q*(q + p*(2.0_qp*x))))
+    end subroutine legendre_root
+
+    !> Whether a point x off a root of P_n by `error` is close enough for the first-order
+    !! corrections of `legendre_root`: ((n + 1) error)^2/(1 - x^2) <= eps/4096. The
+    !! relative second-order terms, [n(n + 1) + 1 + 2 x^2/(1 - x^2)] error^2/(1 - x^2)
+    !! for the weight and |x| error^2/(1 - x^2) for the node, are then below 4e-4 eps, as
+    !! 2 x^2/(1 - x^2) < 0.35 (n + 1)^2 at every root (the limit for large n at the
+    !! outermost root is 2 (n + 1)^2/j_0^2, j_0 = 2.405 the first zero of J_0).
+    pure logical function settled(n, x, error)
+        integer, intent(in) :: n      !! degree
+        real(qp), intent(in) :: x     !! the point
+        real(qp), intent(in) :: error !! its distance from the root (an estimate)
+        settled = (real(n + 1, qp)*error)**2 <= eps_qp/4096.0_qp*((1.0_qp - x)*(1.0_qp + x))
+    end function settled
+
+    !> Tricomi's estimate of the i-th largest root of P_n, with error O(n^-5) inside the
+    !! interval and about 2e-6 at the outermost roots for n = 48:
+    !! (1 - (n - 1)/(8 n^3) - (39 - 28/sin^2 theta)/(384 n^4)) cos theta,
+    !! theta = pi (4i - 1)/(4n + 2).
+    pure function tricomi_estimate(n, i) result(x)
+        integer, intent(in) :: n !! degree
+        integer, intent(in) :: i !! which root, 1 = the largest
+        real(qp) :: x
+        real(qp) :: theta, degree
+        degree = real(n, qp)
+        theta = pi*real(4*i - 1, qp)/(4.0_qp*degree + 2.0_qp)
+        x = (1.0_qp - (degree - 1.0_qp)/(8.0_qp*degree**3) &
+             - (39.0_qp - 28.0_qp/sin(theta)**2)/(384.0_qp*degree**4))*cos(theta)
+    end function tricomi_estimate
+
+    !> P_n(x) and its derivative by the three-term recurrence in the form
+    !! P_k = x P_{k-1} + ((k - 1)/k) (x P_{k-1} - P_{k-2}), n = size(ratio) >= 1.
+    pure subroutine legendre(ratio, x, p, dp)
+        type(double_quad_number), intent(in) :: ratio(:) !! (k - 1)/k, k = 1..n
+        real(qp), intent(in) :: x                        !! the point, |x| < 1
+        real(qp), intent(out) :: p                       !! P_n(x)
+        real(qp), intent(out) :: dp                      !! P_n'(x)
+        real(qp) :: p_previous, p_next, x_p
         integer :: k
         p_previous = 1.0_qp
         p = x
-        do k = 2, n
-            p_next = (real(2*k - 1, qp)*x*p - real(k - 1, qp)*p_previous)/real(k, qp)
+        do k = 2, size(ratio)
+            x_p = x*p
+            p_next = x_p + ratio(k)%hi*(x_p - p_previous)
             p_previous = p
             p = p_next
         end do
-        if (n == 0) then
-            p = 1.0_qp
-            dp = 0.0_qp
-        else
-            dp = real(n, qp)*(x*p - p_previous)/((x - 1.0_qp)*(x + 1.0_qp))
-        end if
+        dp = real(size(ratio), qp)*(x*p - p_previous)/((x - 1.0_qp)*(x + 1.0_qp))
     end subroutine legendre
+
+    !> P_n(x) and P_{n-1}(x), n = size(ratio) >= 1, with an absolute error of order
+    !! n eps^2 for |x| <= 1 (compensated recurrence). The recurrence of `legendre` runs in
+    !! quad; two_product and two_sum recover the rounding error of each operation
+    !! exactly, and a second, linear recurrence carries their effect forward, with the
+    !! rounding of (k - 1)/k. About 14 times the work of `legendre`; the same recurrence
+    !! in double-quad arithmetic throughout would take 1.6 times as long again.
+    pure subroutine legendre_compensated(ratio, x, p, p_previous)
+        type(double_quad_number), intent(in) :: ratio(:) !! (k - 1)/k, k = 1..n
+        real(qp), intent(in) :: x                        !! the point
+        type(double_quad_number), intent(out) :: p          !! P_n(x)
+        type(double_quad_number), intent(out) :: p_previous !! P_{n-1}(x)
+        type(double_quad_number) :: x_value, difference, increment, next
+        real(qp) :: value, value_previous, error, error_previous, x_error, carried
+        integer :: k
+        ! P_k = value + error, where value is exactly what `legendre` computes
+        value_previous = 1.0_qp
+        value = x
+        error_previous = 0.0_qp
+        error = 0.0_qp
+        do k = 2, size(ratio)
+            x_value = two_product(x, value)
+            x_error = x*error
+            ! x P_{k-1} - P_{k-2} = difference%hi + carried
+            difference = two_sum(x_value%hi, -value_previous)
+            carried = difference%lo + ((x_value%lo + x_error) - error_previous)
+            ! ratio (x P_{k-1} - P_{k-2}) = increment%hi + the rest of `error` below
+            increment = two_product(ratio(k)%hi, difference%hi)
+            next = two_sum(x_value%hi, increment%hi)
+            value_previous = value
+            error_previous = error
+            value = next%hi
+            error = next%lo + ((x_value%lo + x_error) + (increment%lo &
+                    + (ratio(k)%hi*carried + ratio(k)%lo*difference%hi)))
+        end do
+        p = two_sum(value, error)
+        p_previous = two_sum(value_previous, error_previous)
+    end subroutine legendre_compensated
 
     !> Trapezoid rule with m intervals on [0, pi] for even 2 pi-periodic integrands.
     pure function even_periodic_trapezoid(m) result(rule)
