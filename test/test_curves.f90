@@ -344,7 +344,8 @@ contains
                    'near pi/3 at R = 1e-6')
         do k = 2, size(radii)
             call model%apse_angle(radii(k), theta, status)
-            call check_close(locus%theta(k), theta, 8.0_qp, 'locus (Gauss sweep) = tabulated Theta(R,R)')
+            call check_close(locus%theta(k), theta, 8.0_qp, &
+                             'locus (Gauss sweep) = tabulated Theta(R,R)')
         end do
         c = sample_complete_arch(model, radii(9), 5)
         call check(c%theta(3) == locus%theta(9) .and. c%s(3) == locus%s(9) .and. &
