@@ -81,6 +81,7 @@ contains
         type(chebyshev_table) :: table
         real(qp), allocatable :: cosines(:), t_previous(:), t_current(:), t_next(:)
         type(compensated_sum) :: sum
+        real(qp) :: mean
         integer :: n, j, k, piece
         n = size(values, 1)
         table%lower = lower
@@ -96,14 +97,24 @@ contains
             cosines(j) = cos(pi*real(j, qp)/real(2*n, qp))
         end do
         do piece = 1, table%pieces
-            do j = 0, n - 1
+            ! c_0 is the mean. The other sums see only the values' departures from it:
+            ! with the values themselves, each product's rounding (eps times the values'
+            ! size) would land in every coefficient, and the interpolant would carry ~n
+            ! such errors; the departures are smaller by the function's variation on the
+            ! piece (and, for values within a factor 2 of each other, exact)
+            sum = compensated_sum()
+            do k = 1, n
+                call sum%add(values(k, piece))
+            end do
+            mean = sum%value()/real(n, qp)
+            table%coefficient(0, piece) = mean
+            do j = 1, n - 1
                 sum = compensated_sum()
                 do k = 1, n
-                    call sum%add(values(k, piece)*cosines(mod(j*(2*k - 1), 4*n)))
+                    call sum%add((values(k, piece) - mean)*cosines(mod(j*(2*k - 1), 4*n)))
                 end do
                 table%coefficient(j, piece) = 2.0_qp*sum%value()/real(n, qp)
             end do
-            table%coefficient(0, piece) = 0.5_qp*table%coefficient(0, piece)
             table%used(piece) = n
             if (present(noise)) then
                 associate (c => table%coefficient(:, piece))

@@ -155,10 +155,10 @@ contains
                 values(k, piece, :) = whole_half_arch(model, points(k, piece))
             end do
         end do
-        ! the values are about 1 with rounding errors of about eps: coefficients below
-        ! 4 eps are noise
+        ! the values are about 1 with rounding errors below eps, which put noise of about
+        ! eps/5 in the coefficients: those below eps/2 are dropped
         do k = 1, 3
-            model%whole(k) = chebyshev_fit(0.0_qp, 1.0_qp, values(:, :, k), 4.0_qp*eps_qp)
+            model%whole(k) = chebyshev_fit(0.0_qp, 1.0_qp, values(:, :, k), 0.5_qp*eps_qp)
         end do
     end subroutine build_whole_tables
 
