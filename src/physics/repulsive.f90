@@ -143,6 +143,7 @@ module repulsive
     type, extends(root_function) :: angle_mismatch
         real(qp) :: rho = 1.0_qp, target = 0.0_qp
         integer :: arch = arch_unbounded
+        type(gauss_legendre_rule) :: rule  !! the 20-point rule, built once per solve
     contains
         procedure :: evaluate => mismatch_evaluate
     end type angle_mismatch
@@ -610,15 +611,13 @@ contains
         real(qp), intent(out) :: f, df
         integer, intent(out) :: status
         type(repulsive_curve) :: curve
-        type(gauss_legendre_rule) :: rule
         real(qp) :: angle, apse
         integer :: stat
         df = 0.0_qp
         call curve_of_lambda(self%arch, x, curve)
-        rule = gauss_legendre(20)
-        call first_integral(curve, want_angle, self%rho, rule, angle, status)
+        call first_integral(curve, want_angle, self%rho, self%rule, angle, status)
         if (self%arch == arch_second_half) then
-            call first_integral(curve, want_angle, curve%apse, rule, apse, stat)
+            call first_integral(curve, want_angle, curve%apse, self%rule, apse, stat)
             angle = 2.0_qp*apse - angle
             status = max(status, stat)
         end if
@@ -638,6 +637,7 @@ contains
         fun%rho = rho
         fun%target = target
         fun%arch = arch
+        fun%rule = gauss_legendre(20)
         solution%arch = arch
         floor = log(critical_floor)
         hi = lambda_top
