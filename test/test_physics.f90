@@ -49,7 +49,40 @@ contains
         call special_endpoint_tests(model)
         call robustness_tests(model)
         call derivative_tests(model)
+        call whole_arch_tests(model)
     end subroutine run_physics_tests
+
+    !> The tabulated whole half-arch against mpmath on the original integrals at r = R
+    !! (236 dyadic R from 2^-58 to 1 - 2^-58, both sides of every piece boundary).
+    !! On the second half-arch at r = R the model uses the tables alone.
+    subroutine whole_arch_tests(model)
+        type(inverse_square_model), intent(in) :: model
+        type(csv_table) :: reference
+        logical :: ok
+        real(qp) :: big_r, expected(3), actual(3), worst(3), apse
+        integer :: i, status, k, bad
+        call section('physics: whole half-arch tables against mpmath (original integrals)')
+        call read_csv('data/reference/whole_arch_mpmath.csv', reference, ok)
+        call check(ok .and. reference%row_count() > 200, 'whole-arch reference read')
+        if (.not. ok) return
+        worst = 0.0_qp
+        bad = 0
+        do i = 1, reference%row_count()
+            big_r = reference%real_value(i, 'R')
+            expected = [reference%real_value(i, 'theta'), reference%real_value(i, 's'), &
+                        reference%real_value(i, 't')]
+            call model%half_arch(big_r, big_r, .true., actual(1), actual(2), actual(3), status)
+            call model%apse_angle(big_r, apse, status)
+            if (apse /= actual(1)) bad = bad + 1
+            do k = 1, 3
+                worst(k) = max(worst(k), abs(actual(k) - expected(k))/expected(k)/eps_qp)
+            end do
+        end do
+        write (output_unit, '(3x,i0,a,3f6.2)') reference%row_count(), &
+            ' radii; worst relative error of Theta(R,R), S(R,R), T(R,R) in eps:', worst
+        call check(all(worst <= 4.0_qp), 'tables within 4 eps of mpmath')
+        call check(bad == 0, 'apse_angle = the second half-arch at r = R')
+    end subroutine whole_arch_tests
 
     !> What the solver's last step relies on, against central differences:
     !! d(s)/dR from evaluate_arch (the integrand's derivative plus the moving limit), and
