@@ -373,7 +373,6 @@ contains
         logical, intent(in) :: want_length_time
         real(qp), intent(out) :: whole(3), slope(3)
         real(qp) :: tolerance
-        integer :: k
         whole = 0.0_qp
         slope = 0.0_qp
         ! the tables' values are about 1: an absolute tolerance a tenth of the level's
