@@ -85,7 +85,7 @@ contains
         type(runge) :: bump
         type(exponential) :: e
         type(cubic) :: f
-        real(qp) :: value, error, x, total
+        real(qp) :: value, error, x, total, curvature
         integer :: k, status, steps
         character(len=40) :: name
 
@@ -139,6 +139,12 @@ contains
         call check(status == status_ok, 'newton converges on x^3 = 2')
         call check_close(x, exp(log(2.0_qp)/3.0_qp), 8.0_qp, 'newton: cube root of 2')
         call check(steps < 20, 'newton: fewer than 20 steps from a poor start')
+        ! the curvature it measures: |f''/(2 f')| = 1/x at the root of x^3 - 2
+        curvature = 0.0_qp
+        call newton_bracketed(f, 0.0_qp, -2.0_qp, 2.0_qp, 6.0_qp, 1.3_qp, 1.0e-16_qp, &
+                              0.0_qp, 100, x, steps, status, curvature, 1.0e-30_qp)
+        call check(curvature > 0.5_qp/x .and. curvature < 2.0_qp/x, &
+                   'newton measures f''''/(2f'''') within a factor 2')
         call secant(f, 1.0_qp, 1.5_qp, 1.0e-30_qp, 0.0_qp, 2.0_qp, 100, x, steps, status)
         call check(status == status_ok, 'secant converges on x^3 = 2')
         call check_close(x, exp(log(2.0_qp)/3.0_qp), 8.0_qp, 'secant: cube root of 2')

@@ -58,13 +58,15 @@ contains
         !> In: a bound on K = |f''/(2f')| near the root, measured by an earlier run on a
         !! nearby function (0 if unknown); then one Newton step dx leaves an error of
         !! about K dx^2 and the run may stop after it. Out: the largest K known, including
-        !! what this run measured from consecutive Newton steps well above the noise.
+        !! what this run measured well above the noise: from consecutive Newton steps
+        !! (|dx_k|/|dx_(k-1)|^2), and from the derivatives at consecutive points
+        !! (|f'_k - f'_(k-1)|/(2 |f'_k| |x_k - x_(k-1)|), a secant estimate of f''/2f').
         real(qp), intent(inout), optional :: curvature
         !> Relative accuracy of the evaluations of f, in units of x (default rel_tol):
         !! K is measured only from steps 1000 times larger.
         real(qp), intent(in), optional :: accuracy
         real(qp) :: a, b, fx, dfx, dx, dx_previous, x_new, tolerance, predicted, known_k
-        real(qp) :: noise
+        real(qp) :: noise, x_previous, df_previous
         logical :: increasing, newton_step, previous_newton
 
         steps = 0
@@ -85,6 +87,16 @@ contains
             steps = steps + 1
             if (status /= status_ok) return
             if (fx == 0.0_qp) return
+            if (present(curvature) .and. steps > 1) then
+                if (abs(dfx - df_previous) > 1.0e3_qp*noise*abs(dfx) .and. &
+                    x /= x_previous) then
+                    curvature = max(curvature, abs(dfx - df_previous) &
+                                               /(2.0_qp*abs(dfx)*abs(x - x_previous)))
+                    known_k = curvature
+                end if
+            end if
+            x_previous = x
+            df_previous = dfx
             ! shrink the bracket
             if ((fx < 0.0_qp) .eqv. increasing) then
                 a = x

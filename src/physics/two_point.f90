@@ -343,28 +343,31 @@ contains
         type(endpoint_solution), intent(inout) :: solution
         logical, intent(out) :: done
         type(arch_values) :: values
-        real(qp) :: big_r, d, f, df, ds, dx, x, tolerance, mid_r, mid_d, conserved
+        real(qp) :: big_r, d, f, df, ds, dx, x, start, tolerance, mid_r, mid_d, conserved
         logical :: inside
 
         done = .false.
-        call fun%radius_of(x0, big_r, d, inside)
+        start = x0
+        call fun%radius_of(start, big_r, d, inside)
         if (.not. inside) return
         values = fun%model%evaluate_arch(level_fine, fun%second, fun%rho, big_r, d, &
                                          .true., .true.)
         solution%steps = solution%steps + 1
         f = values%angle - fun%psi
-        df = fun%slope_in_unknown(x0, big_r, d, values%angle_dr_smooth, &
+        df = fun%slope_in_unknown(start, big_r, d, values%angle_dr_smooth, &
                                   values%boundary_sign*values%boundary)
         dx = -f/df
-        x = x0 + dx
+        x = start + dx
         tolerance = 4.0_qp*eps_qp*abs(x) + tiny(1.0_qp)
         if (.not. (ieee_is_finite(x) .and. x > lo .and. x < hi)) return
         x0 = x
         if (abs(dx) > 1.0e-17_qp*(hi - lo)) return
-        if (abs(dx) > tolerance .and. 4.0_qp*curvature*dx*dx > tolerance) return
-        ds = fun%slope_in_unknown(x - dx, big_r, d, values%arclength_dr_smooth, &
+        ! certified: below the tolerance, or a known curvature K with K dx^2 below it
+        if (abs(dx) > tolerance .and. &
+            (curvature <= 0.0_qp .or. 4.0_qp*curvature*dx*dx > tolerance)) return
+        ds = fun%slope_in_unknown(start, big_r, d, values%arclength_dr_smooth, &
                                   values%boundary_sign*values%arclength_boundary)
-        call fun%radius_of(x - 0.5_qp*dx, mid_r, mid_d, inside)
+        call fun%radius_of(start + 0.5_qp*dx, mid_r, mid_d, inside)
         conserved = sqrt(mid_r**3/(2.0_qp*((1.0_qp - fun%rho) + mid_d)))
         call fun%radius_of(x, big_r, d, inside)
         if (.not. inside) return
