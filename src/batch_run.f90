@@ -15,15 +15,18 @@ module batch_run
     use arches, only: arch_first, arch_second, arch_complete, arch_radial, arch_unbounded
     use brachistochrone_status, only: status_ok, status_no_convergence
     use endpoint_input, only: endpoint_table, message, read_endpoint_file, max_curve_points
-    use result_output, only: output_request
+    use result_output, only: output_request, write_outputs, write_table_header, &
+                             write_table_row
+    use curve_output, only: write_curves
     use brachistochrone_version, only: program_name
-    use command_line, only: run_options, exit_ok, exit_input
-    use run_support, only: progress_type
+    use command_line, only: run_options, exit_ok, exit_input, exit_unsolved, exit_io
+    use run_support, only: progress_type, timestamp
     use strings, only: integer_text
     implicit none
     private
 
-    public :: prepare_run, print_report, solve_rows, check_slice, check_targets
+    public :: prepare_run, print_report, solve_rows, deliver_results, check_slice, &
+              check_targets
 
 contains
 
@@ -89,6 +92,54 @@ contains
             end if
         end do
     end subroutine print_report
+
+    !> Everything after solving rows first..last: the result files, the curves and the
+    !! table on stdout (as requested), with problems explained on stderr. Returns the
+    !! exit code: exit_ok; exit_unsolved when an endpoint has no solution or a solved one
+    !! has no curve; exit_input or exit_io when a file could not be written.
+    subroutine deliver_results(options, model, table, first, last, solutions, code)
+        type(run_options), intent(in) :: options       !! the command line
+        type(inverse_square_model), intent(in) :: model !! the evaluator (for curves)
+        type(endpoint_table), intent(in) :: table      !! the input
+        integer, intent(in) :: first, last             !! the rows solved
+        type(endpoint_solution), intent(in) :: solutions(first:) !! their solutions
+        integer, intent(out) :: code                   !! the exit code
+        character(len=:), allocatable :: problem, date
+        integer :: status, missing, unsolved, i
+
+        date = timestamp()
+        missing = 0
+        call write_outputs(options%request, table, first, last, solutions, date, status, &
+                           problem)
+        if (status == 0) call write_curves(options%request%curves_path, &
+                                           options%request%force, model, table, first, &
+                                           last, solutions, date, .not. options%quiet, &
+                                           status, problem, missing)
+        if (status /= 0) then
+            write (error_unit, '(a)') program_name//': '//problem
+            code = merge(exit_input, exit_io, status == 1)
+            return
+        end if
+        if (options%show_table) then
+            call write_table_header(output_unit)
+            do i = first, last
+                call write_table_row(output_unit, i, solutions(i))
+            end do
+        end if
+        code = exit_ok
+        unsolved = count(solutions(first:last)%status /= status_ok)
+        if (missing > unsolved) then
+            write (error_unit, '(a)') program_name//': '//integer_text(missing - unsolved)// &
+                ' solved endpoints have no curve; see the comments in '// &
+                options%request%curves_path
+            code = exit_unsolved
+        end if
+        if (unsolved > 0) then
+            write (error_unit, '(a)') program_name//': '//integer_text(unsolved)//' of '// &
+                integer_text(last - first + 1)//' endpoints have no solution; see their status'
+            code = exit_unsolved
+        end if
+    end subroutine deliver_results
 
     !> Solve rows first..last of the table, in parallel over OpenMP threads (dynamic
     !! schedule; each row is independent and `pure`, so the results do not depend on the

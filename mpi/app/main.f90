@@ -14,16 +14,12 @@ program main
                        mpi_abort
     !$ use omp_lib, only: omp_set_num_threads
     use brachistochrone, only: inverse_square_model, new_inverse_square_model, &
-                               endpoint_solution, status_ok
+                               endpoint_solution
     use brachistochrone_version, only: program_name, program_version
     use endpoint_input, only: endpoint_table, message
-    use result_output, only: write_outputs, write_table_header, write_table_row
-    use curve_output, only: write_curves
-    use run_support, only: timestamp
-    use strings, only: integer_text
     use command_line, only: run_options, parse_command_line, write_usage, exit_ok, &
-                            exit_input, exit_unsolved, exit_io
-    use batch_run, only: prepare_run, print_report, solve_rows
+                            exit_input
+    use batch_run, only: prepare_run, print_report, solve_rows, deliver_results
     implicit none
 
     type(run_options) :: options
@@ -32,11 +28,10 @@ program main
     type(endpoint_solution), allocatable :: block(:), solutions(:)
     type(endpoint_solution) :: prototype
     type(message), allocatable :: report(:)
-    character(len=:), allocatable :: problem, date
+    character(len=:), allocatable :: problem
     integer(int8), allocatable :: sent(:), received(:)
     integer, allocatable :: counts(:), displacements(:)
     integer :: rank, ranks, status, i, first, last, my_first, my_last, rows, bytes, code
-    integer :: missing
     logical :: finished
 
     call mpi_init()
@@ -86,39 +81,8 @@ program main
     if (rank == 0) then
         allocate (solutions(first:last))
         solutions = transfer(received, prototype, rows)
-        date = timestamp()
-        call write_outputs(options%request, table, first, last, solutions, date, status, &
-                           problem)
-        ! curves on rank 0 (with its OpenMP threads), from the gathered solutions
-        missing = 0
-        if (status == 0) call write_curves(options%request%curves_path, &
-                                           options%request%force, model, table, first, &
-                                           last, solutions, date, .not. options%quiet, &
-                                           status, problem, missing)
-        if (status /= 0) then
-            write (error_unit, '(a)') program_name//': '//problem
-            code = merge(exit_input, exit_io, status == 1)
-        else
-            if (options%show_table) then
-                call write_table_header(output_unit)
-                do i = first, last
-                    call write_table_row(output_unit, i, solutions(i))
-                end do
-            end if
-            if (missing > count(solutions%status /= status_ok)) then
-                write (error_unit, '(a)') program_name//': '// &
-                    integer_text(missing - count(solutions%status /= status_ok))// &
-                    ' solved endpoints have no curve; see the comments in '// &
-                    options%request%curves_path
-                code = exit_unsolved
-            end if
-            if (any(solutions%status /= status_ok)) then
-                write (error_unit, '(a)') program_name//': '// &
-                    integer_text(count(solutions%status /= status_ok))//' of '// &
-                    integer_text(rows)//' endpoints have no solution; see their status'
-                code = exit_unsolved
-            end if
-        end if
+        ! files, curves (with rank 0's OpenMP threads) and table: as the serial program
+        call deliver_results(options, model, table, first, last, solutions, code)
     end if
     call mpi_bcast(code, 1, mpi_integer, 0, mpi_comm_world)
     call finish(code)
