@@ -216,11 +216,8 @@ contains
 
         call classify(model, rho, psi, solution, apse_angle_rho, done)
         if (done) return
-        fun%model = model
-        fun%rho = rho
-        fun%psi = psi
-        fun%second = solution%arch /= arch_first
-        fun%level = level_fine
+        fun = upsilon_function(model=model, level=level_fine, &
+                               second=solution%arch /= arch_first, rho=rho, psi=psi)
 
         if (psi == apse_angle_rho) then
             ! B is the apse itself
@@ -450,11 +447,8 @@ contains
 
         call classify(model, rho, psi, solution, apse_angle_rho, done)
         if (done) return
-        fun%model = model
-        fun%rho = rho
-        fun%psi = psi
-        fun%second = solution%arch /= arch_first
-        fun%level = level_fine
+        fun = upsilon_function(model=model, level=level_fine, &
+                               second=solution%arch /= arch_first, rho=rho, psi=psi)
         fun%unknown = unknown_r
         call secant(fun, r0, r1, tol, 0.0_qp, rho, max_steps, x, steps, status)
         solution%steps = steps
