@@ -1,10 +1,11 @@
 !> Readers for the independent reference tables in data/reference/.
 module reference_tables
     use brachistochrone_kinds, only: qp
+    use testing, only: check
     implicit none
     private
 
-    public :: csv_table, read_csv
+    public :: csv_table, read_csv, read_reference
 
     !> A CSV file as text fields: header names and rows of fields.
     type :: field
@@ -54,6 +55,20 @@ contains
         end do
         close (unit)
     end subroutine read_csv
+
+    !> Read a reference table as a checked step of a test: `ok` only when the file was
+    !! read and has at least `min_rows` rows.
+    subroutine read_reference(path, min_rows, table, ok)
+        character(len=*), intent(in) :: path     !! the CSV file
+        integer, intent(in) :: min_rows          !! rows the test needs
+        type(csv_table), intent(out) :: table    !! the table
+        logical, intent(out) :: ok               !! read, with enough rows
+        character(len=16) :: count
+        call read_csv(path, table, ok)
+        ok = ok .and. table%row_count() >= min_rows
+        write (count, '(i0)') min_rows
+        call check(ok, path//' read (at least '//trim(count)//' rows)')
+    end subroutine read_reference
 
     pure function split(line) result(fields)
         character(len=*), intent(in) :: line

@@ -10,7 +10,7 @@ module test_numerics
     use summation, only: compensated_sum
     use double_quad, only: double_quad_number, two_sum, two_product, &
                            operator(*), operator(/), operator(-)
-    use reference_tables, only: csv_table, read_csv
+    use reference_tables, only: csv_table, read_reference
     use testing, only: check, check_close, section
     use, intrinsic :: iso_fortran_env, only: output_unit
     implicit none
@@ -170,8 +170,7 @@ contains
         real(qp) :: node, weight, node_error(largest), weight_error(largest)
         character(len=60) :: name
 
-        call read_csv('data/reference/gauss_legendre_mpmath.csv', table, ok)
-        call check(ok .and. table%row_count() >= 600, 'Gauss-Legendre mpmath reference read')
+        call read_reference('data/reference/gauss_legendre_mpmath.csv', 600, table, ok)
         if (.not. ok) return
         rows = 0
         node_error = 0.0_qp

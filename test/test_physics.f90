@@ -16,7 +16,7 @@ module test_physics
     use two_point, only: endpoint_solution, solve_endpoint, solve_endpoint_secant, &
                          arch_first, arch_second, arch_complete, arch_radial, &
                          arch_inaccessible, arch_word
-    use reference_tables, only: csv_table, read_csv
+    use reference_tables, only: csv_table, read_reference
     use testing, only: check, check_close, check_digits, section, digits_of_agreement
     implicit none
     private
@@ -62,8 +62,7 @@ contains
         real(qp) :: big_r, expected(3), actual(3), worst(3), apse
         integer :: i, status, k, bad
         call section('physics: whole half-arch tables against mpmath (original integrals)')
-        call read_csv('data/reference/whole_arch_mpmath.csv', reference, ok)
-        call check(ok .and. reference%row_count() > 200, 'whole-arch reference read')
+        call read_reference('data/reference/whole_arch_mpmath.csv', 200, reference, ok)
         if (.not. ok) return
         worst = 0.0_qp
         bad = 0
@@ -224,8 +223,7 @@ contains
         real(qp) :: r, big_r, angle, length, time, worst, error
         real(qp), parameter :: tolerance = 1.0e-13_qp
         call section('physics: Theta, S, T against SciPy QUADPACK on (55)-(57)')
-        call read_csv('data/reference/quadpack_grid.csv', grid, ok)
-        call check(ok .and. grid%row_count() > 50, 'QUADPACK grid read')
+        call read_reference('data/reference/quadpack_grid.csv', 50, grid, ok)
         if (.not. ok) return
         worst = 0.0_qp
         worst_row = 0
@@ -309,8 +307,7 @@ contains
         real(qp) :: rho, psi, digits_r, digits_s, digits_t, min_r, min_s, min_t, required
         real(qp) :: least_margin
         call section('physics: default solver against the 45-digit mpmath reference')
-        call read_csv('data/reference/endpoints_mpmath.csv', reference, ok)
-        call check(ok .and. reference%row_count() > 100, 'mpmath reference read')
+        call read_reference('data/reference/endpoints_mpmath.csv', 100, reference, ok)
         if (.not. ok) return
         min_r = 99.0_qp
         min_s = 99.0_qp
