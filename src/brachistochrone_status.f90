@@ -4,6 +4,8 @@
 !! leaves its outputs defined (zero, or the best value it has). `status_word` gives the
 !! short word used in the CSV `status` column, `status_message` a sentence for humans.
 module brachistochrone_status
+    use brachistochrone_kinds, only: qp
+    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     implicit none
     private
 
@@ -13,7 +15,7 @@ module brachistochrone_status
               status_latitude_out_of_range, status_bad_planet, &
               status_above_start, status_parameter_out_of_range, &
               status_rho_below_start
-    public :: status_word, status_message
+    public :: status_word, status_message, argument_status
 
     !> Success.
     integer, parameter :: status_ok = 0
@@ -47,6 +49,22 @@ module brachistochrone_status
     integer, parameter :: status_rho_below_start = 13
 
 contains
+
+    !> The status of a routine's real arguments: status_not_finite if any is NaN or
+    !! infinite (checked first, since comparisons with NaN are all false), otherwise
+    !! status_invalid_argument unless `valid`, else status_ok.
+    pure function argument_status(values, valid) result(status)
+        real(qp), intent(in) :: values(:)  !! the arguments
+        logical, intent(in) :: valid       !! they satisfy the routine's preconditions
+        integer :: status
+        if (.not. all(ieee_is_finite(values))) then
+            status = status_not_finite
+        else if (.not. valid) then
+            status = status_invalid_argument
+        else
+            status = status_ok
+        end if
+    end function argument_status
 
     !> Short lowercase word for a status code, as written in the CSV `status` column.
     pure function status_word(code) result(word)

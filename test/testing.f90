@@ -37,19 +37,15 @@ contains
         character(len=*), intent(in) :: name     !! what is checked
         real(qp), intent(in), optional :: floor  !! scale used when |expected| is small
         real(qp) :: scale
+        logical :: ok
         scale = abs(expected)
         if (present(floor)) scale = max(scale, floor)
-        if (abs(actual - expected) <= tolerance_in_eps*eps_qp*scale) then
-            passed = passed + 1
-        else
-            failed = failed + 1
-            write (output_unit, '(a)') 'FAIL '//name
-            write (output_unit, '(a,es44.35e4)') '   actual   ', actual
-            write (output_unit, '(a,es44.35e4)') '   expected ', expected
-            write (output_unit, '(a,es10.3,a,es10.3)') '   rel error', &
-                abs(actual - expected)/max(scale, tiny(1.0_qp)), ' > ', &
-                tolerance_in_eps*eps_qp
-        end if
+        ok = abs(actual - expected) <= tolerance_in_eps*eps_qp*scale
+        call check(ok, name)
+        if (ok) return
+        call show_values(actual, expected)
+        write (output_unit, '(a,es10.3,a,es10.3)') '   rel error', &
+            abs(actual - expected)/max(scale, tiny(1.0_qp)), ' > ', tolerance_in_eps*eps_qp
     end subroutine check_close
 
     !> Significant digits to which actual matches expected.
@@ -70,16 +66,18 @@ contains
         character(len=*), intent(in) :: name     !! what is checked
         real(qp) :: have
         have = digits_of_agreement(actual, expected)
-        if (have >= digits) then
-            passed = passed + 1
-        else
-            failed = failed + 1
-            write (output_unit, '(a)') 'FAIL '//name
-            write (output_unit, '(a,es44.35e4)') '   actual   ', actual
-            write (output_unit, '(a,es44.35e4)') '   expected ', expected
-            write (output_unit, '(a,f6.2,a,f6.2)') '   digits   ', have, ' < ', digits
-        end if
+        call check(have >= digits, name)
+        if (have >= digits) return
+        call show_values(actual, expected)
+        write (output_unit, '(a,f6.2,a,f6.2)') '   digits   ', have, ' < ', digits
     end subroutine check_digits
+
+    !> The two values of a failed comparison.
+    subroutine show_values(actual, expected)
+        real(qp), intent(in) :: actual, expected
+        write (output_unit, '(a,es44.35e4)') '   actual   ', actual
+        write (output_unit, '(a,es44.35e4)') '   expected ', expected
+    end subroutine show_values
 
     !> Print `N passed, N failed` and return the exit code (0 when nothing failed).
     function summary() result(code)

@@ -19,8 +19,8 @@ module central_force
     use brachistochrone_kinds, only: qp, pi, eps_qp
     use brachistochrone_status, only: status_ok, status_inaccessible, &
                                       status_rho_out_of_range, status_psi_out_of_range, &
-                                      status_not_finite, status_invalid_argument, &
-                                      status_outside_domain, status_no_convergence
+                                      status_not_finite, status_outside_domain, &
+                                      status_no_convergence, argument_status
     use quadrature, only: univariate_integrand, gauss_legendre_rule, gauss_legendre, &
                           integrate_adaptive
     use roots, only: root_function, bracketed_secant
@@ -144,14 +144,9 @@ contains
         angle = 0.0_qp
         length = 0.0_qp
         time = 0.0_qp
-        if (.not. (ieee_is_finite(r) .and. ieee_is_finite(big_r))) then
-            status = status_not_finite
-            return
-        end if
-        if (big_r <= 0.0_qp .or. big_r >= 1.0_qp .or. r < big_r .or. r > 1.0_qp) then
-            status = status_invalid_argument
-            return
-        end if
+        status = argument_status([r, big_r], big_r > 0.0_qp .and. big_r < 1.0_qp .and. &
+                                             r >= big_r .and. r <= 1.0_qp)
+        if (status /= status_ok) return
         call arch_values(self, r, big_r, r - big_r, second, angle, length, time, status)
     end subroutine general_half_arch
 
@@ -185,13 +180,9 @@ contains
         real(qp), intent(out) :: value   !! Theta(R,R)
         integer, intent(out) :: status   !! status_ok or the reason
         value = 0.0_qp
-        if (.not. ieee_is_finite(big_r)) then
-            status = status_not_finite
-        else if (big_r <= 0.0_qp .or. big_r >= 1.0_qp) then
-            status = status_invalid_argument
-        else
+        status = argument_status([big_r], big_r > 0.0_qp .and. big_r < 1.0_qp)
+        if (status == status_ok) &
             call arch_integral(self, want_angle, big_r, big_r, 0.0_qp, value, status)
-        end if
     end subroutine general_apse_angle
 
     !> Time of radial fall from rest at radius 1 to radius r (K = 0): int_r^1 dx/v.
@@ -203,15 +194,8 @@ contains
         type(arch_integrand) :: f
         real(qp) :: error
         value = 0.0_qp
-        if (.not. ieee_is_finite(r)) then
-            status = status_not_finite
-            return
-        else if (r < 0.0_qp .or. r > 1.0_qp) then
-            status = status_invalid_argument
-            return
-        end if
-        status = status_ok
-        if (r == 1.0_qp) return
+        status = argument_status([r], r >= 0.0_qp .and. r <= 1.0_qp)
+        if (status /= status_ok .or. r == 1.0_qp) return
         allocate (f%law, source=self%law)
         f%kind = want_fall
         f%r = r

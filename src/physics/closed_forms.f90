@@ -6,9 +6,7 @@
 !! keeps full relative precision at both ends of the range.
 module closed_forms
     use brachistochrone_kinds, only: qp, pi
-    use brachistochrone_status, only: status_ok, status_invalid_argument, &
-                                      status_not_finite
-    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+    use brachistochrone_status, only: status_ok, argument_status
     implicit none
     private
 
@@ -60,14 +58,8 @@ contains
         real(qp), intent(out) :: t      !! time to fall from radius 1 to r
         integer, intent(out) :: status  !! status_ok, status_not_finite, status_invalid_argument
         t = 0.0_qp
-        if (.not. ieee_is_finite(r)) then
-            status = status_not_finite
-        else if (r < 0.0_qp .or. r > 1.0_qp) then
-            status = status_invalid_argument
-        else
-            t = radial_time(r)
-            status = status_ok
-        end if
+        status = argument_status([r], r >= 0.0_qp .and. r <= 1.0_qp)
+        if (status == status_ok) t = radial_time(r)
     end subroutine radial_fall_time
 
     !> Checked kappa(rho), eq. (75). On a bad argument kappa = 0 and status is set.
@@ -76,14 +68,8 @@ contains
         real(qp), intent(out) :: kappa  !! greatest lower bound of the time to radius rho
         integer, intent(out) :: status  !! status_ok, status_not_finite, status_invalid_argument
         kappa = 0.0_qp
-        if (.not. ieee_is_finite(rho)) then
-            status = status_not_finite
-        else if (rho < 0.0_qp .or. rho > 1.0_qp) then
-            status = status_invalid_argument
-        else
-            kappa = kappa_time(rho)
-            status = status_ok
-        end if
+        status = argument_status([rho], rho >= 0.0_qp .and. rho <= 1.0_qp)
+        if (status == status_ok) kappa = kappa_time(rho)
     end subroutine kappa_bound
 
 end module closed_forms

@@ -32,14 +32,12 @@
 !! Second half-arch (eq. 29): F = 2 F(R,R) - F(r,R) = F(R,R) + int_0^L, one panel.
 module inverse_square
     use brachistochrone_kinds, only: qp, pi, eps_qp
-    use brachistochrone_status, only: status_ok, status_invalid_argument, &
-                                      status_not_finite
+    use brachistochrone_status, only: status_ok, argument_status
     use closed_forms, only: radial_time
     use fast_math, only: inverse_sqrt
     use chebyshev, only: chebyshev_table, chebyshev_points, chebyshev_fit
     use summation, only: compensated_sum
     use quadrature, only: gauss_legendre_rule, gauss_legendre
-    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     use, intrinsic :: iso_fortran_env, only: real64
     implicit none
     private
@@ -473,13 +471,8 @@ contains
     pure function check_radii(r, big_r) result(status)
         real(qp), intent(in) :: r, big_r
         integer :: status
-        if (.not. (ieee_is_finite(r) .and. ieee_is_finite(big_r))) then
-            status = status_not_finite
-        else if (big_r <= 0.0_qp .or. big_r >= 1.0_qp .or. r < big_r .or. r > 1.0_qp) then
-            status = status_invalid_argument
-        else
-            status = status_ok
-        end if
+        status = argument_status([r, big_r], big_r > 0.0_qp .and. big_r < 1.0_qp .and. &
+                                             r >= big_r .and. r <= 1.0_qp)
     end function check_radii
 
     !> Angle, arclength and time at radius r on the first half-arch (eqs. 55-57) or on
@@ -550,17 +543,12 @@ contains
         real(qp), intent(in) :: big_r  !! apse radius, 0 < R <= 1
         real(qp), intent(out) :: value !! Theta(R,R); 0 on error
         integer, intent(out) :: status !! status_ok or the reason
-        real(qp) :: scaled, slope
+        real(qp) :: scaled
         value = 0.0_qp
-        if (.not. ieee_is_finite(big_r)) then
-            status = status_not_finite
-        else if (big_r <= 0.0_qp .or. big_r > 1.0_qp) then
-            status = status_invalid_argument
-        else
-            call self%whole(1)%evaluate(big_r, scaled, slope)
-            value = (1.0_qp - big_r)*scaled
-            status = status_ok
-        end if
+        status = argument_status([big_r], big_r > 0.0_qp .and. big_r <= 1.0_qp)
+        if (status /= status_ok) return
+        call self%whole(1)%evaluate(big_r, scaled)
+        value = (1.0_qp - big_r)*scaled
     end subroutine apse_angle
 
 end module inverse_square
