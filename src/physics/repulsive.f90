@@ -68,6 +68,7 @@ module repulsive
     use quadrature, only: univariate_integrand, gauss_legendre_rule, gauss_legendre, &
                           integrate_adaptive
     use roots, only: root_function, bracketed_secant
+    use quad_math, only: expm1
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan, ieee_value, &
                                              ieee_positive_inf
     implicit none
@@ -583,27 +584,9 @@ contains
         if (arch == arch_unbounded) then
             call set_from_gap(exp(lambda), curve)
         else
-            call set_bounded(-0.5_qp*expm1_qp(lambda), exp(lambda), curve)
+            call set_bounded(-0.5_qp*expm1(lambda), exp(lambda), curve)
         end if
     end subroutine curve_of_lambda
-
-    !> exp(x) - 1 without cancellation for small |x| (series below 1/8, else direct).
-    pure function expm1_qp(x) result(y)
-        real(qp), intent(in) :: x
-        real(qp) :: y, term
-        integer :: n
-        if (abs(x) >= 0.125_qp) then
-            y = exp(x) - 1.0_qp
-            return
-        end if
-        y = 0.0_qp
-        term = 1.0_qp
-        do n = 1, 60
-            term = term*x/real(n, qp)
-            y = y + term
-            if (abs(term) <= 0.25_qp*eps_qp*abs(y)) exit
-        end do
-    end function expm1_qp
 
     pure subroutine mismatch_evaluate(self, x, f, df, status)
         class(angle_mismatch), intent(in) :: self
