@@ -14,7 +14,7 @@ y = a(1 - cos phi) through B has (phi - sin phi)/(1 - cos phi) = x/y, and then
 
     a = y/(1 - cos phi),  t = phi sqrt(a/g),  s = 4 a (1 - cos(phi/2)).
 
-Deliberately independent of the Fortran code (src/physics/uniform_gravity.f90), which
+Deliberately independent of the Fortran code (src/fields/brachistochrone_uniform_gravity.f90), which
 uses series, half-angle forms and two different unknowns to avoid cancellation: here
 the textbook formulas above are evaluated as written, and cancellation is beaten by
 brute working precision instead: each row is computed at

@@ -6,7 +6,7 @@ Usage::
     .venv/bin/python scripts/make_whole_arch_reference.py [--out PATH] [--dps 50]
 
 The program tabulates these three functions of the apse radius R once per run
-(piecewise Chebyshev series, `src/physics/inverse_square.f90`), so they are checked
+(piecewise Chebyshev series, `src/fields/brachistochrone_inverse_square.f90`), so they are checked
 here on their own, over the whole of 0 < R < 1: near 0 and 1, next to the ends of the
 16 pieces, and on a regular grid. Every R is a dyadic rational (exact in binary128 and
 in mpmath), so the program and the reference see the same number.

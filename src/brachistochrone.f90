@@ -16,24 +16,25 @@ module brachistochrone
                                       status_not_finite, status_no_convergence, &
                                       status_outside_domain, status_invalid_argument, &
                                       status_bad_estimates, status_word, status_message
-    use closed_forms, only: fall_to_centre_time, apse_angle_limit, inaccessible_angle, &
-                            radial_fall_time, kappa_bound, radial_time, kappa_time
-    use inverse_square, only: inverse_square_model, new_inverse_square_model
-    use two_point, only: endpoint_solution, solve_endpoint, solve_endpoint_secant, &
+    use brachistochrone_closed_forms, only: fall_to_centre_time, apse_angle_limit, &
+            inaccessible_angle, radial_fall_time, kappa_bound, radial_time, kappa_time
+    use brachistochrone_inverse_square, only: inverse_square_model, new_inverse_square_model
+    use brachistochrone_two_point, only: endpoint_solution, solve_endpoint, solve_endpoint_secant, &
                          arch_none, arch_first, arch_second, arch_complete, arch_radial, &
                          arch_inaccessible, arch_word
-    use uniform_gravity, only: uniform_brachistochrone, cycloid_point, isochrone_time, &
-                               isochrone_time_quadrature, joined_arches_period, &
-                               joined_arches_period_quadrature, complete_elliptic_k, &
-                               pendulum_period, pendulum_period_quadrature
-    use curve, only: curve_samples, sample_endpoint_curve, sample_complete_arch, &
+    use brachistochrone_uniform_gravity, only: uniform_brachistochrone, cycloid_point, &
+            isochrone_time, isochrone_time_quadrature, joined_arches_period, &
+            joined_arches_period_quadrature, complete_elliptic_k, pendulum_period, &
+            pendulum_period_quadrature
+    use brachistochrone_curve, only: curve_samples, sample_endpoint_curve, sample_complete_arch, &
                      apsidal_locus, min_curve_points
-    use speed_laws, only: speed_law, inverse_square_law, power_law, logarithmic_law, &
-                          harmonic_law
-    use central_force, only: central_force_model, new_central_force_model
-    use harmonic, only: harmonic_planet, harmonic_tunnel, planet_tunnel, hypocycloid_point, &
-                        hypocycloid_at, surface_to_surface, solve_harmonic_endpoint, &
-                        tautochrone_time, plan_tunnel, great_circle_angle
+    use brachistochrone_speed_laws, only: speed_law, inverse_square_law, power_law, &
+            logarithmic_law, harmonic_law
+    use brachistochrone_central_force, only: central_force_model, new_central_force_model
+    use brachistochrone_harmonic, only: harmonic_planet, harmonic_tunnel, planet_tunnel, &
+                                        hypocycloid_point, hypocycloid_at, surface_to_surface, &
+                                        solve_harmonic_endpoint, tautochrone_time, plan_tunnel, &
+                                        great_circle_angle
     implicit none
     private
 

@@ -5,11 +5,12 @@ module test_central_force
     use, intrinsic :: iso_fortran_env, only: output_unit
     use brachistochrone_kinds, only: qp, pi, eps_qp
     use brachistochrone_status, only: status_ok, status_inaccessible
-    use closed_forms, only: radial_time
-    use speed_laws, only: inverse_square_law, power_law, logarithmic_law, harmonic_law
-    use central_force, only: central_force_model, new_central_force_model
-    use inverse_square, only: inverse_square_model, new_inverse_square_model
-    use two_point, only: endpoint_solution, solve_endpoint, arch_inaccessible
+    use brachistochrone_closed_forms, only: radial_time
+    use brachistochrone_speed_laws, only: inverse_square_law, power_law, logarithmic_law, &
+            harmonic_law
+    use brachistochrone_central_force, only: central_force_model, new_central_force_model
+    use brachistochrone_inverse_square, only: inverse_square_model, new_inverse_square_model
+    use brachistochrone_two_point, only: endpoint_solution, solve_endpoint, arch_inaccessible
     use testing, only: check, check_close, check_digits, section, digits_of_agreement
     implicit none
     private

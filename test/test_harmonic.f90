@@ -9,17 +9,19 @@ module test_harmonic
     use brachistochrone_status, only: status_ok, status_not_finite, status_invalid_argument, &
                                       status_rho_out_of_range, status_psi_out_of_range, &
                                       status_latitude_out_of_range, status_bad_planet
-    use quadrature, only: univariate_integrand, gauss_legendre_rule, gauss_legendre, &
-                          integrate_adaptive
-    use arches, only: arch_first, arch_second, arch_complete, arch_radial
-    use harmonic, only: hypocycloid_point, harmonic_tunnel, harmonic_planet, planet_tunnel, &
-                        hypocycloid_radius, hypocycloid_angle, hypocycloid_time, &
-                        hypocycloid_arclength, hypocycloid_position, hypocycloid_phase, &
-                        hypocycloid_angle_at_radius, &
-                        tunnel_time, tunnel_arclength, tunnel_surface_angle, &
-                        hypocycloid_at, surface_to_surface, solve_harmonic_endpoint, &
-                        tautochrone_time, angular_frequency, time_scale, &
-                        great_circle_angle, plan_tunnel, earth_radius_km, earth_gravity
+    use brachistochrone_quadrature, only: univariate_integrand, gauss_legendre_rule, &
+            gauss_legendre, integrate_adaptive
+    use brachistochrone_arches, only: arch_first, arch_second, arch_complete, arch_radial
+    use brachistochrone_harmonic, only: hypocycloid_point, harmonic_tunnel, harmonic_planet, &
+                                        planet_tunnel, hypocycloid_radius, hypocycloid_angle, &
+                                        hypocycloid_time, hypocycloid_arclength, &
+                                        hypocycloid_position, hypocycloid_phase, &
+                                        hypocycloid_angle_at_radius, tunnel_time, &
+                                        tunnel_arclength, tunnel_surface_angle, hypocycloid_at, &
+                                        surface_to_surface, solve_harmonic_endpoint, &
+                                        tautochrone_time, angular_frequency, time_scale, &
+                                        great_circle_angle, plan_tunnel, earth_radius_km, &
+                                        earth_gravity
     use reference_tables, only: csv_table, read_reference
     use testing, only: check, check_close, check_digits, section, digits_of_agreement
     implicit none

@@ -2,9 +2,9 @@
 module test_io
     use brachistochrone_kinds, only: qp, pi
     use brachistochrone_status, only: status_inaccessible
-    use two_point, only: endpoint_solution, arch_inaccessible
-    use endpoint_input, only: endpoint_table, read_endpoint_file
-    use result_output, only: format_real, csv_row, write_results_namelist
+    use brachistochrone_two_point, only: endpoint_solution, arch_inaccessible
+    use brachistochrone_endpoint_input, only: endpoint_table, read_endpoint_file
+    use brachistochrone_result_output, only: format_real, csv_row, write_results_namelist
     use testing, only: check, section
     implicit none
     private

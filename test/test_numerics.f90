@@ -2,13 +2,13 @@
 module test_numerics
     use brachistochrone_kinds, only: qp, pi, eps_qp
     use brachistochrone_status, only: status_ok
-    use quadrature, only: gauss_legendre_rule, gauss_legendre, univariate_integrand, &
-                          integrate, integrate_adaptive, even_periodic_rule, &
-                          even_periodic_trapezoid
-    use roots, only: root_function, newton_bracketed, secant
-    use chebyshev, only: chebyshev_table, chebyshev_points, chebyshev_fit
-    use summation, only: compensated_sum
-    use double_quad, only: double_quad_number, two_sum, two_product, &
+    use brachistochrone_quadrature, only: gauss_legendre_rule, gauss_legendre, &
+            univariate_integrand, integrate, integrate_adaptive, even_periodic_rule, &
+            even_periodic_trapezoid
+    use brachistochrone_roots, only: root_function, newton_bracketed, secant
+    use brachistochrone_chebyshev, only: chebyshev_table, chebyshev_points, chebyshev_fit
+    use brachistochrone_summation, only: compensated_sum
+    use brachistochrone_double_quad, only: double_quad_number, two_sum, two_product, &
                            operator(*), operator(/), operator(-)
     use reference_tables, only: csv_table, read_reference
     use testing, only: check, check_close, section

@@ -8,12 +8,12 @@ module test_physics
                                       status_rho_out_of_range, status_psi_out_of_range, &
                                       status_not_finite, status_invalid_argument, &
                                       status_outside_domain
-    use closed_forms, only: radial_time, kappa_time, fall_to_centre_time, &
+    use brachistochrone_closed_forms, only: radial_time, kappa_time, fall_to_centre_time, &
                             apse_angle_limit, inaccessible_angle, radial_fall_time
-    use quadrature, only: univariate_integrand, gauss_legendre, integrate_adaptive
-    use inverse_square, only: inverse_square_model, new_inverse_square_model, arch_values, &
-                              level_fine
-    use two_point, only: endpoint_solution, solve_endpoint, solve_endpoint_secant, &
+    use brachistochrone_quadrature, only: univariate_integrand, gauss_legendre, integrate_adaptive
+    use brachistochrone_inverse_square, only: inverse_square_model, new_inverse_square_model, &
+            arch_values, level_fine
+    use brachistochrone_two_point, only: endpoint_solution, solve_endpoint, solve_endpoint_secant, &
                          arch_first, arch_second, arch_complete, arch_radial, &
                          arch_inaccessible, arch_word
     use reference_tables, only: csv_table, read_reference

@@ -10,7 +10,7 @@ module test_repulsive
     use brachistochrone_status, only: status_ok, status_rho_below_start, &
                                       status_not_finite, status_psi_out_of_range, &
                                       status_invalid_argument
-    use repulsive, only: repulsive_curve, repulsive_solution, curve_from_k2, &
+    use brachistochrone_repulsive, only: repulsive_curve, repulsive_solution, curve_from_k2, &
                          curve_from_gap, curve_from_apse, curve_from_apse_gap, &
                          repulsive_values, critical_values, repulsive_radial_time, &
                          solve_repulsive, arch_unbounded, arch_first_half, &

@@ -10,10 +10,10 @@ module test_uniform_gravity
     use brachistochrone_status, only: status_ok, status_not_finite, status_no_convergence, &
                                       status_above_start, status_parameter_out_of_range, &
                                       status_word
-    use uniform_gravity, only: uniform_brachistochrone, cycloid_point, isochrone_time, &
-                               isochrone_time_quadrature, joined_arches_period, &
-                               joined_arches_period_quadrature, complete_elliptic_k, &
-                               pendulum_period, pendulum_period_quadrature
+    use brachistochrone_uniform_gravity, only: uniform_brachistochrone, cycloid_point, &
+            isochrone_time, isochrone_time_quadrature, joined_arches_period, &
+            joined_arches_period_quadrature, complete_elliptic_k, pendulum_period, &
+            pendulum_period_quadrature
     use reference_tables, only: csv_table, read_reference
     use testing, only: check, check_close, check_digits, section, digits_of_agreement
     implicit none

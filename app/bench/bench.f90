@@ -10,8 +10,8 @@ program bench
     use, intrinsic :: iso_fortran_env, only: int64, error_unit, output_unit
     use brachistochrone, only: qp, inverse_square_model, new_inverse_square_model, &
                                endpoint_solution, status_ok
-    use endpoint_input, only: endpoint_table, read_endpoint_file
-    use batch_run, only: solve_rows
+    use brachistochrone_endpoint_input, only: endpoint_table, read_endpoint_file
+    use brachistochrone_batch_run, only: solve_rows
     !$ use omp_lib, only: omp_set_num_threads
     implicit none
     type(endpoint_table) :: table

@@ -17,11 +17,11 @@ program family
                                curve_samples, sample_complete_arch, apsidal_locus, &
                                status_ok, status_word
     use brachistochrone_version, only: program_name, program_version
-    use endpoint_input, only: max_curve_points
-    use result_output, only: format_real, temporary_name, commit_file
-    use run_support, only: timestamp
-    use strings, only: integer_text
-    use command_line, only: get_argument
+    use brachistochrone_endpoint_input, only: max_curve_points
+    use brachistochrone_result_output, only: format_real, temporary_name, commit_file
+    use brachistochrone_run_support, only: timestamp
+    use brachistochrone_strings, only: integer_text
+    use brachistochrone_command_line, only: get_argument
     implicit none
 
     character(len=*), parameter :: name = program_name//'-family'

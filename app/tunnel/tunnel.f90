@@ -11,8 +11,8 @@ program tunnel
     use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
     use brachistochrone_kinds, only: qp
     use brachistochrone_status, only: status_ok, status_message
-    use harmonic, only: harmonic_planet, planet_tunnel, plan_tunnel, earth_radius_km, &
-                        earth_gravity
+    use brachistochrone_harmonic, only: harmonic_planet, planet_tunnel, plan_tunnel, &
+                                        earth_radius_km, earth_gravity
     implicit none
     type(harmonic_planet) :: planet
     type(planet_tunnel) :: route

@@ -16,10 +16,10 @@ program main
     use brachistochrone, only: inverse_square_model, new_inverse_square_model, &
                                endpoint_solution
     use brachistochrone_version, only: program_name, program_version
-    use endpoint_input, only: endpoint_table, message
-    use command_line, only: run_options, parse_command_line, write_usage, exit_ok, &
+    use brachistochrone_endpoint_input, only: endpoint_table, message
+    use brachistochrone_command_line, only: run_options, parse_command_line, write_usage, exit_ok, &
                             exit_input
-    use batch_run, only: prepare_run, print_report, solve_rows, deliver_results
+    use brachistochrone_batch_run, only: prepare_run, print_report, solve_rows, deliver_results
     implicit none
 
     type(run_options) :: options

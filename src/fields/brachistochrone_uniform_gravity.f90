@@ -18,13 +18,13 @@
 !!
 !! Every routine is `elemental`, checks its arguments and returns a status; on an error
 !! all outputs are 0.
-module uniform_gravity
+module brachistochrone_uniform_gravity
     use brachistochrone_kinds, only: qp, pi, eps_qp
     use brachistochrone_status, only: status_ok, status_not_finite, status_no_convergence, &
                                       status_above_start, status_parameter_out_of_range
-    use roots, only: root_function, newton_bracketed
-    use quadrature, only: univariate_integrand, gauss_legendre_rule, gauss_legendre, &
-                          integrate_adaptive
+    use brachistochrone_roots, only: root_function, newton_bracketed
+    use brachistochrone_quadrature, only: univariate_integrand, gauss_legendre_rule, &
+            gauss_legendre, integrate_adaptive
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_value, ieee_positive_inf
     implicit none
     private
@@ -647,4 +647,4 @@ contains
         value = 1.0_qp/sqrt(sin(x)**2 + (self%complement*cos(x))**2)
     end function circle_integrand_evaluate
 
-end module uniform_gravity
+end module brachistochrone_uniform_gravity

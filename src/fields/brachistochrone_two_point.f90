@@ -18,17 +18,17 @@
 !!   moving limit L(R).
 !! - `solve_endpoint_secant`: the paper's secant method from R0, R1 with its stopping
 !!   rule |R_n - R_(n-1)| < tol and a step count, which reproduces Table 1.
-module two_point
+module brachistochrone_two_point
     use brachistochrone_kinds, only: qp, pi, eps_qp
     use brachistochrone_status, only: status_ok, status_inaccessible, &
                                       status_rho_out_of_range, status_psi_out_of_range, &
                                       status_not_finite, status_outside_domain
-    use closed_forms, only: radial_time, kappa_time, inaccessible_angle
-    use inverse_square, only: inverse_square_model, arch_values, level_fine, level_coarse, &
-                              level_rough, level_digits
-    use roots, only: root_function, newton_bracketed, secant
-    use arches, only: arch_none, arch_first, arch_second, arch_complete, arch_radial, &
-                      arch_inaccessible, arch_word
+    use brachistochrone_closed_forms, only: radial_time, kappa_time, inaccessible_angle
+    use brachistochrone_inverse_square, only: inverse_square_model, arch_values, level_fine, &
+            level_coarse, level_rough, level_digits
+    use brachistochrone_roots, only: root_function, newton_bracketed, secant
+    use brachistochrone_arches, only: arch_none, arch_first, arch_second, arch_complete, &
+                                      arch_radial, arch_inaccessible, arch_word
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     implicit none
     private
@@ -459,4 +459,4 @@ contains
         call finish(model, solution, fun%second, x, rho - x)
     end function solve_endpoint_secant
 
-end module two_point
+end module brachistochrone_two_point

@@ -12,7 +12,7 @@
 !! itself must come out right to the last bit, such as the nodes and weights of a
 !! quadrature rule. The transformations need quad arithmetic rounded to nearest and
 !! evaluated as written (no value-unsafe optimisations such as -ffast-math).
-module double_quad
+module brachistochrone_double_quad
     use brachistochrone_kinds, only: qp
     implicit none
     private
@@ -178,4 +178,4 @@ contains
         q = fast_two_sum(first, remainder%hi/real(m, qp))
     end function divide_integer
 
-end module double_quad
+end module brachistochrone_double_quad

@@ -1,8 +1,8 @@
 !> What a batch driver needs besides input and output: dates and progress reports.
-module run_support
+module brachistochrone_run_support
     use, intrinsic :: iso_fortran_env, only: error_unit, int64
     use brachistochrone_version, only: program_name
-    use strings, only: integer_text
+    use brachistochrone_strings, only: integer_text
     implicit none
     private
 
@@ -148,4 +148,4 @@ contains
         end if
     end function duration
 
-end module run_support
+end module brachistochrone_run_support

@@ -2,7 +2,7 @@
 !! exactly and accumulated apart, so a sum of n terms errs by about one rounding of the
 !! result instead of up to n of them. For one-time work where the last digit matters,
 !! such as building tables; the hot loops use plain sums.
-module summation
+module brachistochrone_summation
     use brachistochrone_kinds, only: qp
     implicit none
     private
@@ -41,4 +41,4 @@ contains
         sum = self%total + self%correction
     end function value
 
-end module summation
+end module brachistochrone_summation

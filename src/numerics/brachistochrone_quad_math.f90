@@ -2,7 +2,7 @@
 !!
 !! Divided differences of speed laws such as x^a need (x^a - y^a)/(x - y) without
 !! cancellation when x is close to y: t^a - 1 = expm1(a log1p(t - 1)).
-module quad_math
+module brachistochrone_quad_math
     use, intrinsic :: iso_c_binding, only: c_float128
     use brachistochrone_kinds, only: qp
     implicit none
@@ -29,4 +29,4 @@ module quad_math
         end function log1p
     end interface
 
-end module quad_math
+end module brachistochrone_quad_math

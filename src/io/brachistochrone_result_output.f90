@@ -7,15 +7,15 @@
 !! a temporary name in the target directory and renamed into place only when complete:
 !! a failed or killed run never leaves a partial file under the target name, and an
 !! existing file is replaced only when the caller says so.
-module result_output
+module brachistochrone_result_output
     use, intrinsic :: iso_c_binding, only: c_char, c_int, c_null_char
     use, intrinsic :: iso_fortran_env, only: compiler_version, compiler_options
     use brachistochrone_kinds, only: qp
     use brachistochrone_status, only: status_word, status_ok
     use brachistochrone_version, only: program_name, program_version
-    use two_point, only: endpoint_solution, arch_word
-    use endpoint_input, only: endpoint_table, group_name
-    use strings, only: integer_text
+    use brachistochrone_two_point, only: endpoint_solution, arch_word
+    use brachistochrone_endpoint_input, only: endpoint_table, group_name
+    use brachistochrone_strings, only: integer_text
     implicit none
     private
 
@@ -398,4 +398,4 @@ contains
         if (text(len(text):) == '.') text = text(:len(text) - 1)
     end function short_real
 
-end module result_output
+end module brachistochrone_result_output

@@ -7,7 +7,7 @@
 !! by one Newton step r <- r (3 - q r^2)/2, which squares the error (~4e-39, below the
 !! rounding of binary128) using multiplications only. Where no native kind wider than
 !! double exists the seed is double precision and a second step is taken.
-module fast_math
+module brachistochrone_fast_math
     use brachistochrone_kinds, only: qp
     use, intrinsic :: iso_fortran_env, only: real64
     implicit none
@@ -42,4 +42,4 @@ contains
         end if
     end function inverse_sqrt
 
-end module fast_math
+end module brachistochrone_fast_math

@@ -3,7 +3,7 @@
 !! Shared by every force law (`two_point` for the inverse-square force re-exports them,
 !! `harmonic` uses them for the uniform planet), so that a module can report arches
 !! without depending on another force law's solver.
-module arches
+module brachistochrone_arches
     implicit none
     private
 
@@ -42,4 +42,4 @@ contains
         end select
     end function arch_word
 
-end module arches
+end module brachistochrone_arches

@@ -30,14 +30,14 @@
 !! are tabulated once, as piecewise Chebyshev series, when the model is built; an
 !! evaluation then costs a Horner sum of at most 21 terms instead of a quadrature.
 !! Second half-arch (eq. 29): F = 2 F(R,R) - F(r,R) = F(R,R) + int_0^L, one panel.
-module inverse_square
+module brachistochrone_inverse_square
     use brachistochrone_kinds, only: qp, pi, eps_qp
     use brachistochrone_status, only: status_ok, argument_status
-    use closed_forms, only: radial_time
-    use fast_math, only: inverse_sqrt
-    use chebyshev, only: chebyshev_table, chebyshev_points, chebyshev_fit
-    use summation, only: compensated_sum
-    use quadrature, only: gauss_legendre_rule, gauss_legendre
+    use brachistochrone_closed_forms, only: radial_time
+    use brachistochrone_fast_math, only: inverse_sqrt
+    use brachistochrone_chebyshev, only: chebyshev_table, chebyshev_points, chebyshev_fit
+    use brachistochrone_summation, only: compensated_sum
+    use brachistochrone_quadrature, only: gauss_legendre_rule, gauss_legendre
     use, intrinsic :: iso_fortran_env, only: real64
     implicit none
     private
@@ -551,4 +551,4 @@ contains
         value = (1.0_qp - big_r)*scaled
     end subroutine apse_angle
 
-end module inverse_square
+end module brachistochrone_inverse_square

@@ -60,15 +60,15 @@
 !! extra turn costs asymptotically 2 pi sqrt(27/8) = 11.5429... in time, and g shrinks
 !! by exp(-2 pi sqrt3) per turn;
 !! both limits are approached like O(g) (measured in test_repulsive).
-module repulsive
+module brachistochrone_repulsive
     use brachistochrone_kinds, only: qp, pi, eps_qp
     use brachistochrone_status, only: status_ok, status_psi_out_of_range, &
                                       status_not_finite, status_invalid_argument, &
                                       status_no_convergence, status_rho_below_start
-    use quadrature, only: univariate_integrand, gauss_legendre_rule, gauss_legendre, &
-                          integrate_adaptive
-    use roots, only: root_function, bracketed_secant
-    use quad_math, only: expm1
+    use brachistochrone_quadrature, only: univariate_integrand, gauss_legendre_rule, &
+            gauss_legendre, integrate_adaptive
+    use brachistochrone_roots, only: root_function, bracketed_secant
+    use brachistochrone_quad_math, only: expm1
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan, ieee_value, &
                                              ieee_positive_inf
     implicit none
@@ -759,4 +759,4 @@ contains
         end subroutine solve_target
     end subroutine solve_repulsive
 
-end module repulsive
+end module brachistochrone_repulsive

@@ -15,18 +15,18 @@
 !! by adaptive Gauss-Legendre with an error estimate (`integrate_adaptive`); the second
 !! half-arch by (29). This engine is slower than the inverse-square fast path and is
 !! checked against it, and against closed forms for the harmonic law and Keam's limit.
-module central_force
+module brachistochrone_central_force
     use brachistochrone_kinds, only: qp, pi, eps_qp
     use brachistochrone_status, only: status_ok, status_inaccessible, &
                                       status_rho_out_of_range, status_psi_out_of_range, &
                                       status_not_finite, status_outside_domain, &
                                       status_no_convergence, argument_status
-    use quadrature, only: univariate_integrand, gauss_legendre_rule, gauss_legendre, &
-                          integrate_adaptive
-    use roots, only: root_function, bracketed_secant
-    use speed_laws, only: speed_law
-    use two_point, only: endpoint_solution, arch_first, arch_second, arch_complete, &
-                         arch_radial, arch_inaccessible
+    use brachistochrone_quadrature, only: univariate_integrand, gauss_legendre_rule, &
+            gauss_legendre, integrate_adaptive
+    use brachistochrone_roots, only: root_function, bracketed_secant
+    use brachistochrone_speed_laws, only: speed_law
+    use brachistochrone_two_point, only: endpoint_solution, arch_first, arch_second, &
+            arch_complete, arch_radial, arch_inaccessible
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     implicit none
     private
@@ -341,4 +341,4 @@ contains
         solution%has_time = .true.
     end function general_solve
 
-end module central_force
+end module brachistochrone_central_force

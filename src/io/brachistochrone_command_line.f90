@@ -1,7 +1,7 @@
 !> The command line shared by the batch drivers (serial/OpenMP and MPI).
-module command_line
+module brachistochrone_command_line
     use brachistochrone_version, only: program_version
-    use result_output, only: output_request
+    use brachistochrone_result_output, only: output_request
     implicit none
     private
 
@@ -162,4 +162,4 @@ contains
         call get_command_argument(k, argument)
     end function get_argument
 
-end module command_line
+end module brachistochrone_command_line

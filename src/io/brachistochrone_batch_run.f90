@@ -3,25 +3,27 @@
 !! Kept out of the library's physics (which never reads, prints or stops) and out of the
 !! drivers (which only parse, decide and exit), so the serial/OpenMP program and the MPI
 !! program solve rows and write files with the same code and give the same bytes.
-module batch_run
+module brachistochrone_batch_run
     use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
     use brachistochrone_kinds, only: qp
-    use inverse_square, only: inverse_square_model
-    use two_point, only: endpoint_solution, solve_endpoint, solve_endpoint_secant
-    use central_force, only: central_force_model, new_central_force_model
-    use speed_laws, only: power_law, logarithmic_law, harmonic_law
-    use repulsive, only: repulsive_solution, solve_repulsive, repulsive_arch_unbounded => &
-                         arch_unbounded, repulsive_arch_first => arch_first_half
-    use arches, only: arch_first, arch_second, arch_complete, arch_radial, arch_unbounded
+    use brachistochrone_inverse_square, only: inverse_square_model
+    use brachistochrone_two_point, only: endpoint_solution, solve_endpoint, solve_endpoint_secant
+    use brachistochrone_central_force, only: central_force_model, new_central_force_model
+    use brachistochrone_speed_laws, only: power_law, logarithmic_law, harmonic_law
+    use brachistochrone_repulsive, only: repulsive_solution, solve_repulsive, &
+            repulsive_arch_unbounded => arch_unbounded, repulsive_arch_first => arch_first_half
+    use brachistochrone_arches, only: arch_first, arch_second, arch_complete, arch_radial, &
+                                      arch_unbounded
     use brachistochrone_status, only: status_ok, status_no_convergence
-    use endpoint_input, only: endpoint_table, message, read_endpoint_file, max_curve_points
-    use result_output, only: output_request, write_outputs, write_table_header, &
+    use brachistochrone_endpoint_input, only: endpoint_table, message, read_endpoint_file, &
+            max_curve_points
+    use brachistochrone_result_output, only: output_request, write_outputs, write_table_header, &
                              write_table_row
-    use curve_output, only: write_curves
+    use brachistochrone_curve_output, only: write_curves
     use brachistochrone_version, only: program_name
-    use command_line, only: run_options, exit_ok, exit_input, exit_unsolved, exit_io
-    use run_support, only: progress_type, timestamp
-    use strings, only: integer_text
+    use brachistochrone_command_line, only: run_options, exit_ok, exit_input, exit_unsolved, exit_io
+    use brachistochrone_run_support, only: progress_type, timestamp
+    use brachistochrone_strings, only: integer_text
     implicit none
     private
 
@@ -264,4 +266,4 @@ contains
         end subroutine one
     end subroutine check_targets
 
-end module batch_run
+end module brachistochrone_batch_run

@@ -8,9 +8,9 @@
 !! V(x) = P(x)/(1 - x) = -D(x,1) and (P(x) - P(R))/(x - R) near x = 1 and x = R.
 !! Units: radius of A = 1 and |mu| = 1 (inverse-square: Tee's units; harmonic: R_E = 1,
 !! omega = 1).
-module speed_laws
+module brachistochrone_speed_laws
     use brachistochrone_kinds, only: qp
-    use quad_math, only: expm1, log1p
+    use brachistochrone_quad_math, only: expm1, log1p
     implicit none
     private
 
@@ -205,4 +205,4 @@ contains
         angle = acos(-1.0_qp)/2.0_qp
     end function harmonic_limit
 
-end module speed_laws
+end module brachistochrone_speed_laws

@@ -1,5 +1,5 @@
 !> Small text helpers shared by the I/O modules.
-module strings
+module brachistochrone_strings
     implicit none
     private
 
@@ -28,4 +28,4 @@ contains
         end do
     end function lower
 
-end module strings
+end module brachistochrone_strings

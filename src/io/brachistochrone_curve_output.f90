@@ -7,15 +7,16 @@
 !! Same provenance and write-then-rename as the other outputs (`result_output`).
 !! Curves are sampled in parallel (OpenMP) in blocks of rows, written in row order, so
 !! memory stays bounded and the file does not depend on the number of threads.
-module curve_output
+module brachistochrone_curve_output
     use brachistochrone_status, only: status_word
-    use inverse_square, only: inverse_square_model
-    use two_point, only: endpoint_solution
-    use curve, only: curve_samples, sample_endpoint_curve
-    use endpoint_input, only: endpoint_table
-    use result_output, only: format_real, write_provenance, temporary_name, finish_file
-    use run_support, only: progress_type
-    use strings, only: integer_text
+    use brachistochrone_inverse_square, only: inverse_square_model
+    use brachistochrone_two_point, only: endpoint_solution
+    use brachistochrone_curve, only: curve_samples, sample_endpoint_curve
+    use brachistochrone_endpoint_input, only: endpoint_table
+    use brachistochrone_result_output, only: format_real, write_provenance, temporary_name, &
+            finish_file
+    use brachistochrone_run_support, only: progress_type
+    use brachistochrone_strings, only: integer_text
     implicit none
     private
 
@@ -132,4 +133,4 @@ contains
         call finish_file(unit, temporary, path, ios, io_message, status, message)
     end subroutine write_curves
 
-end module curve_output
+end module brachistochrone_curve_output

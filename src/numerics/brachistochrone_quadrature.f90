@@ -15,11 +15,11 @@
 !!   = |G(panel) - G(left half) - G(right half)|, which bounds the error of the coarser
 !!   value and so over-states the error of the value returned. There is no precision
 !!   floor: relative tolerances down to a few `epsilon(1.0_qp)` are honoured.
-module quadrature
+module brachistochrone_quadrature
     use brachistochrone_kinds, only: qp, pi, eps_qp
     use brachistochrone_status, only: status_ok, status_no_convergence, &
                                       status_invalid_argument
-    use double_quad, only: double_quad_number, two_sum, two_product, to_quad, &
+    use brachistochrone_double_quad, only: double_quad_number, two_sum, two_product, to_quad, &
                            operator(+), operator(-), operator(*), operator(/)
     implicit none
     private
@@ -334,4 +334,4 @@ contains
 
     end subroutine integrate_adaptive
 
-end module quadrature
+end module brachistochrone_quadrature

@@ -8,8 +8,8 @@
 !! standard's namelist semantics stay authoritative. Token positions are kept in
 !! integer arrays, so a file of a million values costs a few arrays, not a million
 !! strings.
-module namelist_scan
-    use strings, only: integer_text, lower
+module brachistochrone_namelist_scan
+    use brachistochrone_strings, only: integer_text, lower
     implicit none
     private
 
@@ -314,4 +314,4 @@ contains
         shown = text(i:j - 1)
     end function snippet
 
-end module namelist_scan
+end module brachistochrone_namelist_scan

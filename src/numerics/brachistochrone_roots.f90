@@ -10,7 +10,7 @@
 !!   without a derivative: superlinear, and never leaves the bracket.
 !! - `secant`: the paper's secant method (Tee 1998, sec. 5.1) with its stopping rule
 !!   |x_n - x_(n-1)| < tol and a count of the steps, for reproducing Table 1.
-module roots
+module brachistochrone_roots
     use brachistochrone_kinds, only: qp
     use brachistochrone_status, only: status_ok, status_no_convergence, &
                                       status_outside_domain, status_bad_estimates
@@ -269,4 +269,4 @@ contains
         end do
     end subroutine secant
 
-end module roots
+end module brachistochrone_roots

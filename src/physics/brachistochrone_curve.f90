@@ -30,14 +30,15 @@
 !!
 !! Radial fall (psi = 0, R = 0) samples the segment r = 1 - s. The apsidal locus
 !! (theta = Theta(R,R), r = R, for given R) comes with S(R,R) and T(R,R).
-module curve
+module brachistochrone_curve
     use brachistochrone_kinds, only: qp, eps_qp
     use brachistochrone_status, only: status_ok, status_invalid_argument, &
                                       status_not_finite, status_no_convergence
-    use closed_forms, only: radial_time
-    use inverse_square, only: inverse_square_model, arch_values, level_fine, level_coarse
-    use two_point, only: endpoint_solution, arch_first, arch_second, arch_complete, &
-                         arch_radial
+    use brachistochrone_closed_forms, only: radial_time
+    use brachistochrone_inverse_square, only: inverse_square_model, arch_values, level_fine, &
+            level_coarse
+    use brachistochrone_two_point, only: endpoint_solution, arch_first, arch_second, &
+            arch_complete, arch_radial
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     implicit none
     private
@@ -445,4 +446,4 @@ contains
         end do
     end subroutine invert_arclength
 
-end module curve
+end module brachistochrone_curve

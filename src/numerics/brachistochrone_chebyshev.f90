@@ -17,9 +17,9 @@
 !! Building is in two steps so that the caller can evaluate several functions at the
 !! same points in one pass: `chebyshev_points` gives the points, `chebyshev_fit` turns
 !! the values there into a `chebyshev_table`.
-module chebyshev
+module brachistochrone_chebyshev
     use brachistochrone_kinds, only: qp, pi
-    use summation, only: compensated_sum
+    use brachistochrone_summation, only: compensated_sum
     implicit none
     private
 
@@ -194,4 +194,4 @@ contains
         end if
     end subroutine evaluate
 
-end module chebyshev
+end module brachistochrone_chebyshev

@@ -78,15 +78,15 @@
 !! and the time pi sqrt(R/g) sqrt(1 - rho_m^2). The antipodal (diametral) tunnel takes
 !! pi sqrt(R/g) = 2531.7 s = 42.2 min (Saitoh's "roughly 41 min" is too short by 1.2 min;
 !! 41 min would need R = 6000 km).
-module harmonic
+module brachistochrone_harmonic
     use brachistochrone_kinds, only: qp, pi, eps_qp
     use brachistochrone_status, only: status_ok, status_not_finite, status_invalid_argument, &
                                       status_rho_out_of_range, status_psi_out_of_range, &
                                       status_latitude_out_of_range, &
                                       status_bad_planet
-    use arches, only: arch_none, arch_first, arch_second, arch_complete, arch_radial
-    use roots, only: root_function, newton_bracketed
-    use quadrature, only: univariate_integrand, gauss_legendre, integrate_adaptive
+    use brachistochrone_arches, only: arch_none, arch_first, arch_second, arch_complete, arch_radial
+    use brachistochrone_roots, only: root_function, newton_bracketed
+    use brachistochrone_quadrature, only: univariate_integrand, gauss_legendre, integrate_adaptive
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     implicit none
     private
@@ -699,4 +699,4 @@ contains
         route%status = tunnel%status
     end function plan_tunnel
 
-end module harmonic
+end module brachistochrone_harmonic

@@ -4,7 +4,7 @@
 !! used by the solver and are also the test suite's oracles for the limits the theory
 !! proves. Every `acos` of the paper is written as an `atan2` of square roots, which
 !! keeps full relative precision at both ends of the range.
-module closed_forms
+module brachistochrone_closed_forms
     use brachistochrone_kinds, only: qp, pi
     use brachistochrone_status, only: status_ok, argument_status
     implicit none
@@ -72,4 +72,4 @@ contains
         if (status == status_ok) kappa = kappa_time(rho)
     end subroutine kappa_bound
 
-end module closed_forms
+end module brachistochrone_closed_forms

@@ -21,10 +21,10 @@
 !! with a sentinel) and gfortran's `read(nml=)` assigns the values, straight into
 !! real(qp); (3) the arrays are checked for too few or too many values, NaN, Infinity,
 !! ranges and r0/r1 pairs. Memory is proportional to the table.
-module endpoint_input
+module brachistochrone_endpoint_input
     use brachistochrone_kinds, only: qp, pi
-    use namelist_scan, only: group_scan, scan_group
-    use strings, only: integer_text, lower
+    use brachistochrone_namelist_scan, only: group_scan, scan_group
+    use brachistochrone_strings, only: integer_text, lower
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     implicit none
     private
@@ -539,4 +539,4 @@ contains
         close (unit)
     end subroutine read_text
 
-end module endpoint_input
+end module brachistochrone_endpoint_input
