@@ -146,7 +146,7 @@ contains
         integer :: k, status
         call section('physics: radial fall t(r) (46) and kappa(rho) (75)')
         call check_close(radial_time(0.0_qp), pi/sqrt(8.0_qp), 4.0_qp, 't(0) = pi/sqrt(8)')
-        ! (47) prints 1.1107207345385916: a misprint in the 12th digit (README "Errata")
+        ! (47) prints 1.1107207345385916: a misprint in the 12th digit (docs/ERRATA.md)
         call check_digits(fall_to_centre_time, 1.1107207345395916_qp, 16.0_qp, &
                           't(0) = 1.1107207345395916 (16 digits)')
         call check(abs(fall_to_centre_time - 1.1107207345385916_qp) > 5.0e-13_qp, &
@@ -255,7 +255,7 @@ contains
 
     subroutine table1_tests(model)
         type(inverse_square_model), intent(in) :: model
-        ! Tee (1998) Table 1 as printed, rho of rows 1-2 swapped back (ERRATA.md)
+        ! Tee (1998) Table 1 as printed, rho of rows 1-2 swapped back (docs/ERRATA.md)
         real(qp), parameter :: rho(5) = [0.2_qp, 0.5_qp, 0.7_qp, 0.9_qp, 1.0_qp]
         real(qp), parameter :: psi(5) = [1.2_qp, 0.1_qp, 1.8_qp, 0.4_qp, 2.0_qp]
         real(qp), parameter :: r0(5) = [0.2_qp, 0.4_qp, 0.6_qp, 0.8_qp, 0.2_qp]
@@ -283,7 +283,7 @@ contains
             call check(fixed15(b%arclength) == printed_s(i), trim(row)//': s printed digits')
             call check(fixed15(b%time) == printed_t(i), trim(row)//': t printed digits')
         end do
-        ! the rows as misprinted have other answers (ERRATA.md)
+        ! the rows as misprinted have other answers (docs/ERRATA.md)
         b = solve_endpoint(model, 0.5_qp, 1.2_qp)
         call check_digits(b%apse_radius, 0.38719841090429114_qp, 16.0_qp, &
                           'misprinted row 1 (0.5, 1.2) has R-bar = 0.38719841090429114')

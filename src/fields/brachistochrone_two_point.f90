@@ -3,7 +3,7 @@
 !! Tee 1998, sec. 5: the brachistochrone through B is found from its apse radius R-bar,
 !! the root in (0, rho] of Upsilon(R) = psi, where Upsilon(R) = Theta(rho,R) if B is on
 !! the first half-arch (psi <= Theta(rho,rho)) and 2 Theta(R,R) - Theta(rho,R) on the
-!! second. The half-arch is decided once, from the endpoint (see ERRATA.md).
+!! second. The half-arch is decided once, from the endpoint (see docs/ERRATA.md).
 !!
 !! Two solvers:
 !! - `solve_endpoint` (default, no guesses): (0, rho] brackets the root. It is split at
