@@ -1,7 +1,11 @@
 !> brachistochrone: solve a table of endpoints read from a namelist file.
 !!
 !!     brachistochrone [options] FILE.nml      (see --help and the README)
+!!     brachistochrone family ...              (complete arches, apsidal locus; family.f90)
+!!     brachistochrone tunnel ...              (tunnels through a planet; tunnel.f90)
 !!
+!! The first argument `family` or `tunnel` selects a subcommand (an input file of that
+!! name is `./family`).
 !! Exit codes: 0 every endpoint solved; 1 usage or input error (nothing written);
 !! 2 some endpoints have no solution (files written, their status says why);
 !! 3 I/O error.
@@ -15,6 +19,8 @@ program main
     use brachistochrone_command_line, only: run_options, parse_command_line, write_usage, exit_ok, &
                             exit_input
     use brachistochrone_batch_run, only: prepare_run, print_report, solve_rows, deliver_results
+    use brachistochrone_app_family, only: run_family
+    use brachistochrone_app_tunnel, only: run_tunnel
     implicit none
 
     type(run_options) :: options
@@ -26,9 +32,12 @@ program main
     integer :: status, first, last, code
     logical :: finished
 
+    call run_subcommand()
     call parse_command_line(options, status, problem)
     if (options%help) then
         call write_usage(output_unit, program_name)
+        write (output_unit, '(a)') 'Subcommands: '//program_name//' family --help, '// &
+            program_name//' tunnel --help'
         stop exit_ok, quiet=.true.
     else if (options%version) then
         write (output_unit, '(a)') program_name//' '//program_version
@@ -52,6 +61,18 @@ program main
     stop code, quiet=.true.
 
 contains
+
+    !> `brachistochrone family ...` and `brachistochrone tunnel ...` run the subcommand
+    !! (which stops); any other first argument returns to the batch program.
+    subroutine run_subcommand()
+        character(len=8) :: first
+        if (command_argument_count() < 1) return
+        call get_command_argument(1, first)
+        select case (first)
+        case ('family');  call run_family(2)
+        case ('tunnel');  call run_tunnel(2)
+        end select
+    end subroutine run_subcommand
 
     subroutine fail(code, text)
         integer, intent(in) :: code

@@ -9,7 +9,8 @@ Usage::
 1. Generates N random accessible endpoints (rho uniform in [0.01, 1], psi uniform in
    (0, 2 pi/3)) into bench-out/bench.nml.
 2. Times the Fortran default solver on all of them with `brachistochrone-bench`
-   (release build, one thread, median of REPEATS passes over the table).
+   (fpm example `example/bench`; release build, one thread and two, median of REPEATS
+   passes over the table).
 3. Times SciPy in double precision (QUADPACK on the paper's transformed integrals
    (65), (77), (81), brentq on the bracket (0, rho]) on the first K endpoints, and
    mpmath at 34 digits (mp.quad on the same integrals, findroot with a bracket) on
@@ -45,8 +46,9 @@ def write_nml(path, rows):
         len(rows), ",\n  ".join(r for r, _ in rows), ",\n  ".join(p for _, p in rows)))
 
 
-def fpm_exe(name):
-    out = subprocess.run([FPM, "run", "--profile", "release", "--runner", "echo", name],
+def fpm_exe(name, example=False):
+    kind = ["--example"] if example else []
+    out = subprocess.run([FPM, "run", "--profile", "release", *kind, "--runner", "echo", name],
                          cwd=ROOT, check=True, capture_output=True, text=True).stdout
     return str(ROOT / out.strip().splitlines()[-1])
 
@@ -153,7 +155,8 @@ def main(argv=None):
     subprocess.run([FPM, "build", "--profile", "release"], cwd=ROOT, check=True,
                    capture_output=True)
     def fortran(threads):
-        bench = subprocess.run([fpm_exe("brachistochrone-bench"), str(out_dir / "bench.nml"),
+        bench = subprocess.run([fpm_exe("brachistochrone-bench", example=True),
+                                str(out_dir / "bench.nml"),
                                 str(args.repeats), str(threads)], check=True,
                                capture_output=True, text=True)
         return dict(line.split(" = ") for line in bench.stdout.splitlines())

@@ -8,7 +8,7 @@ Every number plotted comes from the Fortran programs, run with
   - brachistochrone (the batch program): radial fall (psi = 0) with --curves, Tee's
     Table 1 (data/table1.nml plus curve_points) with --curves, and a polar grid of
     endpoints with --csv for the map of least times and the sector of inaccessibility;
-  - brachistochrone-family: the complete brachistochrones R = 0.9 ... 0.01 (--curves)
+  - brachistochrone family: the complete brachistochrones R = 0.9 ... 0.01 (--curves)
     and the apsidal locus (--locus).
 The one exception is figure 6, the repulsive radial fall (49), which this project does
 not compute: it is the closed form evaluated with NumPy. The dotted R -> 0 limits of
@@ -107,14 +107,14 @@ def compute(data, quick):
 
     # complete arches and the apsidal locus, by apse radius
     family = data / "family.csv"
-    run("brachistochrone-family", "--force", "--points", points, "--curves", family,
+    run("brachistochrone", "family", "--force", "--points", points, "--curves", family,
         *FAMILY_R)
     out["family"] = split_curves(read_csv(family))
     locus_r = np.concatenate([1.0 - np.arange(0, 200 if not quick else 40)
                               / (200.0 if not quick else 40.0),
                               np.logspace(np.log10(0.005), -9, 25 if not quick else 8)])
     locus = data / "locus.csv"
-    run("brachistochrone-family", "--force", "--locus", locus, *["%.17g" % r for r in locus_r])
+    run("brachistochrone", "family", "--force", "--locus", locus, *["%.17g" % r for r in locus_r])
     out["locus"] = read_csv(locus)
 
     # radial fall to (almost) the centre, sampled by the batch program

@@ -1,15 +1,15 @@
-!> brachistochrone-family: complete brachistochrones and the apsidal locus, by apse radius.
+!> `brachistochrone family`: complete brachistochrones and the apsidal locus, by apse radius.
 !!
-!!     brachistochrone-family [--curves OUT.csv] [--points N] [--locus OUT.csv] [--force]
+!!     brachistochrone family [--curves OUT.csv] [--points N] [--locus OUT.csv] [--force]
 !!                            R1 [R2 ...]
 !!
 !! The brachistochrones from A are a one-parameter family (Tee 1998, sec. 4): this
-!! program samples the members named by their apse radii R (figures 9-14 of the paper),
-!! and the apsidal locus theta = Theta(R,R) (figure 7), with the library's `curve`
-!! module. Outputs are CSV files with provenance comments, written to a temporary name
-!! and renamed when complete. Exit codes: 0 done; 1 usage error (nothing written);
-!! 3 I/O error.
-program family
+!! subcommand samples the members named by their apse radii R (figures 9-14 of the
+!! paper), and the apsidal locus theta = Theta(R,R) (figure 7), with the library's
+!! `curve` module. Outputs are CSV files with provenance comments, written to a temporary
+!! name and renamed when complete. Exit codes: 0 done; 1 usage error (nothing written);
+!! 3 I/O error. (Until 0.2.0 this was the program `brachistochrone-family`.)
+module brachistochrone_app_family
     use, intrinsic :: iso_fortran_env, only: error_unit, output_unit, compiler_version, &
                                              compiler_options
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
@@ -23,93 +23,124 @@ program family
     use brachistochrone_strings, only: integer_text
     use brachistochrone_command_line, only: get_argument
     implicit none
+    private
 
-    character(len=*), parameter :: name = program_name//'-family'
+    public :: run_family
+
+    character(len=*), parameter :: name = program_name//' family'
     integer, parameter :: exit_ok = 0, exit_usage = 1, exit_io = 3
     type(inverse_square_model) :: model
-    character(len=:), allocatable :: curves_path, locus_path, argument, command, date
+    character(len=:), allocatable :: curves_path, locus_path, command, date
     real(qp), allocatable :: radii(:)
     type(curve_samples), allocatable :: arches(:)
     type(curve_samples) :: locus
-    integer :: points, k, count_arguments, ios, j
+    integer :: points
     logical :: force
-    real(qp) :: value
-
-    curves_path = ''
-    locus_path = ''
-    points = 401
-    force = .false.
-    allocate (radii(0))
-    count_arguments = command_argument_count()
-    k = 0
-    do while (k < count_arguments)
-        k = k + 1
-        argument = get_argument(k)
-        select case (argument)
-        case ('-h', '--help')
-            call usage(output_unit)
-            stop exit_ok, quiet=.true.
-        case ('--version')
-            write (output_unit, '(a)') name//' '//program_version
-            stop exit_ok, quiet=.true.
-        case ('--force')
-            force = .true.
-        case ('--curves', '--locus', '--points')
-            if (k == count_arguments) call fail(exit_usage, argument//' needs a value')
-            k = k + 1
-            select case (argument)
-            case ('--curves'); curves_path = get_argument(k)
-            case ('--locus');  locus_path = get_argument(k)
-            case ('--points')
-                argument = get_argument(k)
-                read (argument, *, iostat=ios) points
-                if (ios /= 0 .or. verify(argument, '0123456789') /= 0 .or. &
-                    points < 2 .or. points > max_curve_points) &
-                    call fail(exit_usage, '--points needs a whole number 2 <= N <= '// &
-                              integer_text(max_curve_points)//', got "'//argument//'"')
-            end select
-        case default
-            if (argument(1:1) == '-' .and. verify(argument(2:2), '.0123456789') /= 0) &
-                call fail(exit_usage, 'unknown option '//argument//' (see --help)')
-            read (argument, *, iostat=ios) value
-            if (ios /= 0 .or. verify(argument, '+-.0123456789eEdDqQ') /= 0) &
-                call fail(exit_usage, '"'//argument//'" is not an apse radius; write a '// &
-                          'number 0 < R < 1 such as 0.3')
-            if (.not. ieee_is_finite(value) .or. value <= 0.0_qp .or. value > 1.0_qp) &
-                call fail(exit_usage, 'apse radius '//argument//' must satisfy 0 < R < 1 '// &
-                          '(R = 1 only on the locus, where it is A)')
-            radii = [radii, value]
-        end select
-    end do
-    if (size(radii) == 0) call fail(exit_usage, 'no apse radius given (see --help)')
-    if (len(curves_path) == 0 .and. len(locus_path) == 0) &
-        call fail(exit_usage, 'nothing to write: give --curves OUT.csv and/or --locus OUT.csv')
-    if (any(radii == 1.0_qp) .and. len(curves_path) > 0) &
-        call fail(exit_usage, 'apse radius 1 has no complete brachistochrone (it is the '// &
-                  'point A); leave it out of --curves')
-    call refuse_existing(curves_path)
-    call refuse_existing(locus_path)
-
-    call get_command_line(command)
-    date = timestamp()
-    model = new_inverse_square_model()
-    if (len(curves_path) > 0) then
-        allocate (arches(size(radii)))
-        !$omp parallel do schedule(dynamic, 1) default(shared) private(j)
-        do j = 1, size(radii)
-            arches(j) = sample_complete_arch(model, radii(j), points)
-        end do
-        !$omp end parallel do
-        call write_file(curves_path, 'curves')
-    end if
-    if (len(locus_path) > 0) then
-        locus = apsidal_locus(model, radii)
-        call write_file(locus_path, 'locus')
-    end if
-    stop exit_ok, quiet=.true.
 
 contains
 
+    !> Run the subcommand on the command arguments from number `first` on; stops with the
+    !! exit code.
+    subroutine run_family(first)
+        integer, intent(in) :: first !! index of the subcommand's first argument
+        call parse_arguments(first)
+        call compute_and_write()
+    end subroutine run_family
+
+    !> Options and apse radii from the command line; stops on --help, --version or errors.
+    subroutine parse_arguments(first)
+        integer, intent(in) :: first
+        character(len=:), allocatable :: argument
+        integer :: k, count_arguments, ios
+        curves_path = ''
+        locus_path = ''
+        points = 401
+        force = .false.
+        allocate (radii(0))
+        count_arguments = command_argument_count()
+        k = first - 1
+        do while (k < count_arguments)
+            k = k + 1
+            argument = get_argument(k)
+            select case (argument)
+            case ('-h', '--help')
+                call usage(output_unit)
+                stop exit_ok, quiet=.true.
+            case ('--version')
+                write (output_unit, '(a)') name//' '//program_version
+                stop exit_ok, quiet=.true.
+            case ('--force')
+                force = .true.
+            case ('--curves', '--locus', '--points')
+                if (k == count_arguments) call fail(exit_usage, argument//' needs a value')
+                k = k + 1
+                select case (argument)
+                case ('--curves'); curves_path = get_argument(k)
+                case ('--locus');  locus_path = get_argument(k)
+                case ('--points')
+                    argument = get_argument(k)
+                    read (argument, *, iostat=ios) points
+                    if (ios /= 0 .or. verify(argument, '0123456789') /= 0 .or. &
+                        points < 2 .or. points > max_curve_points) &
+                        call fail(exit_usage, '--points needs a whole number 2 <= N <= '// &
+                                  integer_text(max_curve_points)//', got "'//argument//'"')
+                end select
+            case default
+                call add_radius(argument)
+            end select
+        end do
+    end subroutine parse_arguments
+
+    !> Check the request, sample the curves and write the files; stops with the exit code.
+    subroutine compute_and_write()
+        integer :: j
+        if (size(radii) == 0) call fail(exit_usage, 'no apse radius given (see --help)')
+        if (len(curves_path) == 0 .and. len(locus_path) == 0) &
+            call fail(exit_usage, 'nothing to write: give --curves OUT.csv and/or '// &
+                      '--locus OUT.csv')
+        if (any(radii == 1.0_qp) .and. len(curves_path) > 0) &
+            call fail(exit_usage, 'apse radius 1 has no complete brachistochrone (it is the '// &
+                      'point A); leave it out of --curves')
+        call refuse_existing(curves_path)
+        call refuse_existing(locus_path)
+
+        call get_command_line(command)
+        date = timestamp()
+        model = new_inverse_square_model()
+        if (len(curves_path) > 0) then
+            allocate (arches(size(radii)))
+            !$omp parallel do schedule(dynamic, 1) default(shared) private(j)
+            do j = 1, size(radii)
+                arches(j) = sample_complete_arch(model, radii(j), points)
+            end do
+            !$omp end parallel do
+            call write_file(curves_path, 'curves')
+        end if
+        if (len(locus_path) > 0) then
+            locus = apsidal_locus(model, radii)
+            call write_file(locus_path, 'locus')
+        end if
+        stop exit_ok, quiet=.true.
+    end subroutine compute_and_write
+
+    !> Append one apse radius given on the command line, or stop with a usage error.
+    subroutine add_radius(argument)
+        character(len=*), intent(in) :: argument
+        real(qp) :: value
+        integer :: ios
+        if (argument(1:1) == '-' .and. verify(argument(2:2), '.0123456789') /= 0) &
+            call fail(exit_usage, 'unknown option '//argument//' (see --help)')
+        read (argument, *, iostat=ios) value
+        if (ios /= 0 .or. verify(argument, '+-.0123456789eEdDqQ') /= 0) &
+            call fail(exit_usage, '"'//argument//'" is not an apse radius; write a '// &
+                      'number 0 < R < 1 such as 0.3')
+        if (.not. ieee_is_finite(value) .or. value <= 0.0_qp .or. value > 1.0_qp) &
+            call fail(exit_usage, 'apse radius '//argument//' must satisfy 0 < R < 1 '// &
+                      '(R = 1 only on the locus, where it is A)')
+        radii = [radii, value]
+    end subroutine add_radius
+
+    !> Write the curves or the locus to `path` (temporary name, renamed when complete).
     subroutine write_file(path, kind)
         character(len=*), intent(in) :: path, kind
         character(len=:), allocatable :: temporary
@@ -228,4 +259,4 @@ contains
         call get_command(text)
     end subroutine get_command_line
 
-end program family
+end module brachistochrone_app_family

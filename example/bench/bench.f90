@@ -1,6 +1,6 @@
-!> brachistochrone-bench: time the default solver on an endpoint table.
+!> brachistochrone-bench (an fpm example, a developer tool): time the default solver.
 !!
-!!     brachistochrone-bench FILE.nml [REPEATS [THREADS]]
+!!     fpm run --profile release --example brachistochrone-bench -- FILE.nml [REPEATS [THREADS]]
 !!
 !! Solves every endpoint of FILE.nml REPEATS times (default 5) on THREADS OpenMP threads
 !! (default 1) with the program's own loop (`solve_rows`), and prints the median wall
@@ -12,6 +12,7 @@ program bench
                                endpoint_solution, status_ok
     use brachistochrone_endpoint_input, only: endpoint_table, read_endpoint_file
     use brachistochrone_batch_run, only: solve_rows
+    use brachistochrone_version, only: program_version
     !$ use omp_lib, only: omp_set_num_threads
     implicit none
     type(endpoint_table) :: table
@@ -24,12 +25,23 @@ program bench
     character(len=32) :: text
 
     if (command_argument_count() < 1) then
-        write (error_unit, '(a)') 'usage: brachistochrone-bench FILE.nml [REPEATS]'
+        write (error_unit, '(a)') 'usage: brachistochrone-bench FILE.nml [REPEATS [THREADS]]'
         stop 1, quiet=.true.
     end if
     call get_command_argument(1, length=length)
     allocate (character(len=length) :: path)
     call get_command_argument(1, path)
+    if (path == '--version') then
+        write (output_unit, '(a)') 'brachistochrone-bench '//program_version
+        stop 0, quiet=.true.
+    else if (path == '--help' .or. path == '-h') then
+        write (output_unit, '(a)') 'usage: brachistochrone-bench FILE.nml [REPEATS [THREADS]]'
+        write (output_unit, '(a)') 'Solves FILE.nml REPEATS times (default 5) on THREADS '// &
+            'OpenMP threads (default 1);'
+        write (output_unit, '(a)') 'prints the median and best wall time per endpoint as '// &
+            'key = value lines.'
+        stop 0, quiet=.true.
+    end if
     repeats = 5
     if (command_argument_count() >= 2) then
         call get_command_argument(2, text)
