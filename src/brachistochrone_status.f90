@@ -14,7 +14,7 @@ module brachistochrone_status
               status_outside_domain, status_invalid_argument, status_bad_estimates, &
               status_latitude_out_of_range, status_bad_planet, &
               status_above_start, status_parameter_out_of_range, &
-              status_rho_below_start
+              status_rho_below_start, status_unknown_force, status_bad_exponent
     public :: status_word, status_message, argument_status
 
     !> Success.
@@ -47,6 +47,11 @@ module brachistochrone_status
     integer, parameter :: status_parameter_out_of_range = 12
     !> Repulsive field: endpoint radius below the start (rho < 1), never reached.
     integer, parameter :: status_rho_below_start = 13
+    !> A field named by a string (the C interface) that is not one of 'inverse_square',
+    !! 'power', 'logarithmic', 'harmonic', 'repulsive'.
+    integer, parameter :: status_unknown_force = 14
+    !> The power law F = mu/r^n needs a finite exponent n > 1.
+    integer, parameter :: status_bad_exponent = 15
 
 contains
 
@@ -85,6 +90,8 @@ contains
         case (status_above_start);      word = 'above_start'
         case (status_parameter_out_of_range); word = 'parameter_out_of_range'
         case (status_rho_below_start);  word = 'rho_below_start'
+        case (status_unknown_force);    word = 'unknown_force'
+        case (status_bad_exponent);     word = 'bad_exponent'
         case default;                   word = 'unknown_status'
         end select
     end function status_word
@@ -127,6 +134,12 @@ contains
         case (status_rho_below_start)
             message = 'repulsive field: rho must satisfy rho >= 1 (the start A is at radius '// &
                       '1 and every path moves outward)'
+        case (status_unknown_force)
+            message = 'unknown force: use inverse_square, power, logarithmic, harmonic or '// &
+                      'repulsive'
+        case (status_bad_exponent)
+            message = 'the power law F = mu/r^n needs a finite exponent n > 1 (n = 1 is '// &
+                      'logarithmic)'
         case default
             message = 'unknown status'
         end select

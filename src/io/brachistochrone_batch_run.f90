@@ -28,7 +28,7 @@ module brachistochrone_batch_run
     private
 
     public :: prepare_run, print_report, solve_rows, deliver_results, check_slice, &
-              check_targets
+              check_targets, least_time_repulsive
 
 contains
 
