@@ -78,21 +78,18 @@ expect_ok fpm_user bash -c 'cd example/fpm_user && fpm run --profile release 2>/
 
 step "fpm install --prefix, PATH, and the README's Slurm snippet"
 quiet fpm install --profile release --prefix "$work/fpm"
-test -f "$work/fpm/lib/libbrachistochrone.a" && test -f "$work/fpm/include/brachistochrone.mod"
+test -f "$work/fpm/bin/brachistochrone"
+test -f "$work/fpm/lib/libbrachistochrone.a"
+test -f "$work/fpm/include/brachistochrone.mod"
 mkdir "$work/slurm"
 rows=40
-python3 - "$work/slurm/big.nml" "$rows" <<'PY'
-import math, sys
-n = int(sys.argv[2])
-rho = ", ".join("%.3f" % (0.05 + 0.9 * k / n) for k in range(n))
-psi = ", ".join("%.3f" % (2.0 * math.pi / 3.0 * (k + 0.5) / n) for k in range(n))
-open(sys.argv[1], "w").write("&endpoints\n n = %d\n rho = %s\n psi = %s\n/\n" % (n, rho, psi))
-PY
+python3 scripts/make_table.py "$rows" "$work/slurm/big.nml"
 snippet=$(sed -n '/^ *#SBATCH --array/,/--no-table --quiet$/p' README.md | sed 's/^ *//')
 grep -q '^n=1000000;' <<<"$snippet"
 (
     cd "$work/slurm"
     export PATH="$work/fpm/bin:$PATH"
+    test "$(command -v brachistochrone)" = "$work/fpm/bin/brachistochrone"
     for k in 0 1 2 3 4 5 6 7 8 9; do
         SLURM_ARRAY_TASK_ID=$k bash -euc "${snippet/n=1000000/n=$rows}"
     done
