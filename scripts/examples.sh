@@ -59,12 +59,13 @@ expect_ok cmake_user "$work/cmake_user/cmake_user"
 step "example/c_user: gcc, installed header, static and shared library (pkg-config)"
 export PKG_CONFIG_PATH="$work/prefix/lib/pkgconfig"
 lib="$work/prefix/lib"
+cc=(gcc -std=c11 -pthread -Wall -Wextra -O2 example/c_user/main.c)
 # shellcheck disable=SC2046
-quiet gcc -std=c11 -pthread -Wall -Wextra -O2 example/c_user/main.c $(pkg-config --cflags brachistochrone) \
-    "$lib/libbrachistochrone.a" -lgfortran -lquadmath -lgomp -lm -o "$work/c_user_static"
+quiet "${cc[@]}" $(pkg-config --cflags brachistochrone) "$lib/libbrachistochrone.a" \
+    -lgfortran -lquadmath -lgomp -lm -o "$work/c_user_static"
 # shellcheck disable=SC2046
-quiet gcc -std=c11 -pthread -Wall -Wextra -O2 example/c_user/main.c $(pkg-config --cflags --libs brachistochrone) \
-    -lquadmath -lm -Wl,-rpath,"$lib" -o "$work/c_user_shared"
+quiet "${cc[@]}" $(pkg-config --cflags --libs brachistochrone) -lquadmath -lm \
+    -Wl,-rpath,"$lib" -o "$work/c_user_shared"
 expect_ok c_user "$work/c_user_static"
 expect_ok c_user "$work/c_user_shared"
 
