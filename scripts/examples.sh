@@ -9,7 +9,8 @@
 #   4. example/python: ctypes on NumPy arrays, brachistochrone_solve_many.
 #   5. example/fpm_user: an fpm project with its own quadrature/roots/strings modules
 #      that depends on this package by path.
-#   6. fpm install --prefix, then the README's Slurm snippet as written (n made small).
+#   6. scripts/install.sh (fpm install --prefix, the header, pkg-config), c_user against
+#      it, then the README's Slurm snippet as written (n made small).
 # Usage: bash scripts/examples.sh        Exit status non-zero if anything failed.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -78,11 +79,15 @@ expect_ok fpm_user bash -c 'cd example/fpm_user && fpm run --profile release 2>/
 user_output=$(cd example/fpm_user && fpm run --profile release 2>/dev/null)
 grep -qx "library version $version" <<<"$user_output"
 
-step "fpm install --prefix, PATH, and the README's Slurm snippet"
-quiet fpm install --profile release --prefix "$work/fpm"
+step "fpm install --prefix (scripts/install.sh), PATH, and the README's Slurm snippet"
+quiet bash scripts/install.sh "$work/fpm"
 test -f "$work/fpm/bin/brachistochrone"
 test -f "$work/fpm/lib/libbrachistochrone.a"
 test -f "$work/fpm/include/brachistochrone.mod"
+# shellcheck disable=SC2046
+quiet "${cc[@]}" $(PKG_CONFIG_PATH="$work/fpm/lib/pkgconfig" pkg-config --static --cflags \
+    --libs brachistochrone) -o "$work/c_user_fpm"
+expect_ok c_user "$work/c_user_fpm"
 mkdir "$work/slurm"
 rows=40
 python3 scripts/make_table.py "$rows" "$work/slurm/big.nml"
