@@ -5,8 +5,9 @@
 !! Solves every endpoint of FILE.nml REPEATS times (default 5) on THREADS OpenMP threads
 !! (default 1) with the program's own loop (`solve_rows`), and prints the median wall
 !! time per endpoint, so that scripts/bench.py can compare it with SciPy and mpmath
-!! measured in the same run, and the time to build the inverse-square model (once per
-!! run, not in the per-endpoint figures). Every field of the namelist's `force` is
+!! measured in the same run, and the CPU time to build the inverse-square model (once per
+!! run, not in the per-endpoint figures; one thread, so CPU time is its cost even on a
+!! busy machine). Every field of the namelist's `force` is
 !! timed with the batch program's loop. Output: `key = value` lines.
 program bench
     use, intrinsic :: iso_fortran_env, only: int64, error_unit, output_unit
@@ -24,6 +25,7 @@ program bench
     integer(int64) :: start, finish, rate
     real(qp), allocatable :: seconds(:)
     real(qp) :: build_ms
+    real(qp) :: cpu_start, cpu_finish
     character(len=:), allocatable :: path
     character(len=32) :: text
 
@@ -65,10 +67,10 @@ program bench
         end do
         stop 1, quiet=.true.
     end if
-    call system_clock(start, rate)
+    call cpu_time(cpu_start)
     model = new_inverse_square_model()
-    call system_clock(finish)
-    build_ms = 1.0e3_qp*real(finish - start, qp)/real(rate, qp)
+    call cpu_time(cpu_finish)
+    build_ms = 1.0e3_qp*(cpu_finish - cpu_start)
     allocate (solutions(table%n), seconds(repeats))
     do k = 1, repeats
         call system_clock(start, rate)
@@ -87,7 +89,7 @@ program bench
         1.0e6_qp*median(seconds)/real(table%n, qp)
     write (output_unit, '(a,f0.3)') 'best_us_per_endpoint = ', &
         1.0e6_qp*minval(seconds)/real(table%n, qp)
-    write (output_unit, '(a,f0.1)') 'model_build_ms = ', build_ms
+    write (output_unit, '(a,f0.1)') 'model_build_cpu_ms = ', build_ms
 
 contains
 
