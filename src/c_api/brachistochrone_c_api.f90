@@ -14,6 +14,12 @@
 !! an OpenMP critical section, and only read afterwards; the messages are filled the same
 !! way. Every function may be called from several threads at once.
 !!
+!! Statuses (brachistochrone_status): status_ok; status_unknown_force for a name that is
+!! not a field's (or NULL); status_bad_exponent for 'power' with an exponent that is not a
+!! finite n > 1; otherwise the status of the field's solver for the endpoint:
+!! status_inaccessible, status_rho_out_of_range, status_psi_out_of_range,
+!! status_not_finite, status_no_convergence, status_rho_below_start ('repulsive').
+!!
 !! The force-name dispatch is in one place, `prepare_field` with `solve_in_field`: the
 !! stand-in for the field factory of issue 10.
 module brachistochrone_c_api
