@@ -51,3 +51,12 @@ def test_outputs_carry_the_version(run, tmp_path):
     result = run("data/table1.nml", "--csv", out, "--no-table", "--quiet")
     assert result.returncode == 0, result.stderr
     assert out.read_text().splitlines()[0] == f"# brachistochrone {VERSION}"
+
+
+def test_fpm_run_runs_the_batch_program_alone(app):
+    """`fpm run -- FILE.nml` (no program name) runs the one executable: the batch program."""
+    result = subprocess.run([str(FPM), "run", "--profile", "release", "--", "data/table1.nml",
+                             "--check"], cwd=ROOT, capture_output=True, text=True)
+    assert result.returncode == 0, result.stderr
+    lines = result.stdout.strip().splitlines()      # one program's verdict, nothing else
+    assert len(lines) == 1 and "5 endpoints" in lines[0], result.stdout
