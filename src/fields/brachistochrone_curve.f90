@@ -35,10 +35,11 @@ module brachistochrone_curve
     use brachistochrone_status, only: status_ok, status_invalid_argument, &
                                       status_not_finite, status_no_convergence
     use brachistochrone_closed_forms, only: radial_time
-    use brachistochrone_inverse_square, only: inverse_square_model, arch_values, level_fine, &
+    use brachistochrone_inverse_square, only: inverse_square_model, evaluate_arch, arch_values, &
+            level_fine, &
             level_coarse
-    use brachistochrone_two_point, only: endpoint_solution, arch_first, arch_second, &
-            arch_complete, arch_radial
+    use brachistochrone_solution, only: endpoint_solution
+    use brachistochrone_arches, only: arch_first, arch_second, arch_complete, arch_radial
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     implicit none
     private
@@ -158,7 +159,7 @@ contains
                 samples%s(k) = 0.0_qp
                 samples%t(k) = 0.0_qp
             else
-                values = model%evaluate_arch(level_fine, .false., big_r(k), big_r(k), &
+                values = evaluate_arch(model, level_fine, .false., big_r(k), big_r(k), &
                                              0.0_qp, .false., .true.)
                 samples%theta(k) = values%angle
                 samples%s(k) = values%arclength
@@ -241,7 +242,7 @@ contains
         start%u = sqrt(one_minus_big_r)
         start%r = 1.0_qp
         start%slope = arclength_slope(shape, 1.0_qp, .false.)
-        values = model%evaluate_arch(level_fine, end_second, end_r, big_r, end_gap, &
+        values = evaluate_arch(model, level_fine, end_second, end_r, big_r, end_gap, &
                                      .false., .true.)
         finish = arch_point(sqrt(end_gap), end_r, values%angle, values%arclength, &
                             values%time, arclength_slope(shape, end_r, end_second))
@@ -253,7 +254,7 @@ contains
         else if (.not. end_second) then
             call fill(model, shape, samples, start, finish, .false., 1, intervals, status)
         else
-            values = model%evaluate_arch(level_fine, .false., big_r, big_r, 0.0_qp, &
+            values = evaluate_arch(model, level_fine, .false., big_r, big_r, 0.0_qp, &
                                          .false., .true.)
             apse = arch_point(0.0_qp, big_r, values%angle, values%arclength, values%time, &
                               arclength_slope(shape, big_r, .true.))
@@ -375,7 +376,7 @@ contains
         real(qp) :: r
         r = min(1.0_qp, shape%big_r + u*u)
         ! r - R is exact where it is small (r <= 2R), so R + (r - R) = r
-        values = model%evaluate_arch(level, second, r, shape%big_r, r - shape%big_r, &
+        values = evaluate_arch(model, level, second, r, shape%big_r, r - shape%big_r, &
                                      .false., .true.)
         point = arch_point(u, r, values%angle, values%arclength, values%time, &
                            arclength_slope(shape, r, second))
