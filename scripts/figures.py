@@ -15,9 +15,10 @@ Every number plotted comes from the Fortran programs, run with
     from the library's routines: Saitoh's hypocycloid tunnels and their times on the
     Earth, the power-law families and apsidal loci (general engine), the repulsive
     bounded, critical and unbounded curves, the uniform-gravity cycloids and isochrone.
-The one exception is figure 6, the repulsive radial fall (49): the closed form evaluated
-with NumPy. The dotted R -> 0 limits of figures 10-14 are assembled from the program's
-radial-fall curve; circles, chords and the rays at pi/(n+1) are drawn as guides.
+Figure 6 (repulsive radial motion) is the K = 0 curve of the repulsive data, with the
+closed form (49) evaluated by NumPy beside it for comparison. The dotted R -> 0 limits of
+figures 10-14 are assembled from the program's radial-fall curve; circles, chords, the
+rays at pi/(n+1) and the unit conversion to minutes are drawn or done here.
 
 Units are the paper's: lengths in units of |OA| (A at radius 1), times in units of
 sqrt(|OA|^3/mu) (mu = 1), angles in radians. --quick uses coarse grids (for tests).
@@ -209,7 +210,7 @@ ISOCHRONE_H = [2.0 * k / 16 for k in range(1, 17)]
 
 def compute_fields(data, quick):
     """The other fields, from the library through the figure-data example."""
-    points = 101 if quick else 401
+    points = 101 if quick else 241
     out = {}
     out["hypocycloids"] = split_curves(example(data / "hypocycloids.csv", "hypocycloids",
                                                "--points", points, *TUNNEL_RHO))
@@ -305,15 +306,20 @@ def figure_5(d, out):
     save(fig, out, "fig05_radial_fall_time")
 
 
-def figure_6(out):
-    r = np.linspace(1.0, 6.0, 400)
-    t = (np.sqrt(r * (r - 1.0)) + np.log(np.sqrt(r) + np.sqrt(r - 1.0))) / math.sqrt(2.0)
+def figure_6(d, out):
+    radial = [c for c in d["unbounded"].values() if c["parameter"][0] == 3.0][0]   # K = 0
+    keep = radial["r"] <= 6.0
+    r, t = radial["r"][keep], radial["t"][keep]
     fig, ax = plt.subplots(figsize=(6, 4.2))
-    ax.plot(r, t, color="C3", label="repulsive radial motion, eq. (49)\n(closed form, NumPy)")
+    ax.plot(r, t, color="C3", label="repulsive radial motion (K = 0), eq. (40)")
+    closed = np.linspace(1.0, 6.0, 26)
+    ax.plot(closed, (np.sqrt(closed * (closed - 1.0)) + np.arcsinh(np.sqrt(closed - 1.0)))
+            / math.sqrt(2.0), "o", color="k", ms=3.5, mfc="none",
+            label="closed form (49), for comparison")
     ax.plot(r, r / math.sqrt(2.0), color="0.5", ls=":", lw=1,
             label=r"slope $1/\sqrt{2}$ (speed $\to\sqrt{2}$)")
     ax.set_xlim(1, 6)
-    ax.set_ylim(0, 4.5)
+    ax.set_ylim(0, 5.2)
     ax.set_xlabel("radius $r$ " + LENGTH)
     ax.set_ylabel("time $t$ " + TIME)
     title(ax, r"Fig. 6: time to be repelled from $r = 1$ to radius $r$ ($\mu = -1$)")
@@ -502,9 +508,18 @@ def figure_time_map(d, out):
     filled = ax.contourf(x, y, t, levels=np.linspace(0, 2.3, 24), cmap="viridis")
     levels = np.arange(0.2, 2.3, 0.2)
     lines = ax.contour(x, y, t, levels=levels, colors="w", linewidths=0.6)
-    labelled = levels[3::2]                                           # 0.8, 1.2, ...: room
+    # 0.8, 1.2, 1.6 on the contours, inside the disc; the 2.0 contour runs too close to
+    # the rim for an inline label (it was clipped there): its label sits outside, with an
+    # arrow
+    labelled = levels[3:-2:2]
     ax.clabel(lines, levels=labelled, fmt="%.1f", fontsize=8,
               manual=label_positions(lines, labelled))
+    rim = label_positions(lines, [2.0])
+    if rim:
+        phi = math.atan2(rim[0][1], rim[0][0])
+        ax.annotate("2.0", rim[0], xytext=(1.16 * math.cos(phi), 1.16 * math.sin(phi)),
+                    fontsize=8, ha="center", va="center",
+                    arrowprops={"arrowstyle": "-", "color": "0.3", "lw": 0.6})
     fig.colorbar(filled, ax=ax, shrink=0.8, label="least time $t$ from A " + TIME)
     disc_axes(ax)
     phi = np.linspace(SECTOR, 2 * math.pi - SECTOR, 100)
@@ -544,7 +559,7 @@ def figure_tunnels(d, out):
         ax.plot(c["x"], c["y"], lw=1.5, label=label, **styled(k, len(curves)))
         ax.plot(c["x"][-1], c["y"][-1], "o", color=styled(k, len(curves))["color"], ms=4)
     for k, (i, c) in enumerate(curves):
-        ax.plot([1, c["x"][-1]], [0, c["y"][-1]], color="0.45", lw=0.8, ls=":",
+        ax.plot([1, c["x"][-1]], [0, c["y"][-1]], color="0.45", lw=0.8, ls=":", zorder=1.5,
                 label="straight chords: %.1f min each" % (math.pi * scale) if k == 0 else None)
     ax.set_aspect("equal")
     ax.set_xlim(-1.12, 1.15)
@@ -753,7 +768,7 @@ def main():
         d.update(compute_fields(data.resolve(), args.quick))
         computed = time.monotonic()
         figure_5(d, args.out)
-        figure_6(args.out)
+        figure_6(d, args.out)
         figure_7(d, args.out)
         figure_8(d, args.out)
         figure_9(d, args.out)

@@ -386,7 +386,8 @@ contains
                 call usage()
                 stop exit_ok, quiet=.true.
             case ('--points', '--exponent', '--rmax', '--output')
-                if (k == command_argument_count()) call fail(exit_usage, argument//' needs a value')
+                if (k == command_argument_count()) &
+                    call fail(exit_usage, argument//' needs a value')
                 k = k + 1
                 call option_value(argument, get_argument(k))
             case default
