@@ -53,7 +53,6 @@ ANGLE = "(rad)"
 plt.rcParams.update({"font.size": 11, "axes.titlesize": 12, "legend.fontsize": 9,
                      "figure.dpi": 100, "savefig.dpi": 130, "svg.hashsalt": "brachistochrone",
                      "axes.grid": True, "grid.alpha": 0.3})
-COLOURS = plt.cm.viridis(np.linspace(0.0, 0.9, len(FAMILY_R)))
 # dash patterns told apart in greyscale (dotted is kept for limits and guides)
 DASHES = ["-", (0, (6, 2)), (0, (6, 2, 1.5, 2)), (0, (2, 1.5)), (0, (10, 2, 2, 2, 2, 2)),
           (0, (3, 1, 1, 1)), (0, (12, 3))]
@@ -780,9 +779,9 @@ def main():
         figure_power_apse_angle(d, args.out)
         figure_repulsive(d, args.out)
         figure_uniform(d, args.out)
+    files = sum(len(list(args.out.glob(pattern))) for pattern in ("*.png", "*.svg", "*.pdf"))
     print("figures: %d files in %s (programs %.1f s, plotting %.1f s)"
-          % (len(list(args.out.glob("*.png"))) * 2, args.out, computed - started,
-             time.monotonic() - computed))
+          % (files, args.out, computed - started, time.monotonic() - computed))
 
 
 if __name__ == "__main__":
