@@ -35,7 +35,8 @@
 !!                             of the same small-swing period (length 4) from the same
 !!                             height: h,time_quadrature,time_closed,pendulum_time
 !!
-!! --points N (default 201) is the number of points per curve. Output: CSV (36
+!! --points N (default 201) is the number of points per curve (complete arches: the
+!! largest odd number <= N, the apse in the middle). Output: CSV (36
 !! significant digits) with '#' provenance lines, to standard output or to FILE (written
 !! under a temporary name and renamed when complete). Exit codes: 0 done; 1 usage error
 !! (nothing written); 2 a library routine returned an error (nothing written); 3 I/O.
