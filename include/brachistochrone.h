@@ -21,7 +21,7 @@
  *
  * Status: 0 = solved; otherwise brachistochrone_status_message(status) says why
  * (for example 1: inaccessible, 2: rho out of range, 4: NaN or infinite input,
- * 14: unknown force name, 15: bad exponent). Unknown names and bad exponents return a
+ * 14: unknown field name, 15: bad exponent). Unknown names and bad exponents return a
  * status; nothing aborts.
  *
  * Thread safety: every function may be called from several threads at once. The

@@ -189,7 +189,7 @@ def main(argv=None):
           "digits of R, s, t agreeing with the Fortran results on that sample")
     print(f"2-thread throughput: {fortran_us / fortran_2_us:.2f} x one thread")
     print(f"building the model (once per run, not above): "
-          f"{report['model_build_cpu_ms']} ms of CPU")
+          f"{report['field_build_cpu_ms']} ms of CPU")
     return 0
 
 

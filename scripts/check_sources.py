@@ -3,8 +3,9 @@
 
     python3 scripts/check_sources.py CMAKE_BUILD_DIR
 
-fpm's list is the objects of `fpm build --profile release --list` (named after the
-source path with "/" turned into "_"); CMake's is the compile_commands.json of its build
+fpm's list is the objects of `fpm build --profile release --no-prune --list` (named
+after the source path with "/" turned into "_"; --no-prune as for `fpm install`, which
+otherwise leaves modules that no program of the package uses out of the library); CMake's is the compile_commands.json of its build
 directory (CMAKE_EXPORT_COMPILE_COMMANDS). The Fortran files under src/ (the library) and
 app/ (the program) that each compiles must be the same, and every such file in the tree
 must be compiled. Exit 0 if so, else 1 with the differences.
@@ -27,7 +28,7 @@ def mangled(relative):
 
 def fpm_objects():
     out = subprocess.run([str(FPM) if FPM.exists() else "fpm", "build", "--profile", "release",
-                          "--list"], cwd=ROOT, check=True, stdout=subprocess.PIPE,
+                          "--no-prune", "--list"], cwd=ROOT, check=True, stdout=subprocess.PIPE,
                          stderr=subprocess.STDOUT, text=True).stdout  # fpm lists on stderr
     names = set()
     for line in out.split():

@@ -84,6 +84,8 @@ quiet bash scripts/install.sh "$work/fpm"
 test -f "$work/fpm/bin/brachistochrone"
 test -f "$work/fpm/lib/libbrachistochrone.a"
 test -f "$work/fpm/include/brachistochrone.mod"
+# the whole library: one object per source file under src/
+test "$(ar t "$work/fpm/lib/libbrachistochrone.a" | wc -l)" -eq "$(find src -name '*.[fF]90' | wc -l)"
 # shellcheck disable=SC2046
 quiet "${cc[@]}" $(PKG_CONFIG_PATH="$work/fpm/lib/pkgconfig" pkg-config --static --cflags \
     --libs brachistochrone) -o "$work/c_user_fpm"

@@ -3,8 +3,9 @@
 # the C header and a pkg-config file.
 #   bash scripts/install.sh PREFIX
 # PREFIX/bin/brachistochrone, PREFIX/lib/libbrachistochrone.a, PREFIX/include/*.mod (all
-# from `fpm install --profile release --prefix PREFIX`), PREFIX/include/brachistochrone.h
-# and PREFIX/lib/pkgconfig/brachistochrone.pc. The CMake build installs the same and a
+# from `fpm install --profile release --no-prune --prefix PREFIX`; --no-prune keeps the
+# modules no program uses in the library), PREFIX/include/brachistochrone.h and
+# PREFIX/lib/pkgconfig/brachistochrone.pc. The CMake build installs the same and a
 # shared library and CMake package (README, "Install and use as a library").
 set -euo pipefail
 if [ $# -ne 1 ]; then
@@ -16,7 +17,7 @@ mkdir -p "$1"
 prefix=$(cd "$1" && pwd)
 fpm=fpm
 [ -x .venv/bin/fpm ] && fpm=.venv/bin/fpm
-"$fpm" install --profile release --prefix "$prefix"
+"$fpm" install --profile release --no-prune --prefix "$prefix"
 install -d "$prefix/include" "$prefix/lib/pkgconfig"
 install -m 644 include/brachistochrone.h "$prefix/include/"
 version=$(sed -n 's/^version *= *"\(.*\)"/\1/p' fpm.toml | head -1)

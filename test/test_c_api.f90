@@ -9,7 +9,7 @@ module test_c_api
     use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
     use brachistochrone_kinds, only: qp, pi
     use brachistochrone_status, only: status_ok, status_inaccessible, &
-                                      status_rho_out_of_range, status_unknown_force, &
+                                      status_rho_out_of_range, status_unknown_field, &
                                       status_bad_exponent
     use brachistochrone_c_api, only: brachistochrone_solve, brachistochrone_solve_q, &
                                      brachistochrone_solve_many, &
@@ -97,14 +97,14 @@ contains
         force = c_string('gravity')
         status = brachistochrone_solve(c_loc(force), 0.0_c_double, 0.5_c_double, &
                                        1.0_c_double, c_loc(r), c_loc(s), c_loc(t))
-        call check(status == status_unknown_force .and. ieee_is_nan(s), &
-                   'unknown force: status unknown_force, NaN outputs')
+        call check(status == status_unknown_field .and. ieee_is_nan(s), &
+                   'unknown force: status unknown_field, NaN outputs')
         status = brachistochrone_solve(c_null_ptr, 0.0_c_double, 0.5_c_double, &
                                        1.0_c_double, c_loc(r), c_loc(s), c_loc(t))
-        call check(status == status_unknown_force, 'NULL force name: unknown_force')
+        call check(status == status_unknown_field, 'NULL force name: unknown_field')
         call check(message_of(0_c_int) == 'solved' .and. &
                    message_of(-3_c_int) == 'unknown status' .and. &
-                   index(message_of(int(status_unknown_force, c_int)), 'inverse_square') > 0, &
+                   index(message_of(int(status_unknown_field, c_int)), 'inverse_square') > 0, &
                    'brachistochrone_status_message: solved, unknown status, the force names')
     end subroutine check_single
 
@@ -183,7 +183,7 @@ contains
         failures = brachistochrone_solve_many(c_loc(force), 0.0_c_double, 6_c_long, c_loc(rho), &
                                               c_loc(psi), c_loc(r), c_loc(s), c_loc(t), &
                                               c_loc(status))
-        call check(failures == 6 .and. all(status == status_unknown_force) .and. &
+        call check(failures == 6 .and. all(status == status_unknown_field) .and. &
                    all(ieee_is_nan(t)), 'solve_many: unknown force on every row')
     end subroutine check_many
 

@@ -9,53 +9,48 @@
 !! kappa(rho), the greatest lower bound), all three when the status is an error. Any
 !! output pointer may be NULL (that output is not written).
 !!
-!! Thread safety: no shared mutable state except the inverse-square model (Gauss rules and
-!! the tables of the whole half-arch, about 70 ms to build), which is built once, inside
+!! Thread safety: no shared mutable state except the inverse-square field (Gauss rules and
+!! the tables of the whole half-arch, about 55 ms of CPU to build), which is built once, inside
 !! an OpenMP critical section, and only read afterwards; the messages are filled the same
 !! way. Every function may be called from several threads at once.
 !!
-!! Statuses (brachistochrone_status): status_ok; status_unknown_force for a name that is
+!! Statuses (brachistochrone_status): status_ok; status_unknown_field for a name that is
 !! not a field's (or NULL); status_bad_exponent for 'power' with an exponent that is not a
 !! finite n > 1; otherwise the status of the field's solver for the endpoint:
 !! status_inaccessible, status_rho_out_of_range, status_psi_out_of_range,
 !! status_not_finite, status_no_convergence, status_rho_below_start ('repulsive').
 !!
-!! The force-name dispatch is in one place, `prepare_field` with `solve_in_field`: the
-!! stand-in for the field factory of issue 10.
+!! Fields come from the library's factory `new_field` (`prepare_field`), the same as for
+!! the batch program, so the C interface solves exactly what the namelist's `force` does.
 module brachistochrone_c_api
     use, intrinsic :: iso_c_binding, only: c_int, c_long, c_double, c_float128, c_char, &
                                            c_ptr, c_null_char, c_associated, c_f_pointer, &
                                            c_loc
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_finite
-    use brachistochrone, only: qp, endpoint_solution, inverse_square_model, &
-                               new_inverse_square_model, solve_endpoint, &
-                               central_force_model, new_central_force_model, power_law, &
-                               logarithmic_law, harmonic_law, status_ok, status_message, &
-                               arch_radial
-    use brachistochrone_status, only: status_unknown_force, status_bad_exponent
-    use brachistochrone_batch_run, only: least_time_repulsive
+    use brachistochrone, only: qp, endpoint_solution, brachistochrone_field, new_field, &
+                               field_names, status_ok, status_unknown_field, &
+                               status_message, arch_radial
     implicit none
     private
 
     public :: brachistochrone_solve, brachistochrone_solve_q, brachistochrone_solve_many, &
               brachistochrone_status_message
 
-    integer, parameter :: field_unknown = 0, field_inverse_square = 1, field_general = 2, &
-                          field_repulsive = 3
     !> Longest force name accepted (longer strings are unknown names).
     integer, parameter :: max_name_length = 32
     !> Status codes with a message table entry, and the room for each message.
     integer, parameter :: max_code = 63, message_length = 200
 
-    !> A field named by a string, ready to solve endpoints.
+    !> A field named by a string, ready to solve endpoints: its own, or the shared
+    !! inverse-square field.
     type :: named_field
-        integer :: kind = field_unknown
-        type(central_force_model) :: general    !! the general engine's model
+        class(brachistochrone_field), allocatable :: own
+        logical :: shared = .false.
     end type named_field
 
-    !> The inverse-square model, built once (see the module notes).
-    type(inverse_square_model), save :: shared_model
-    logical, save :: shared_model_ready = .false.
+    !> The inverse-square field (its model), built once (see the module notes).
+    class(brachistochrone_field), allocatable, save :: shared_field
+    logical, save :: shared_field_ready = .false.
     !> NUL-terminated messages, filled once; c_loc of a column is handed to C.
     character(kind=c_char), save, target :: messages(message_length, -1:max_code)
     logical, save :: messages_ready = .false.
@@ -188,63 +183,51 @@ contains
         text = c_loc(messages(1, k))
     end function brachistochrone_status_message
 
-    !> The field named `name`: status_ok, status_unknown_force, or status_bad_exponent.
-    !! The one place where a force name is dispatched (issue 10's factory goes here).
+    !> The field named `name` from the library's factory (`new_field`): status_ok,
+    !! status_unknown_field, or status_bad_exponent. The inverse-square field is the
+    !! shared one, built on first use.
     subroutine prepare_field(name, exponent, field, status)
         character(len=*), intent(in) :: name    !! 'inverse_square', 'power', ...
         real(qp), intent(in) :: exponent        !! n of F = mu/r^n, used by 'power' only
         type(named_field), intent(out) :: field !! ready to solve
         integer(c_int), intent(out) :: status   !! what went wrong
-        status = status_ok
-        select case (name)
-        case ('inverse_square')
-            field%kind = field_inverse_square
-            call build_shared_model()
-        case ('power')
-            if (.not. ieee_is_finite(exponent) .or. .not. exponent > 1.0_qp) then
-                status = status_bad_exponent
-                return
-            end if
-            field%kind = field_general
-            field%general = new_central_force_model(power_law(n=exponent))
-        case ('logarithmic')
-            field%kind = field_general
-            field%general = new_central_force_model(logarithmic_law())
-        case ('harmonic')
-            field%kind = field_general
-            field%general = new_central_force_model(harmonic_law())
-        case ('repulsive')
-            field%kind = field_repulsive
-        case default
-            status = status_unknown_force
-        end select
+        integer :: code
+        status = status_unknown_field
+        ! ask the factory only about names it knows (it would build a model otherwise)
+        if (len(name) == 0 .or. index(field_names, "'"//name//"'") == 0) return
+        if (name == 'inverse_square') then
+            call build_shared_field()
+            field%shared = .true.
+            status = status_ok
+        else
+            call new_field(name, exponent, field%own, code)
+            status = int(code, c_int)
+        end if
     end subroutine prepare_field
 
-    !> Solve endpoint (rho, psi) in a prepared field, as the batch program does.
-    function solve_in_field(field, rho, psi) result(solution)
+    !> Solve endpoint (rho, psi) in a prepared field.
+    pure function solve_in_field(field, rho, psi) result(solution)
         type(named_field), intent(in) :: field  !! from prepare_field, status_ok
         real(qp), intent(in) :: rho, psi        !! the endpoint
         type(endpoint_solution) :: solution
-        select case (field%kind)
-        case (field_inverse_square)
-            solution = solve_endpoint(shared_model, rho, psi)
-        case (field_general)
-            solution = field%general%solve(rho, psi)
-        case default
-            solution = least_time_repulsive(rho, psi)
-        end select
+        if (field%shared) then
+            solution = shared_field%solve(rho, psi)
+        else
+            solution = field%own%solve(rho, psi)
+        end if
     end function solve_in_field
 
-    !> Build the inverse-square model on the first call (one thread builds, the others
+    !> Build the inverse-square field on the first call (one thread builds, the others
     !! wait); afterwards it is only read.
-    subroutine build_shared_model()
+    subroutine build_shared_field()
+        integer :: code
         !$omp critical (brachistochrone_c_api_model)
-        if (.not. shared_model_ready) then
-            shared_model = new_inverse_square_model()
-            shared_model_ready = .true.
+        if (.not. shared_field_ready) then
+            call new_field('inverse_square', 0.0_qp, shared_field, code)
+            shared_field_ready = .true.
         end if
         !$omp end critical (brachistochrone_c_api_model)
-    end subroutine build_shared_model
+    end subroutine build_shared_field
 
     !> The NUL-terminated string at `force` (at most max_name_length characters; a
     !! longer or NULL string gives a name that is not a field's).
