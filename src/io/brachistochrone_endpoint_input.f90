@@ -412,7 +412,6 @@ contains
             integer(int64) :: row, high
             integer :: t, status, last_row
             real(qp) :: x
-            character(len=:), allocatable :: token, rows_text, rule
             row = scan%low(a)
             high = huge(1_int64)
             if (scan%indexed(a)) then
@@ -422,21 +421,28 @@ contains
             do t = scan%first(a), scan%last(a)
                 if (row > high) exit
                 if (scan%finish(t) >= scan%start(t)) then
-                    token = text(scan%start(t):scan%finish(t))
-                    rows_text = row_range(row, min(row + scan%repeat(t) - 1, high))
-                    call real_from_text(token, x, status)
-                    if (status /= text_ok .or. scan%quoted(t)) then
-                        call problems%add(scan%value_line(t), where//'('//rows_text//'): "'// &
-                                          escape_text(token)//'" is not a valid value; '// &
-                                          'write a real number such as 0.25 or 1.5e-3')
+                    call real_from_text(text(scan%start(t):scan%finish(t)), x, status)
+                    if (.not. problems%wanted(scan%value_line(t))) then
+                        if (status /= text_ok .or. scan%quoted(t) .or. &
+                            .not. ieee_is_finite(x)) then
+                            call problems%count_one()
+                        else if (.not. row_valid(v, x, s)) then
+                            call problems%count_one()
+                        end if
+                    else if (status /= text_ok .or. scan%quoted(t)) then
+                        call problems%add(scan%value_line(t), where//'('// &
+                            row_range(row, min(row + scan%repeat(t) - 1, high))//'): "'// &
+                            escape_text(text(scan%start(t):scan%finish(t)))// &
+                            '" is not a valid value; write a real number such as 0.25 or 1.5e-3')
                     else if (.not. ieee_is_finite(x)) then
-                        call problems%add(scan%value_line(t), where//'('//rows_text// &
-                                          '): is not a finite number (NaN or Infinity); '// &
-                                          'give a real number')
-                    else
-                        rule = row_rule(v, x, s)
-                        if (len(rule) > 0) call problems%add(scan%value_line(t), &
-                            where//'('//rows_text//') = '//escape_text(token)//': '//rule)
+                        call problems%add(scan%value_line(t), where//'('// &
+                            row_range(row, min(row + scan%repeat(t) - 1, high))// &
+                            '): is not a finite number (NaN or Infinity); give a real number')
+                    else if (.not. row_valid(v, x, s)) then
+                        call problems%add(scan%value_line(t), where//'('// &
+                            row_range(row, min(row + scan%repeat(t) - 1, high))//') = '// &
+                            escape_text(text(scan%start(t):scan%finish(t)))//': '// &
+                            row_rule(v, s))
                     end if
                     r%count = r%count + scan%repeat(t)
                     if (row <= r%rows) then
@@ -451,26 +457,42 @@ contains
 
     end subroutine read_rows
 
-    !> The range rule row value x of per-row variable v breaks ('' if none).
-    function row_rule(v, x, s) result(rule)
+    !> Is x a valid value for a row of per-row variable v? (The ranges: `row_rule`.)
+    pure logical function row_valid(v, x, s)
         integer, intent(in) :: v
         real(qp), intent(in) :: x
+        type(scalar_values), intent(in) :: s
+        row_valid = .true.
+        select case (variables(v)%name)
+        case ('rho')
+            if (.not. s%force_ok) return          ! the range depends on the field
+            if (s%force == 'repulsive') then
+                row_valid = x >= 1.0_qp
+            else
+                row_valid = x > 0.0_qp .and. x <= 1.0_qp
+            end if
+        case ('psi')
+            row_valid = x >= 0.0_qp .and. x <= pi
+        end select
+    end function row_valid
+
+    !> The range of a row of per-row variable v, as a rule for messages.
+    function row_rule(v, s) result(rule)
+        integer, intent(in) :: v
         type(scalar_values), intent(in) :: s
         character(len=:), allocatable :: rule
         rule = ''
         select case (variables(v)%name)
         case ('rho')
-            if (.not. s%force_ok) return          ! the range depends on the field
             if (s%force == 'repulsive') then
-                if (.not. x >= 1.0_qp) rule = 'must satisfy rho >= 1 (force = '// &
-                    '''repulsive'': paths move outward from A at radius 1)'
+                rule = 'must satisfy rho >= 1 (force = ''repulsive'': paths move outward '// &
+                       'from A at radius 1)'
             else
-                if (.not. (x > 0.0_qp .and. x <= 1.0_qp)) &
-                    rule = 'must satisfy 0 < rho <= 1 (A is at radius 1)'
+                rule = 'must satisfy 0 < rho <= 1 (A is at radius 1)'
             end if
         case ('psi')
-            if (.not. (x >= 0.0_qp .and. x <= pi)) rule = 'must satisfy 0 <= psi <= pi '// &
-                'radians (by symmetry use 2*pi - psi for an angle beyond pi)'
+            rule = 'must satisfy 0 <= psi <= pi radians (by symmetry use 2*pi - psi for '// &
+                   'an angle beyond pi)'
         end select
     end function row_rule
 

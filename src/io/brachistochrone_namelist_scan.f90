@@ -50,6 +50,8 @@ module brachistochrone_namelist_scan
     contains
         procedure :: add => add_problem          !! add one problem
         procedure :: message => problem_message  !! the k-th kept message
+        procedure :: wanted                      !! would a problem at this line be kept?
+        procedure :: count_one                   !! count a problem that is not kept
     end type problem_list
 
     !> The scanned group.
@@ -79,6 +81,11 @@ module brachistochrone_namelist_scan
     character(len=*), parameter :: blanks = ' '//achar(9)//achar(13)
     !> Characters that end a value that is not a string.
     character(len=*), parameter :: value_ends = ' ,/!='//achar(9)//achar(13)//achar(10)
+    integer :: k_
+    !> ends_value(iachar(c)): c is in value_ends (a table: the scan's inner loop).
+    logical, parameter :: ends_value(0:255) = [(index(value_ends, achar(k_)) > 0, k_ = 0, 255)]
+    !> is_blank(iachar(c)): c is a blank, tab or carriage return.
+    logical, parameter :: is_blank(0:255) = [(index(blanks, achar(k_)) > 0, k_ = 0, 255)]
 
 contains
 
@@ -175,7 +182,7 @@ contains
         type(problem_list), intent(inout) :: problems
         integer :: name_stop
         character(len=:), allocatable :: where
-        where = 'group &'//group_name//': '
+        where = 'group &'//group_name
         do
             call skip_blanks(text, i, line, commas=.true.)
             if (i > len(text)) exit
@@ -189,14 +196,14 @@ contains
                     g%closed = .true.
                     i = name_end(text, i + 1) + 1
                 else
-                    call problems%add(line, where//'the group &'//group_name//' (line '// &
+                    call problems%add(line, where//': the group &'//group_name//' (line '// &
                                       integer_text(g%line)//') is not closed before "'// &
                                       shown(text, i)//'": end it with /')
                 end if
                 return
             end select
             if (.not. is_letter(text(i:i))) then
-                call problems%add(line, where//'expected a variable name, found "'// &
+                call problems%add(line, where//': expected a variable name, found "'// &
                                   shown(text, i)//'"')
                 call skip_token(text, i, line)
                 cycle
@@ -210,7 +217,7 @@ contains
             end if
             if (i > len(text)) exit
             if (text(i:i) /= '=') then
-                call problems%add(line, where//'expected "=" after '// &
+                call problems%add(line, where//': expected "=" after '// &
                                   trim(g%name(g%count))//', found "'//shown(text, i)//'"')
                 g%usable(g%count) = .false.
             else
@@ -220,7 +227,7 @@ contains
             call scan_values(text, i, line, g, problems, where)
             g%last(g%count) = g%values
         end do
-        call problems%add(line, where//'the group &'//group_name//' (line '// &
+        call problems%add(line, where//': the group &'//group_name//' (line '// &
                           integer_text(g%line)//') is not closed: end it with /')
     end subroutine scan_body
 
@@ -240,7 +247,7 @@ contains
             call parse_subscript(text(i + 1:close_at - 1), low, high, section, ok)
         end if
         if (.not. ok) then
-            call problems%add(line, where//'variable '//trim(g%name(g%count))// &
+            call problems%add(line, where//', variable '//trim(g%name(g%count))// &
                               ': bad subscript "'//shown(text, i)//'"; write '// &
                               trim(g%name(g%count))//'(i) = value or '// &
                               trim(g%name(g%count))//'(i:j) = values')
@@ -304,7 +311,7 @@ contains
         integer, intent(inout) :: i, line
         type(group_scan), intent(inout) :: g
         type(problem_list), intent(inout) :: problems
-        integer :: commas, j, r, first_line
+        integer :: commas, j, r, first_line, opening
         commas = 1                      ! a comma straight after '=' is a null first value
         do
             call skip_blanks(text, i, line, commas=.false.)
@@ -318,7 +325,7 @@ contains
             case ('/', '&', '$')
                 return
             case ('=')
-                call problems%add(line, where//'variable '//trim(g%name(g%count))// &
+                call problems%add(line, where//', variable '//trim(g%name(g%count))// &
                                   ': "=" without a variable name before it')
                 g%usable(g%count) = .false.
                 i = i + 1
@@ -339,7 +346,7 @@ contains
                 if (text(j:j) == '*') then
                     call repeat_count(text(i:j - 1), r)
                     if (r < 1) then
-                        call problems%add(line, where//'variable '//trim(g%name(g%count))// &
+                        call problems%add(line, where//', variable '//trim(g%name(g%count))// &
                                           ': "'//shown(text, i)//'" is not a valid repeat '// &
                                           'count; r*value needs a whole number 1 <= r <= '// &
                                           integer_text(huge(1)))
@@ -359,22 +366,22 @@ contains
             end if
             if (text(i:i) == '''' .or. text(i:i) == '"') then
                 first_line = line
-                j = i
+                opening = i
                 call skip_string(text, i, line, j)
                 if (j == 0) then
-                    call problems%add(first_line, where//'variable '// &
+                    call problems%add(first_line, where//', variable '// &
                                       trim(g%name(g%count))//': the string starting '// &
-                                      '"'//shown(text, i)//'" has no closing quote')
+                                      '"'//shown(text, opening)//'" has no closing quote')
                     g%usable(g%count) = .false.
                     i = len(text) + 1
                     return
                 end if
-                call add_value(g, j + 1, i - 2, r, first_line, .true.)
+                call add_value(g, opening + 1, j - 1, r, first_line, .true.)
                 cycle
             end if
             j = i
             do while (j <= len(text))
-                if (scan(text(j:j), value_ends) > 0) exit
+                if (ends_value(iachar(text(j:j)))) exit
                 j = j + 1
             end do
             call add_value(g, i, j - 1, r, line, .false.)
@@ -562,6 +569,21 @@ contains
         end subroutine swap
     end subroutine add_problem
 
+    !> Would a problem at `line` be kept? (If not, `count_one` counts it without
+    !! building its message.)
+    pure logical function wanted(self, line)
+        class(problem_list), intent(in) :: self
+        integer, intent(in) :: line   !! its line
+        wanted = self%kept < max_problems
+        if (.not. wanted) wanted = line < self%line(max_problems)
+    end function wanted
+
+    !> Count a problem that `wanted` says is not kept.
+    pure subroutine count_one(self)
+        class(problem_list), intent(inout) :: self
+        self%total = self%total + 1
+    end subroutine count_one
+
     !> The k-th kept message (1 <= k <= kept).
     pure function problem_message(self, k) result(text)
         class(problem_list), intent(in) :: self
@@ -592,7 +614,7 @@ contains
             else if (text(i:i) == '!') then
                 call skip_comment(text, i)
                 cycle
-            else if (.not. (scan(text(i:i), blanks) > 0 .or. &
+            else if (.not. (is_blank(iachar(text(i:i))) .or. &
                             (commas .and. text(i:i) == ','))) then
                 return
             end if

@@ -175,62 +175,78 @@ contains
         real(qp), intent(out) :: x           !! its value
         integer, intent(out) :: status       !! text_ok or text_malformed
         character(kind=c_char) :: buffer(len(text) + 2)
-        character(len=:), allocatable :: word
         integer :: i, j, digits
         x = 0.0_qp
         status = text_malformed
         if (len(text) == 0 .or. len(text) > max_number_length) return
-        word = lower(text)
         i = 1
-        if (word(1:1) == '+' .or. word(1:1) == '-') i = 2
-        if (word(i:) == 'nan' .and. i == 1) then
-            x = ieee_value(x, ieee_quiet_nan)
-            status = text_ok
-            return
-        else if (word(i:) == 'inf' .or. word(i:) == 'infinity') then
-            x = ieee_value(x, ieee_positive_inf)
-            if (word(1:1) == '-') x = ieee_value(x, ieee_negative_inf)
-            status = text_ok
+        if (text(1:1) == '+' .or. text(1:1) == '-') i = 2
+        if (i > len(text)) return
+        if (scan(text(i:i), 'nNiI') > 0) then
+            call special_value(text, i, x, status)
             return
         end if
         ! mantissa
         digits = 0
         j = 0
-        buffer(1:i - 1) = [(text(1:1), j = 1, i - 1)]
-        j = i - 1
-        call copy_digits(word, i, buffer, j, digits)
-        if (i <= len(word)) then
-            if (word(i:i) == '.') then
+        if (i == 2) then
+            j = 1
+            buffer(1) = text(1:1)
+        end if
+        call copy_digits(text, i, buffer, j, digits)
+        if (i <= len(text)) then
+            if (text(i:i) == '.') then
                 j = j + 1
                 buffer(j) = '.'
                 i = i + 1
-                call copy_digits(word, i, buffer, j, digits)
+                call copy_digits(text, i, buffer, j, digits)
             end if
         end if
         if (digits == 0) return
-        ! exponent
-        if (i <= len(word)) then
-            if (index('edq', word(i:i)) > 0) i = i + 1
-            if (i > len(word)) return
-            if (index('+-', word(i:i)) == 0 .and. index('edq', word(i - 1:i - 1)) == 0) return
+        ! exponent: a letter e, d or q and an optional sign, or a sign alone
+        if (i <= len(text)) then
             j = j + 1
             buffer(j) = 'e'
-            if (index('+-', word(i:i)) > 0) then
+            if (scan(text(i:i), 'eEdDqQ') > 0) then
+                i = i + 1
+            else if (scan(text(i:i), '+-') == 0) then
+                return
+            end if
+            if (i > len(text)) return
+            if (scan(text(i:i), '+-') > 0) then
                 j = j + 1
-                buffer(j) = word(i:i)
+                buffer(j) = text(i:i)
                 i = i + 1
             end if
             digits = 0
-            call copy_digits(word, i, buffer, j, digits)
-            if (digits == 0) return
+            call copy_digits(text, i, buffer, j, digits)
+            if (digits == 0 .or. i <= len(text)) return
         end if
-        if (i <= len(word)) return
         buffer(j + 1) = c_null_char
         x = real(strtoflt128(buffer, c_null_ptr), qp)
         status = text_ok
-
-
     end subroutine real_from_text
+
+    !> NaN, Inf or Infinity (any case) from position i of text (after its sign).
+    pure subroutine special_value(text, i, x, status)
+        character(len=*), intent(in) :: text
+        integer, intent(in) :: i
+        real(qp), intent(out) :: x
+        integer, intent(out) :: status
+        character(len=:), allocatable :: word
+        x = 0.0_qp
+        status = text_malformed
+        word = lower(text(i:))
+        if (word == 'nan' .and. i == 1) then
+            x = ieee_value(x, ieee_quiet_nan)
+        else if (word == 'inf' .or. word == 'infinity') then
+            x = ieee_value(x, ieee_positive_inf)
+            if (text(1:1) == '-') x = ieee_value(x, ieee_negative_inf)
+        else
+            return
+        end if
+        status = text_ok
+    end subroutine special_value
 
     !> Copy the digits of word from i into buffer after j.
     pure subroutine copy_digits(word, i, buffer, j, digits)
