@@ -113,6 +113,7 @@ module brachistochrone_endpoint_input
     !> The rows of one per-row variable as far as values set them.
     type :: row_values
         logical :: given = .false.           !! the variable is assigned
+        logical :: broken = .false.          !! an assignment has a syntax problem
         integer :: line = 0                  !! line of its first assignment
         integer(int64) :: count = 0          !! values given (repeats counted, no nulls)
         integer :: rows = 0                  !! rows held below (0: none)
@@ -365,6 +366,7 @@ contains
             if (variable_of(a) /= v) cycle
             if (.not. r%given) r%line = scan%name_line(a)
             r%given = .true.
+            r%broken = r%broken .or. .not. scan%usable(a)
             if (.not. scan%usable(a)) cycle
             low = scan%low(a)
             count_values = sum(int(scan%repeat(scan%first(a):scan%last(a)), int64))
@@ -383,7 +385,7 @@ contains
                                       ' values are given')
                 end if
             end if
-            if (s%have_n .and. low + count_values - 1 > s%n) then
+            if (s%have_n .and. low + count_values - 1 > s%n .and. .not. scan%indexed(a)) then
                 call problems%add(scan%name_line(a), where//': has more than n = '// &
                                   integer_text(s%n)//' values; give exactly n values or '// &
                                   'raise n')
@@ -401,14 +403,15 @@ contains
             end if
         end if
         do a = 1, scan%count
-            if (variable_of(a) == v .and. scan%usable(a)) call read_assignment(a)
+            if (variable_of(a) == v) call read_assignment(a, scan%usable(a))
         end do
 
     contains
 
-        !> Convert, check and keep the values of assignment a.
-        subroutine read_assignment(a)
+        !> Convert and check the values of assignment a, and keep them if `keep`.
+        subroutine read_assignment(a, keep)
             integer, intent(in) :: a
+            logical, intent(in) :: keep
             integer(int64) :: row, high
             integer :: t, status, last_row
             real(qp) :: x
@@ -422,6 +425,13 @@ contains
                 if (row > high) exit
                 if (scan%finish(t) >= scan%start(t)) then
                     call real_from_text(text(scan%start(t):scan%finish(t)), x, status)
+                    if (.not. keep) then         ! a broken assignment: only bad texts
+                        if (status /= text_ok) call problems%add(scan%value_line(t), &
+                            where//': "'//escape_text(text(scan%start(t):scan%finish(t)))// &
+                            '" is not a valid value; write a real number such as 0.25 '// &
+                            'or 1.5e-3')
+                        cycle
+                    end if
                     if (.not. problems%wanted(scan%value_line(t))) then
                         if (status /= text_ok .or. scan%quoted(t) .or. &
                             .not. ieee_is_finite(x)) then
@@ -515,7 +525,7 @@ contains
                 if (variables(k + 1)%required) call problems%add(scan%line, where// &
                     ': is missing; give n values, for example  '// &
                     trim(variables(k + 1)%example))
-            else if (variables(k + 1)%required .and. s%have_n) then
+            else if (variables(k + 1)%required .and. s%have_n .and. .not. rows(k)%broken) then
                 if (rows(k)%rows > 0) then
                     set = count(rows(k)%at(:min(rows(k)%rows, s%n)) /= 0)
                 else

@@ -242,6 +242,7 @@ contains
         logical :: ok, section
         close_at = index(text(i:min(len(text), i + 80)), ')')
         ok = close_at > 0
+        if (ok) ok = index(text(i:i + close_at - 1), achar(10)) == 0
         if (ok) then
             close_at = i + close_at - 1
             call parse_subscript(text(i + 1:close_at - 1), low, high, section, ok)
@@ -413,9 +414,13 @@ contains
         end do
         if (j > len(text)) return
         if (text(j:j) == '(') then
-            close_at = index(text(j:min(len(text), j + 80)), ')')
+            close_at = scan(text(j:min(len(text), j + 80)), ')='//achar(10))
             if (close_at == 0) return
-            j = j + close_at
+            j = j + close_at - 1
+            if (text(j:j) == achar(10)) return
+            starts_assignment = text(j:j) == '='       ! a broken subscript: name(1 =
+            if (starts_assignment) return
+            j = j + 1
             do while (j <= len(text))
                 if (scan(text(j:j), blanks) == 0) exit
                 j = j + 1
