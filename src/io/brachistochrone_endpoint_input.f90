@@ -31,7 +31,8 @@
 !! all, required); a new variable is a row there, a case in `check_scalar` (its
 !! range) and a field of `endpoint_table`.
 module brachistochrone_endpoint_input
-    use, intrinsic :: iso_fortran_env, only: int64, input_unit, iostat_end, iostat_eor
+    use, intrinsic :: iso_fortran_env, only: int64
+    use, intrinsic :: iso_c_binding, only: c_int, c_size_t, c_char
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     use brachistochrone_kinds, only: qp, pi
     use brachistochrone_namelist_scan, only: group_scan, scan_group, problem_list
@@ -723,32 +724,35 @@ contains
         close (unit)
     end subroutine read_text
 
-    !> Standard input, whole, as one string with new-line characters.
+    !> Standard input, whole, as one string (read with the C library's `read`, in
+    !! blocks, into a buffer that doubles).
     subroutine read_stdin(text, problem)
         character(len=:), allocatable, intent(out) :: text
         character(len=:), allocatable, intent(out) :: problem
         character(len=:), allocatable :: grown
-        character(len=65536) :: chunk
-        integer :: ios, got, length, status
-        character(len=512) :: io_message
-        allocate (character(len=65536) :: text)
+        integer, parameter :: block = 1048576
+        integer(c_size_t) :: got
+        integer :: length, status
+        interface
+            function c_read(fd, buffer, count) bind(c, name='read') result(got)
+                import :: c_int, c_size_t, c_char
+                integer(c_int), value :: fd
+                character(kind=c_char), intent(out) :: buffer(*)
+                integer(c_size_t), value :: count
+                integer(c_size_t) :: got          ! ssize_t: -1 on error
+            end function c_read
+        end interface
+        allocate (character(len=block) :: text)
         problem = ''
         length = 0
         do
-            read (input_unit, '(a)', advance='no', size=got, iostat=ios, iomsg=io_message) &
-                chunk
-            if (ios /= 0 .and. ios /= iostat_eor .and. ios /= iostat_end) then
-                problem = trim(io_message)
-                exit
-            end if
-            if (ios == iostat_end .and. got == 0) exit
-            if (length + got + 1 > len(text)) then
-                if (len(text) > (huge(1) - got - 1)/2) then
+            if (len(text) - length < block) then
+                if (len(text) > huge(1)/2 - block) then
                     problem = 'standard input is longer than '//integer_text(huge(1)/2)// &
                               ' bytes'
                     exit
                 end if
-                allocate (character(len=2*len(text) + got + 1) :: grown, stat=status)
+                allocate (character(len=2*len(text)) :: grown, stat=status)
                 if (status /= 0) then
                     problem = 'not enough memory for standard input'
                     exit
@@ -756,13 +760,13 @@ contains
                 grown(:length) = text(:length)
                 call move_alloc(grown, text)
             end if
-            text(length + 1:length + got) = chunk(:got)
-            length = length + got
-            if (ios == iostat_eor) then
-                length = length + 1
-                text(length:length) = achar(10)
+            got = c_read(0_c_int, text(length + 1:length + block), int(block, c_size_t))
+            if (got == 0) exit
+            if (got < 0 .or. got > block) then
+                problem = 'reading standard input failed'
+                exit
             end if
-            if (ios == iostat_end) exit
+            length = length + int(got)
         end do
         text = text(:length)
     end subroutine read_stdin

@@ -157,8 +157,7 @@ def test_control_characters_of_the_input_are_escaped(run, tmp_path):
 
 
 def test_values_are_exactly_the_decimals_written(run, tmp_path):
-    # the CSV shows 36 significant digits of the binary128 value read; the nearest
-    # binary128 to 0.123456789012345678901234567890123 rounds back to those 33 digits
+    # the CSV shows 36 significant digits of the binary128 value read (not a double)
     rows = solved_rows(run, tmp_path, "&endpoints n = 2\n"
                        " rho = 0.123456789012345678901234567890123, 1\n"
                        " psi = 1.0e0, 1.2345678901234567890123456789012345q0 /\n")
@@ -177,7 +176,7 @@ def test_standard_input(app, tmp_path):
     if b"unknown option" in result.stderr:
         pytest.skip("the command line does not pass '-' to the reader yet")
     assert result.returncode == 0, result.stderr
-    assert result.stdout == b"-: 2 endpoints, valid\n" or b"2 endpoints, valid" in result.stdout
+    assert b"2 endpoints, valid" in result.stdout
     bad = subprocess.run([str(app), "-", "--check"], input=b"&endpoints n = 1 /",
                          capture_output=True, text=False)
     assert bad.returncode == 1 and b"<stdin>:1:" in bad.stderr
