@@ -156,6 +156,11 @@ contains
         t = table_of('&endpoints n = 2, rho = 2*5.0, psi = 2*1 /')
         call check(reports(t, 'rho(1:2) = 5.0: must satisfy 0 < rho <= 1'), &
                    'a repeated bad value names its rows')
+        t = table_of('&endpoints n = , rho = 0.5, psi = 1 /')
+        call check(reports(t, 'variable n: is missing (or null)'), 'n = null value')
+        t = table_of('&endpoints n = 1, n = 2*1, rho = 0.5, psi = 1 /')
+        call check(reports(t, 'variable n: needs exactly one value') .and. t%problems == 1, &
+                   'n = 2*1: one problem')
         t = table_of('&endpoints n = 1, rho = 0.5, psi = 0*1 /')
         call check(reports(t, 'not a valid repeat count'), 'repeat count 0')
         t = table_of('&endpoints n = 1, rho = 0.5, psi = 1, force = ''harmonic /')

@@ -126,6 +126,7 @@ module brachistochrone_endpoint_input
     type :: scalar_values
         integer :: n = 0
         logical :: have_n = .false.          !! n given and valid
+        logical :: n_reported = .false.      !! a problem with n's value was reported
         integer :: curve_points = 0
         real(qp) :: secant_tolerance = 1.0e-16_qp
         character(len=:), allocatable :: force
@@ -190,7 +191,7 @@ contains
             call check_force(scan, variable_of, s, rows(3), problems)
         end if
         call report(problems, shown_path(path), table)
-        if (table%problems == 0) call fill_table(s, rows, table)
+        if (table%problems == 0 .and. s%have_n) call fill_table(s, rows, table)
     end subroutine read_endpoint_text
 
     !> The variable of each assignment (0: unknown name, reported).
@@ -234,6 +235,7 @@ contains
                 call problems%add(scan%name_line(a), 'group &'//group_name//', variable '// &
                                   trim(variables(v)%name)//': needs exactly one value, '// &
                                   'for example  '//trim(variables(v)%example))
+                if (v == 1) s%n_reported = .true.
                 if (v == 1) s%have_n = .false.
                 cycle
             end if
@@ -263,6 +265,7 @@ contains
                 call problems%add(line, where//': "'//escape_text(token)//'" is not a '// &
                                   'valid value; write a whole number, for example  '// &
                                   trim(variables(v)%example))
+                if (v == 1) s%n_reported = .true.
                 if (v == 1) s%have_n = .false.
                 return
             end if
@@ -285,6 +288,7 @@ contains
         select case (variables(v)%name)
         case ('n')
             s%have_n = status == text_ok .and. value >= 1 .and. value <= max_endpoints
+            s%n_reported = .not. s%have_n
             if (.not. s%have_n) then
                 call problems%add(line, where//': '//escape_text(token)//' is out of '// &
                                   'range; it must be 1 <= n <= '//integer_text(max_endpoints))
@@ -515,11 +519,9 @@ contains
         type(problem_list), intent(inout) :: problems
         integer :: k, i, set
         character(len=:), allocatable :: where
-        if (.not. s%have_n) then
-            if (.not. any(scan%name(:scan%count) == 'n')) call problems%add(scan%line, &
-                'group &'//group_name//', variable n: is missing; set it to the number '// &
-                'of endpoints, for example  n = 5')
-        end if
+        if (.not. s%have_n .and. .not. s%n_reported) call problems%add(scan%line, &
+            'group &'//group_name//', variable n: is missing (or null); set it to the '// &
+            'number of endpoints, for example  n = 5')
         do k = 1, size(rows)
             where = 'group &'//group_name//', variable '//trim(variables(k + 1)%name)
             if (.not. rows(k)%given) then
