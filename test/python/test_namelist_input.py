@@ -5,6 +5,7 @@ import os
 import pathlib
 import random
 import subprocess
+import sys
 import decimal
 from decimal import Decimal
 
@@ -13,18 +14,21 @@ import pytest
 from conftest import read_csv
 
 
-def cpu_and_rss(app, *args, cwd=None):
-    """CPU seconds and peak RSS (kB) of one run, from wait4 on that process alone."""
-    pid = os.fork()
-    if pid == 0:                                   # child: silence and exec the program
-        devnull = os.open(os.devnull, os.O_WRONLY)
-        os.dup2(devnull, 1)
-        os.dup2(devnull, 2)
-        if cwd:
-            os.chdir(cwd)
-        os.execv(str(app), [str(app), *map(str, args)])
-    _, status, usage = os.wait4(pid, 0)
-    return os.waitstatus_to_exitcode(status), usage.ru_utime + usage.ru_stime, usage.ru_maxrss
+MEASURE = """
+import os, subprocess, sys
+proc = subprocess.Popen(sys.argv[1:], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+_, status, usage = os.wait4(proc.pid, 0)
+print(os.waitstatus_to_exitcode(status), usage.ru_utime + usage.ru_stime, usage.ru_maxrss)
+"""
+
+
+def cpu_and_rss(app, *args):
+    """Exit code, CPU seconds and peak RSS (kB) of one run of the program alone. A
+    fresh small Python starts it: a child's peak RSS includes its parent's memory up to
+    the exec, and this pytest process may be large."""
+    out = subprocess.run([sys.executable, "-c", MEASURE, str(app), *map(str, args)],
+                         capture_output=True, text=True, check=True).stdout.split()
+    return int(out[0]), float(out[1]), int(out[2])
 
 
 def solved_rows(run, tmp_path, text):
