@@ -28,8 +28,11 @@
 !! Control characters of the path and of quoted input are escaped in every message.
 !!
 !! The variables are one table (`variables`: name, kind, one value per row or one in
-!! all, required); a new variable is a row there, a case in `check_scalar` (its
-!! range) and a field of `endpoint_table`.
+!! all, required, default, valid range or words, the rule as text for messages); a
+!! new variable is a row there, its name in `variable_names` and a field of
+!! `endpoint_table` set in `fill_table`. Checks between variables (r0 with r1, what
+!! goes with `force`, rho's range for 'repulsive') are in `check_counts`,
+!! `check_force` and `rule_of_rows`.
 module brachistochrone_endpoint_input
     use, intrinsic :: iso_fortran_env, only: int64
     use, intrinsic :: iso_c_binding, only: c_int, c_size_t, c_char
@@ -49,7 +52,7 @@ module brachistochrone_endpoint_input
     integer, parameter :: max_endpoints = 10000000
     !> The namelist group read.
     character(len=*), parameter :: group_name = 'endpoints'
-    !> Its variables (the names of `variables`).
+    !> Its variables (the names of `variables`, in messages).
     character(len=*), parameter :: variable_names = &
         'n, rho, psi, r0, r1, secant_tolerance, curve_points, force, exponent'
     !> The force fields `force` may name.
@@ -62,28 +65,57 @@ module brachistochrone_endpoint_input
 
     integer, parameter :: kind_integer = 1, kind_real = 2, kind_word = 3
 
-    !> One variable of the group.
+    !> One variable of the group: its name, kind, shape, default and valid values.
     type :: variable_rule
         character(len=16) :: name       !! lowercase name
         integer :: kind                 !! kind_integer, kind_real or kind_word
         logical :: per_row              !! n values, one per endpoint (else one value)
         logical :: required             !! must be given
         character(len=32) :: example    !! a valid assignment, for messages
+        real(qp) :: low = -huge(1.0_qp) !! valid numbers: low <= x (low < x if low_open)
+        real(qp) :: high = huge(1.0_qp) !! and x <= high (x < high if high_open)
+        logical :: low_open = .false.
+        logical :: high_open = .false.
+        logical :: zero_allowed = .false. !! 0 is valid too (it means "none")
+        character(len=80) :: words = ''   !! kind_word: the valid words, quoted
+        real(qp) :: default = 0.0_qp      !! value when not given (numbers)
+        character(len=16) :: default_word = '' !! value when not given (kind_word)
+        character(len=120) :: rule = ''   !! the valid values, for messages
     end type variable_rule
 
-    !> The variables of `&endpoints`, their kinds and shapes (ranges: `check_scalar`,
-    !! `row_rule`).
+    !> The variables of `&endpoints`: a new variable is a row here and a field of
+    !! `endpoint_table` (filled in `fill_table`); rows of rho, psi, r0, r1 are
+    !! `row_values`, the others one value each.
     type(variable_rule), parameter :: variables(*) = [ &
-        variable_rule('n', kind_integer, .false., .true., 'n = 5'), &
-        variable_rule('rho', kind_real, .true., .true., 'rho = 0.5, 0.9'), &
-        variable_rule('psi', kind_real, .true., .true., 'psi = 1.0, 0.4'), &
+        variable_rule('n', kind_integer, .false., .true., 'n = 5', low=1.0_qp, &
+                      high=real(max_endpoints, qp), &
+                      rule='is out of range; it must be 1 <= n <= 10000000'), &
+        variable_rule('rho', kind_real, .true., .true., 'rho = 0.5, 0.9', low=0.0_qp, &
+                      low_open=.true., high=1.0_qp, &
+                      rule='must satisfy 0 < rho <= 1 (A is at radius 1)'), &
+        variable_rule('psi', kind_real, .true., .true., 'psi = 1.0, 0.4', low=0.0_qp, &
+                      high=pi, rule='must satisfy 0 <= psi <= pi radians (by symmetry '// &
+                      'use 2*pi - psi for an angle beyond pi)'), &
         variable_rule('r0', kind_real, .true., .false., 'r0 = 0.2, 0.4'), &
         variable_rule('r1', kind_real, .true., .false., 'r1 = 0.1, 0.2'), &
         variable_rule('secant_tolerance', kind_real, .false., .false., &
-                      'secant_tolerance = 1e-16'), &
-        variable_rule('curve_points', kind_integer, .false., .false., 'curve_points = 201'), &
-        variable_rule('force', kind_word, .false., .false., 'force = ''harmonic'''), &
-        variable_rule('exponent', kind_real, .false., .false., 'exponent = 3')]
+                      'secant_tolerance = 1e-16', low=0.0_qp, low_open=.true., &
+                      default=1.0e-16_qp, rule='must be a positive number, for example 1e-16'), &
+        variable_rule('curve_points', kind_integer, .false., .false., 'curve_points = 201', &
+                      low=2.0_qp, high=real(max_curve_points, qp), zero_allowed=.true., &
+                      rule='must be 0 (no curves) or 2 <= curve_points <= 100000 (points '// &
+                      'per curve, A and B included)'), &
+        variable_rule('force', kind_word, .false., .false., 'force = ''harmonic''', &
+                      words=force_names, default_word='inverse_square', &
+                      rule='unknown field; use one of '//force_names), &
+        variable_rule('exponent', kind_real, .false., .false., 'exponent = 3', low=1.0_qp, &
+                      low_open=.true., rule='must be a number > 1 (n = 1 is force = '// &
+                      '''logarithmic'')')]
+
+    !> rho's range with force = 'repulsive' (paths move outward).
+    type(variable_rule), parameter :: repulsive_rho = variable_rule('rho', kind_real, &
+        .true., .true., 'rho = 1.5, 2', low=1.0_qp, rule='must satisfy rho >= 1 (force = '// &
+        '''repulsive'': paths move outward from A at radius 1)')
 
     !> One message per problem found in the input.
     type :: message
@@ -122,17 +154,18 @@ module brachistochrone_endpoint_input
         integer, allocatable :: at(:)        !! its line (0: not set)
     end type row_values
 
-    !> The one-value variables while reading.
+    !> The one-value variables while reading (indexed like `variables`).
     type :: scalar_values
-        integer :: n = 0
+        real(qp) :: value(size(variables)) = variables%default   !! numbers
+        character(len=16) :: word(size(variables)) = variables%default_word !! words
+        logical :: given(size(variables)) = .false.   !! a value was given
+        logical :: valid(size(variables)) = .true.    !! the last value given is valid
+        logical :: reported(size(variables)) = .false. !! a problem with a value
+        ! what the checks use, set by `read_scalars`
+        integer :: n = 0                     !! n (when have_n)
         logical :: have_n = .false.          !! n given and valid
-        logical :: n_reported = .false.      !! a problem with n's value was reported
-        integer :: curve_points = 0
-        real(qp) :: secant_tolerance = 1.0e-16_qp
-        character(len=:), allocatable :: force
+        character(len=:), allocatable :: force !! the field
         logical :: force_ok = .true.         !! force is a known field
-        real(qp) :: exponent = 0.0_qp
-        logical :: have_exponent = .false.
     end type scalar_values
 
 contains
@@ -226,7 +259,6 @@ contains
         type(problem_list), intent(inout) :: problems
         type(scalar_values), intent(out) :: s
         integer :: a, v, t
-        s%force = 'inverse_square'
         do a = 1, scan%count
             v = variable_of(a)
             if (v == 0) cycle
@@ -235,8 +267,8 @@ contains
                 call problems%add(scan%name_line(a), 'group &'//group_name//', variable '// &
                                   trim(variables(v)%name)//': needs exactly one value, '// &
                                   'for example  '//trim(variables(v)%example))
-                if (v == 1) s%n_reported = .true.
-                if (v == 1) s%have_n = .false.
+                s%reported(v) = .true.
+                s%valid(v) = .false.
                 cycle
             end if
             if (scan%last(a) < scan%first(a)) cycle               ! `name =` : no value
@@ -245,9 +277,14 @@ contains
             call check_scalar(text(scan%start(t):scan%finish(t)), scan%quoted(t), &
                               scan%value_line(t), v, problems, s)
         end do
+        s%have_n = s%given(1) .and. s%valid(1)
+        if (s%have_n) s%n = nint(s%value(1))
+        s%force = trim(s%word(index_of('force')))
+        s%force_ok = s%valid(index_of('force'))
     end subroutine read_scalars
 
-    !> Convert and check the value `token` of the one-value variable v into `s`.
+    !> Convert the value `token` of the one-value variable v, check it against the
+    !! variable's rule and keep it in `s`.
     subroutine check_scalar(token, quoted, line, v, problems, s)
         character(len=*), intent(in) :: token
         logical, intent(in) :: quoted
@@ -258,6 +295,9 @@ contains
         integer :: value, status
         real(qp) :: x
         where = 'group &'//group_name//', variable '//trim(variables(v)%name)
+        s%given(v) = .true.
+        s%valid(v) = .false.
+        s%reported(v) = .true.            ! until the value passes
         select case (variables(v)%kind)
         case (kind_integer)
             call integer_from_text(token, value, status)
@@ -265,10 +305,18 @@ contains
                 call problems%add(line, where//': "'//escape_text(token)//'" is not a '// &
                                   'valid value; write a whole number, for example  '// &
                                   trim(variables(v)%example))
-                if (v == 1) s%n_reported = .true.
-                if (v == 1) s%have_n = .false.
+                return
+            else if (status == text_out_of_range) then
+                if (index(variables(v)%rule, 'out of range') > 0) then
+                    call problems%add(line, where//' = '//escape_text(token)//': '// &
+                                      trim(variables(v)%rule))
+                else
+                    call problems%add(line, where//' = '//escape_text(token)//': is out '// &
+                                      'of range; '//trim(variables(v)%rule))
+                end if
                 return
             end if
+            x = real(value, qp)
         case (kind_real)
             call real_from_text(token, x, status)
             if (quoted .or. status /= text_ok) then
@@ -280,58 +328,58 @@ contains
             if (.not. quoted) then
                 call problems%add(line, where//': '//escape_text(token)//' must be '// &
                                   'quoted, for example  '//trim(variables(v)%example))
-                s%force_ok = .false.
                 return
             end if
             word = unquoted(token)
+            if (index(variables(v)%words, "'"//word//"'") == 0 .or. len(word) == 0 .or. &
+                index(word, "'") > 0 .or. len(word) > len(s%word)) then
+                call problems%add(line, where//' = '''//escape_text(word)//''': '// &
+                                  trim(variables(v)%rule))
+                return
+            end if
+            s%word(v) = word
+            s%valid(v) = .true.
+            s%reported(v) = .false.
+            return
         end select
-        select case (variables(v)%name)
-        case ('n')
-            s%have_n = status == text_ok .and. value >= 1 .and. value <= max_endpoints
-            s%n_reported = .not. s%have_n
-            if (.not. s%have_n) then
-                call problems%add(line, where//': '//escape_text(token)//' is out of '// &
-                                  'range; it must be 1 <= n <= '//integer_text(max_endpoints))
-            else
-                s%n = value
-            end if
-        case ('curve_points')
-            if (status /= text_ok) then
-                call problems%add(line, where//': '//escape_text(token)//' is out of '// &
-                                  'range; it must be 0 (no curves) or 2 <= curve_points '// &
-                                  '<= '//integer_text(max_curve_points))
-            else if (value /= 0 .and. (value < 2 .or. value > max_curve_points)) then
-                call problems%add(line, where//' = '//escape_text(token)//': must be 0 '// &
-                                  '(no curves) or 2 <= curve_points <= '// &
-                                  integer_text(max_curve_points)// &
-                                  ' (points per curve, A and B included)')
-            else
-                s%curve_points = value
-            end if
-        case ('secant_tolerance')
-            if (.not. ieee_is_finite(x) .or. x <= 0.0_qp) then
-                call problems%add(line, where//' = '//escape_text(token)//': must be a '// &
-                                  'positive number, for example 1e-16')
-            else
-                s%secant_tolerance = x
-            end if
-        case ('exponent')
-            s%have_exponent = .true.
-            s%exponent = x
-            if (.not. ieee_is_finite(x) .or. x <= 1.0_qp) then
-                call problems%add(line, where//' = '//escape_text(token)//': must be a '// &
-                                  'number > 1 (n = 1 is force = ''logarithmic'')')
-            end if
-        case ('force')
-            s%force = word
-            s%force_ok = index(force_names, "'"//word//"'") > 0 .and. len(word) > 0 .and. &
-                         index(word, "'") == 0
-            if (.not. s%force_ok) then
-                call problems%add(line, where//' = '''//escape_text(word)//''': unknown '// &
-                                  'field; use one of '//force_names)
-            end if
-        end select
+        if (.not. in_range(variables(v), x)) then
+            call problems%add(line, where//' = '//escape_text(token)//': '// &
+                              trim(variables(v)%rule))
+            return
+        end if
+        s%value(v) = x
+        s%valid(v) = .true.
+        s%reported(v) = .false.
     end subroutine check_scalar
+
+    !> Is x a valid number for variable `rule`? (NaN and Infinity never are.)
+    pure logical function in_range(rule, x)
+        type(variable_rule), intent(in) :: rule
+        real(qp), intent(in) :: x
+        in_range = ieee_is_finite(x)
+        if (.not. in_range) return
+        if (rule%zero_allowed .and. x == 0.0_qp) return
+        if (rule%low_open) then
+            in_range = x > rule%low
+        else
+            in_range = x >= rule%low
+        end if
+        if (rule%high_open) then
+            in_range = in_range .and. x < rule%high
+        else
+            in_range = in_range .and. x <= rule%high
+        end if
+    end function in_range
+
+    !> Position of a variable in `variables`.
+    pure integer function index_of(name)
+        character(len=*), intent(in) :: name
+        integer :: v
+        index_of = 0
+        do v = 1, size(variables)
+            if (variables(v)%name == name) index_of = v
+        end do
+    end function index_of
 
     !> A string's text with each doubled quote made single (the quote is the one
     !! before the text).
@@ -363,7 +411,9 @@ contains
         integer(int64) :: largest, limit, low, count_values
         integer :: a, status
         character(len=:), allocatable :: where
+        type(variable_rule) :: rule
         where = 'group &'//group_name//', variable '//trim(variables(v)%name)
+        rule = rule_of_rows(v, s)
         limit = max_endpoints
         if (s%have_n) limit = s%n
         largest = 0
@@ -441,7 +491,7 @@ contains
                         if (status /= text_ok .or. scan%quoted(t) .or. &
                             .not. ieee_is_finite(x)) then
                             call problems%count_one()
-                        else if (.not. row_valid(v, x, s)) then
+                        else if (.not. in_range(rule, x)) then
                             call problems%count_one()
                         end if
                     else if (status /= text_ok .or. scan%quoted(t)) then
@@ -453,11 +503,11 @@ contains
                         call problems%add(scan%value_line(t), where//'('// &
                             row_range(row, min(row + scan%repeat(t) - 1, high))// &
                             '): is not a finite number (NaN or Infinity); give a real number')
-                    else if (.not. row_valid(v, x, s)) then
+                    else if (.not. in_range(rule, x)) then
                         call problems%add(scan%value_line(t), where//'('// &
                             row_range(row, min(row + scan%repeat(t) - 1, high))//') = '// &
                             escape_text(text(scan%start(t):scan%finish(t)))//': '// &
-                            row_rule(v, s))
+                            trim(rule%rule))
                     end if
                     r%count = r%count + scan%repeat(t)
                     if (row <= r%rows) then
@@ -472,44 +522,22 @@ contains
 
     end subroutine read_rows
 
-    !> Is x a valid value for a row of per-row variable v? (The ranges: `row_rule`.)
-    pure logical function row_valid(v, x, s)
+    !> The rule for the rows of per-row variable v: its row of `variables`, or
+    !! `repulsive_rho` for rho with force = 'repulsive', or no range for rho while the
+    !! field is unknown (its range depends on the field).
+    pure function rule_of_rows(v, s) result(rule)
         integer, intent(in) :: v
-        real(qp), intent(in) :: x
         type(scalar_values), intent(in) :: s
-        row_valid = .true.
-        select case (variables(v)%name)
-        case ('rho')
-            if (.not. s%force_ok) return          ! the range depends on the field
-            if (s%force == 'repulsive') then
-                row_valid = x >= 1.0_qp
-            else
-                row_valid = x > 0.0_qp .and. x <= 1.0_qp
-            end if
-        case ('psi')
-            row_valid = x >= 0.0_qp .and. x <= pi
-        end select
-    end function row_valid
+        type(variable_rule) :: rule
+        rule = variables(v)
+        if (rule%name /= 'rho') return
+        if (.not. s%force_ok) then
+            rule = variable_rule('rho', kind_real, .true., .true., '')
+        else if (s%force == 'repulsive') then
+            rule = repulsive_rho
+        end if
+    end function rule_of_rows
 
-    !> The range of a row of per-row variable v, as a rule for messages.
-    function row_rule(v, s) result(rule)
-        integer, intent(in) :: v
-        type(scalar_values), intent(in) :: s
-        character(len=:), allocatable :: rule
-        rule = ''
-        select case (variables(v)%name)
-        case ('rho')
-            if (s%force == 'repulsive') then
-                rule = 'must satisfy rho >= 1 (force = ''repulsive'': paths move outward '// &
-                       'from A at radius 1)'
-            else
-                rule = 'must satisfy 0 < rho <= 1 (A is at radius 1)'
-            end if
-        case ('psi')
-            rule = 'must satisfy 0 <= psi <= pi radians (by symmetry use 2*pi - psi for '// &
-                   'an angle beyond pi)'
-        end select
-    end function row_rule
 
     !> Required per-row variables given for all n rows; r0 and r1 in pairs.
     subroutine check_counts(scan, s, rows, problems)
@@ -519,7 +547,7 @@ contains
         type(problem_list), intent(inout) :: problems
         integer :: k, i, set
         character(len=:), allocatable :: where
-        if (.not. s%have_n .and. .not. s%n_reported) call problems%add(scan%line, &
+        if (.not. s%have_n .and. .not. s%reported(1)) call problems%add(scan%line, &
             'group &'//group_name//', variable n: is missing (or null); set it to the '// &
             'number of endpoints, for example  n = 5')
         do k = 1, size(rows)
@@ -577,17 +605,17 @@ contains
         line = line_of(scan, variable_of, 8)
         where = 'group &'//group_name
         if (s%force == 'power') then
-            if (.not. s%have_exponent) call problems%add(line, where//', variable '// &
+            if (.not. s%given(index_of('exponent'))) call problems%add(line, where//', variable '// &
                 'exponent: is missing; force = ''power'' needs the exponent n of '// &
                 'F = mu/r^n, n > 1, for example  exponent = 3')
-        else if (s%have_exponent) then
+        else if (s%given(index_of('exponent'))) then
             call problems%add(line_of(scan, variable_of, 9), where//', variable exponent: '// &
                               'applies to force = ''power'' only')
         end if
         if (s%force /= 'inverse_square') then
             if (r0%count > 0) call problems%add(line, where//': r0, r1 (the paper''s '// &
                 'secant method) apply to force = ''inverse_square'' only; leave them out')
-            if (s%curve_points /= 0) call problems%add(line, where//': curve_points: '// &
+            if (s%value(index_of('curve_points')) /= 0.0_qp) call problems%add(line, where//': curve_points: '// &
                 'curves are sampled for force = ''inverse_square'' only')
         end if
     end subroutine check_force
@@ -626,10 +654,11 @@ contains
                 table%r1(i) = rows(4)%x(i)
             end if
         end do
-        table%secant_tolerance = s%secant_tolerance
-        table%curve_points = s%curve_points
+        table%secant_tolerance = s%value(index_of('secant_tolerance'))
+        table%curve_points = nint(s%value(index_of('curve_points')))
         table%force = s%force
-        table%exponent = merge(s%exponent, 0.0_qp, s%have_exponent)
+        table%exponent = merge(s%value(index_of('exponent')), 0.0_qp, &
+                              s%given(index_of('exponent')))
     end subroutine fill_table
 
     !> The problems as messages "file:line: text", then "... and N more".
