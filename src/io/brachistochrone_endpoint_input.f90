@@ -601,22 +601,24 @@ contains
         type(problem_list), intent(inout) :: problems
         character(len=:), allocatable :: where
         integer :: line
+        logical :: exponent_given
         if (.not. s%force_ok) return
-        line = line_of(scan, variable_of, 8)
+        line = line_of(scan, variable_of, index_of('force'))
         where = 'group &'//group_name
+        exponent_given = s%given(index_of('exponent'))
         if (s%force == 'power') then
-            if (.not. s%given(index_of('exponent'))) call problems%add(line, where//', variable '// &
+            if (.not. exponent_given) call problems%add(line, where//', variable '// &
                 'exponent: is missing; force = ''power'' needs the exponent n of '// &
                 'F = mu/r^n, n > 1, for example  exponent = 3')
-        else if (s%given(index_of('exponent'))) then
-            call problems%add(line_of(scan, variable_of, 9), where//', variable exponent: '// &
-                              'applies to force = ''power'' only')
+        else if (exponent_given) then
+            call problems%add(line_of(scan, variable_of, index_of('exponent')), where// &
+                              ', variable exponent: applies to force = ''power'' only')
         end if
         if (s%force /= 'inverse_square') then
             if (r0%count > 0) call problems%add(line, where//': r0, r1 (the paper''s '// &
                 'secant method) apply to force = ''inverse_square'' only; leave them out')
-            if (s%value(index_of('curve_points')) /= 0.0_qp) call problems%add(line, where//': curve_points: '// &
-                'curves are sampled for force = ''inverse_square'' only')
+            if (s%value(index_of('curve_points')) /= 0.0_qp) call problems%add(line, &
+                where//': curve_points: curves are sampled for force = ''inverse_square'' only')
         end if
     end subroutine check_force
 
