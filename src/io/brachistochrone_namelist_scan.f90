@@ -22,7 +22,8 @@
 !! cost a few arrays, not a million strings).
 module brachistochrone_namelist_scan
     use, intrinsic :: iso_fortran_env, only: int64
-    use brachistochrone_strings, only: integer_text, lower, escape_text
+    use brachistochrone_strings, only: integer_text, lower, escape_text, integer_from_text, &
+                                       text_ok
     implicit none
     private
 
@@ -312,7 +313,8 @@ contains
         integer, intent(inout) :: i, line
         type(group_scan), intent(inout) :: g
         type(problem_list), intent(inout) :: problems
-        integer :: commas, j, r, first_line, opening
+        integer :: commas, j, r
+        logical :: null, closed
         commas = 1                      ! a comma straight after '=' is a null first value
         do
             call skip_blanks(text, i, line, commas=.false.)
@@ -336,70 +338,84 @@ contains
                 if (starts_assignment(text, i)) return
             end if
             commas = 0
-            ! a repeat count r* ?
-            r = 1
-            j = i
-            do while (j <= len(text))
-                if (text(j:j) < '0' .or. text(j:j) > '9') exit
-                j = j + 1
-            end do
-            if (j > i .and. j <= len(text)) then
-                if (text(j:j) == '*') then
-                    call repeat_count(text(i:j - 1), r)
-                    if (r < 1) then
-                        call problems%add(line, where//', variable '//trim(g%name(g%count))// &
-                                          ': "'//shown(text, i)//'" is not a valid repeat '// &
-                                          'count; r*value needs a whole number 1 <= r <= '// &
-                                          integer_text(huge(1)))
-                        g%usable(g%count) = .false.
-                        r = 1
-                    end if
-                    i = j + 1
-                    if (i > len(text)) then
-                        call add_value(g, i, i - 1, r, line, .false.)
-                        return
-                    end if
-                    if (scan(text(i:i), value_ends) > 0 .and. text(i:i) /= '=') then
-                        call add_value(g, i, i - 1, r, line, .false.)    ! r* : r nulls
-                        cycle
-                    end if
-                end if
+            call repeat_prefix(text, i, line, g, problems, where, r, null)
+            if (null) then
+                call add_value(g, i, i - 1, r, line, .false.)    ! r* : r null values
+            else if (text(i:i) == '''' .or. text(i:i) == '"') then
+                call string_value(text, i, line, g, problems, where, r, closed)
+                if (.not. closed) return
+            else
+                j = i
+                do while (j <= len(text))
+                    if (ends_value(iachar(text(j:j)))) exit
+                    j = j + 1
+                end do
+                call add_value(g, i, j - 1, r, line, .false.)
+                i = j
             end if
-            if (text(i:i) == '''' .or. text(i:i) == '"') then
-                first_line = line
-                opening = i
-                call skip_string(text, i, line, j)
-                if (j == 0) then
-                    call problems%add(first_line, where//', variable '// &
-                                      trim(g%name(g%count))//': the string starting '// &
-                                      '"'//shown(text, opening)//'" has no closing quote')
-                    g%usable(g%count) = .false.
-                    i = len(text) + 1
-                    return
-                end if
-                call add_value(g, opening + 1, j - 1, r, first_line, .true.)
-                cycle
-            end if
-            j = i
-            do while (j <= len(text))
-                if (ends_value(iachar(text(j:j)))) exit
-                j = j + 1
-            end do
-            call add_value(g, i, j - 1, r, line, .false.)
-            i = j
         end do
     end subroutine scan_values
 
-    !> The repeat count of `digits` (0 if not 1 <= r <= huge(1)).
-    pure subroutine repeat_count(digits, r)
-        character(len=*), intent(in) :: digits
+    !> A repeat count `r*` at i: i moves past it; `null` when no value follows (r*
+    !! then a separator). r = 1 without a count.
+    subroutine repeat_prefix(text, i, line, g, problems, where, r, null)
+        character(len=*), intent(in) :: text, where
+        integer, intent(inout) :: i
+        integer, intent(in) :: line
+        type(group_scan), intent(inout) :: g
+        type(problem_list), intent(inout) :: problems
         integer, intent(out) :: r
-        integer :: ios
-        r = 0
-        if (len(digits) > 10) return
-        read (digits, *, iostat=ios) r
-        if (ios /= 0) r = 0
-    end subroutine repeat_count
+        logical, intent(out) :: null
+        integer :: j, status
+        r = 1
+        null = .false.
+        j = i
+        do while (j <= len(text))
+            if (text(j:j) < '0' .or. text(j:j) > '9') exit
+            j = j + 1
+        end do
+        if (j == i .or. j > len(text)) return
+        if (text(j:j) /= '*') return
+        call integer_from_text(text(i:j - 1), r, status)
+        if (status /= text_ok .or. r < 1) then
+            call problems%add(line, where//', variable '//trim(g%name(g%count))// &
+                              ': "'//shown(text, i)//'" is not a valid repeat count; '// &
+                              'r*value needs a whole number 1 <= r <= '//integer_text(huge(1)))
+            g%usable(g%count) = .false.
+            r = 1
+        end if
+        i = j + 1
+        if (i > len(text)) then
+            null = .true.
+        else
+            null = ends_value(iachar(text(i:i))) .and. text(i:i) /= '='
+        end if
+    end subroutine repeat_prefix
+
+    !> The string value whose opening quote is at i; `closed` is false when it has no
+    !! closing quote (a problem; i moves to the end of the text).
+    subroutine string_value(text, i, line, g, problems, where, r, closed)
+        character(len=*), intent(in) :: text, where
+        integer, intent(inout) :: i, line
+        type(group_scan), intent(inout) :: g
+        type(problem_list), intent(inout) :: problems
+        integer, intent(in) :: r
+        logical, intent(out) :: closed
+        integer :: first_line, opening, last
+        first_line = line
+        opening = i
+        call skip_string(text, i, line, last)
+        closed = last > 0
+        if (closed) then
+            call add_value(g, opening + 1, last - 1, r, first_line, .true.)
+        else
+            call problems%add(first_line, where//', variable '//trim(g%name(g%count))// &
+                              ': the string starting "'//shown(text, opening)// &
+                              '" has no closing quote')
+            g%usable(g%count) = .false.
+            i = len(text) + 1
+        end if
+    end subroutine string_value
 
     !> Does a name at i start an assignment: `name =` or `name(...) =` on this line?
     pure logical function starts_assignment(text, i)
