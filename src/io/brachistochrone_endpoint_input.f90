@@ -408,7 +408,7 @@ contains
         type(scalar_values), intent(in) :: s
         type(problem_list), intent(inout) :: problems
         type(row_values), intent(out) :: r
-        integer(int64) :: largest, limit, low, count_values
+        integer(int64) :: largest, limit
         integer :: a, status
         character(len=:), allocatable :: where
         type(variable_rule) :: rule
@@ -416,6 +416,36 @@ contains
         rule = rule_of_rows(v, s)
         limit = max_endpoints
         if (s%have_n) limit = s%n
+        call size_rows(scan, variable_of, v, s, limit, where, problems, r, largest)
+        if (largest > 0 .and. largest <= max(scan%total, 1_int64)) then
+            allocate (r%x(largest), r%at(largest), stat=status)
+            if (status /= 0) then
+                call problems%add(r%line, where//': not enough memory for '// &
+                                  big_text(largest)//' rows')
+            else
+                r%rows = int(largest)
+                r%at = 0
+            end if
+        end if
+        do a = 1, scan%count
+            if (variable_of(a) == v) call read_assignment(text, scan, a, scan%usable(a), rule, &
+                                                        limit, where, problems, r)
+        end do
+    end subroutine read_rows
+
+    !> The assignments of per-row variable v: subscripts and counts checked; `largest`
+    !! is the largest row they set (at most `limit`).
+    subroutine size_rows(scan, variable_of, v, s, limit, where, problems, r, largest)
+        type(group_scan), intent(in) :: scan
+        integer, intent(in) :: variable_of(:), v
+        type(scalar_values), intent(in) :: s
+        integer(int64), intent(in) :: limit
+        character(len=*), intent(in) :: where
+        type(problem_list), intent(inout) :: problems
+        type(row_values), intent(inout) :: r
+        integer(int64), intent(out) :: largest
+        integer(int64) :: low, count_values
+        integer :: a
         largest = 0
         do a = 1, scan%count
             if (variable_of(a) /= v) cycle
@@ -447,80 +477,70 @@ contains
             end if
             largest = max(largest, min(low + count_values - 1, limit))
         end do
-        if (largest > 0 .and. largest <= max(scan%total, 1_int64)) then
-            allocate (r%x(largest), r%at(largest), stat=status)
-            if (status /= 0) then
-                call problems%add(r%line, where//': not enough memory for '// &
-                                  big_text(largest)//' rows')
-            else
-                r%rows = int(largest)
-                r%at = 0
-            end if
+    end subroutine size_rows
+
+    !> Convert and check the values of assignment a, and keep them if `keep`.
+    subroutine read_assignment(text, scan, a, keep, rule, limit, where, problems, r)
+        character(len=*), intent(in) :: text, where
+        type(group_scan), intent(in) :: scan
+        integer, intent(in) :: a
+        logical, intent(in) :: keep
+        type(variable_rule), intent(in) :: rule
+        integer(int64), intent(in) :: limit
+        type(problem_list), intent(inout) :: problems
+        type(row_values), intent(inout) :: r
+        integer(int64) :: row, high
+        integer :: t, status, last_row
+        real(qp) :: x
+        row = scan%low(a)
+        high = huge(1_int64)
+        if (scan%indexed(a)) then
+            high = scan%high(a)
+            if (row < 1 .or. high < row .or. high > limit) return
         end if
-        do a = 1, scan%count
-            if (variable_of(a) == v) call read_assignment(a, scan%usable(a))
-        end do
-
-    contains
-
-        !> Convert and check the values of assignment a, and keep them if `keep`.
-        subroutine read_assignment(a, keep)
-            integer, intent(in) :: a
-            logical, intent(in) :: keep
-            integer(int64) :: row, high
-            integer :: t, status, last_row
-            real(qp) :: x
-            row = scan%low(a)
-            high = huge(1_int64)
-            if (scan%indexed(a)) then
-                high = scan%high(a)
-                if (row < 1 .or. high < row .or. high > limit) return
-            end if
-            do t = scan%first(a), scan%last(a)
-                if (row > high) exit
-                if (scan%finish(t) >= scan%start(t)) then
-                    call real_from_text(text(scan%start(t):scan%finish(t)), x, status)
-                    if (.not. keep) then         ! a broken assignment: only bad texts
-                        if (status /= text_ok) call problems%add(scan%value_line(t), &
-                            where//': "'//escape_text(text(scan%start(t):scan%finish(t)))// &
-                            '" is not a valid value; write a real number such as 0.25 '// &
-                            'or 1.5e-3')
-                        cycle
-                    end if
-                    if (.not. problems%wanted(scan%value_line(t))) then
-                        if (status /= text_ok .or. scan%quoted(t) .or. &
-                            .not. ieee_is_finite(x)) then
-                            call problems%count_one()
-                        else if (.not. in_range(rule, x)) then
-                            call problems%count_one()
-                        end if
-                    else if (status /= text_ok .or. scan%quoted(t)) then
-                        call problems%add(scan%value_line(t), where//'('// &
-                            row_range(row, min(row + scan%repeat(t) - 1, high))//'): "'// &
-                            escape_text(text(scan%start(t):scan%finish(t)))// &
-                            '" is not a valid value; write a real number such as 0.25 or 1.5e-3')
-                    else if (.not. ieee_is_finite(x)) then
-                        call problems%add(scan%value_line(t), where//'('// &
-                            row_range(row, min(row + scan%repeat(t) - 1, high))// &
-                            '): is not a finite number (NaN or Infinity); give a real number')
-                    else if (.not. in_range(rule, x)) then
-                        call problems%add(scan%value_line(t), where//'('// &
-                            row_range(row, min(row + scan%repeat(t) - 1, high))//') = '// &
-                            escape_text(text(scan%start(t):scan%finish(t)))//': '// &
-                            trim(rule%rule))
-                    end if
-                    r%count = r%count + scan%repeat(t)
-                    if (row <= r%rows) then
-                        last_row = int(min(row + scan%repeat(t) - 1, int(r%rows, int64), high))
-                        r%x(row:last_row) = x
-                        r%at(row:last_row) = scan%value_line(t)
-                    end if
+        do t = scan%first(a), scan%last(a)
+            if (row > high) exit
+            if (scan%finish(t) >= scan%start(t)) then
+                call real_from_text(text(scan%start(t):scan%finish(t)), x, status)
+                if (.not. keep) then         ! a broken assignment: only bad texts
+                    if (status /= text_ok) call problems%add(scan%value_line(t), &
+                        where//': "'//escape_text(text(scan%start(t):scan%finish(t)))// &
+                        '" is not a valid value; write a real number such as 0.25 '// &
+                        'or 1.5e-3')
+                    cycle
                 end if
-                row = row + scan%repeat(t)
-            end do
-        end subroutine read_assignment
-
-    end subroutine read_rows
+                if (.not. problems%wanted(scan%value_line(t))) then
+                    if (status /= text_ok .or. scan%quoted(t) .or. &
+                        .not. ieee_is_finite(x)) then
+                        call problems%count_one()
+                    else if (.not. in_range(rule, x)) then
+                        call problems%count_one()
+                    end if
+                else if (status /= text_ok .or. scan%quoted(t)) then
+                    call problems%add(scan%value_line(t), where//'('// &
+                        row_range(row, min(row + scan%repeat(t) - 1, high))//'): "'// &
+                        escape_text(text(scan%start(t):scan%finish(t)))// &
+                        '" is not a valid value; write a real number such as 0.25 or 1.5e-3')
+                else if (.not. ieee_is_finite(x)) then
+                    call problems%add(scan%value_line(t), where//'('// &
+                        row_range(row, min(row + scan%repeat(t) - 1, high))// &
+                        '): is not a finite number (NaN or Infinity); give a real number')
+                else if (.not. in_range(rule, x)) then
+                    call problems%add(scan%value_line(t), where//'('// &
+                        row_range(row, min(row + scan%repeat(t) - 1, high))//') = '// &
+                        escape_text(text(scan%start(t):scan%finish(t)))//': '// &
+                        trim(rule%rule))
+                end if
+                r%count = r%count + scan%repeat(t)
+                if (row <= r%rows) then
+                    last_row = int(min(row + scan%repeat(t) - 1, int(r%rows, int64), high))
+                    r%x(row:last_row) = x
+                    r%at(row:last_row) = scan%value_line(t)
+                end if
+            end if
+            row = row + scan%repeat(t)
+        end do
+    end subroutine read_assignment
 
     !> The rule for the rows of per-row variable v: its row of `variables`, or
     !! `repulsive_rho` for rho with force = 'repulsive', or no range for rho while the
