@@ -2,10 +2,12 @@
 !! one run, exact conversion, escaping.
 module test_namelist
     use brachistochrone_kinds, only: qp
-    use brachistochrone_endpoint_input, only: endpoint_table, read_endpoint_text
+    use brachistochrone_endpoint_input, only: endpoint_table, read_endpoint_text, &
+                                              read_endpoint_file
     use brachistochrone_strings, only: escape_text, real_from_text, integer_from_text, &
                                        text_ok, text_malformed, text_out_of_range
     use testing, only: check, section
+    use brachistochrone_strings, only: integer_text
     implicit none
     private
 
@@ -21,6 +23,7 @@ contains
         call every_problem()
         call exact_conversion()
         call escaping()
+        call same_as_gfortran()
     end subroutine run_namelist_tests
 
     !> Read `text` as the file 'in.nml'.
@@ -248,5 +251,119 @@ contains
                    index(t%errors(1)%text, '"x\ny"') > 0 .and. &
                    index(t%errors(1)%text, nl) == 0, 'path and value escaped in the message')
     end subroutine escaping
+
+    !> Random valid files (separators, repeat counts, null values filled by subscripted
+    !! assignments, e/d exponents, any case, comments on their own lines) read by this
+    !! reader and by gfortran's read(nml=): the same bits. (Comments after a comma before
+    !! a continuation line are left out: gfortran misreads those, issue 9.)
+    subroutine same_as_gfortran()
+        integer, parameter :: files = 300
+        character(len=*), parameter :: path = 'build/test_namelist_random.nml'
+        type(endpoint_table) :: t
+        character(len=:), allocatable :: text
+        integer :: k, n, unit, ios, differ, rejected
+        integer(8) :: seed
+        real(qp) :: rho(8), psi(8)
+        namelist /endpoints/ n, rho, psi
+        call section('namelist: the same values as gfortran''s read(nml=)')
+        seed = 987654321
+        differ = 0
+        rejected = 0
+        do k = 1, files
+            n = 1 + next(8)
+            text = '! random file'//nl//'&endpoints'//nl//' n = '//digits_of(n)//nl// &
+                   list('rho', '0.', n)//list('PSI', '1.', n)//'/'//nl
+            open (newunit=unit, file=path, status='replace', action='write', access='stream')
+            write (unit) text
+            close (unit)
+            call read_endpoint_file(path, t)
+            rho = -1.0_qp
+            psi = -1.0_qp
+            open (newunit=unit, file=path, status='old', action='read')
+            read (unit, nml=endpoints, iostat=ios)
+            close (unit)
+            if (size(t%errors) > 0 .or. ios /= 0) then
+                rejected = rejected + 1
+                if (rejected < 3) print '(3x,a)', 'rejected: '//text
+                cycle
+            end if
+            if (t%n /= n .or. any(t%rho /= rho(:n)) .or. any(t%psi /= psi(:n))) then
+                differ = differ + 1
+                if (differ < 3) print '(3x,a)', 'differs: '//text
+            end if
+        end do
+        call check(rejected == 0 .and. differ == 0, integer_text(files)//' random valid '// &
+                   'files: every value has the bits gfortran''s read(nml=) gives')
+    contains
+        integer function next(m)
+            integer, intent(in) :: m
+            seed = mod(seed*48271_8, 2147483647_8)
+            next = int(mod(seed, int(m, 8)))
+        end function next
+        function digits_of(value) result(text)
+            integer, intent(in) :: value
+            character(len=:), allocatable :: text
+            character(len=12) :: buffer
+            write (buffer, '(i0)') value
+            text = trim(buffer)
+        end function digits_of
+        !> A value below 1 ('0.') or between 1 and 2 ('1.') with 1 to 40 digits.
+        function number(lead) result(text)
+            character(len=*), intent(in) :: lead
+            character(len=:), allocatable :: text
+            integer :: j
+            text = lead//digits_of(1 + next(9))
+            do j = 1, next(40)
+                text = text//digits_of(next(10))
+            end do
+            select case (next(4))
+            case (1); text = text//'e0'
+            case (2); text = text//'D+00'
+            end select
+        end function number
+        !> `name = ...` for n rows: plain, repeated, or null values filled later (a
+        !! null value is an empty item between commas).
+        function list(name, lead, n) result(text)
+            character(len=*), intent(in) :: name, lead
+            integer, intent(in) :: n
+            character(len=:), allocatable :: text, fills, value
+            character(len=*), parameter :: separators(4) = [character(len=6) :: ', ', ' ', &
+                                                            ','//nl//'    ', ' ,  ']
+            integer :: row, r
+            logical :: null, previous_null
+            text = ' '//name//' = '
+            fills = ''
+            row = 1
+            previous_null = .false.
+            do while (row <= n)
+                value = number(lead)
+                r = 1 + next(n - row + 1)
+                null = .false.
+                select case (next(3))
+                case (0)
+                    r = 1
+                case (1)
+                    value = digits_of(r)//'*'//value
+                case (2)
+                    null = .true.
+                    fills = fills//' '//name//'('//digits_of(row)//') = '//value//nl
+                    value = ''
+                    r = 1
+                end select
+                if (row > 1) then
+                    if (null .or. previous_null) then
+                        text = text//', '
+                    else
+                        text = text//trim(separators(1 + next(4)))//' '
+                    end if
+                end if
+                text = text//value
+                previous_null = null
+                row = row + r
+            end do
+            if (previous_null .and. n > 1) text = text//','
+            text = text//nl//'! filled'//nl//fills
+        end function list
+    end subroutine same_as_gfortran
 
 end module test_namelist
