@@ -8,8 +8,8 @@
 program main
     use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
     !$ use omp_lib, only: omp_set_num_threads
-    use brachistochrone, only: inverse_square_model, new_inverse_square_model, &
-                               endpoint_solution
+    use brachistochrone, only: brachistochrone_field, new_field, endpoint_solution, &
+                               status_ok, status_message
     use brachistochrone_version, only: program_name, program_version
     use brachistochrone_endpoint_input, only: endpoint_table, message
     use brachistochrone_command_line, only: run_options, parse_command_line, write_usage, exit_ok, &
@@ -19,7 +19,7 @@ program main
 
     type(run_options) :: options
     type(endpoint_table) :: table
-    type(inverse_square_model) :: model
+    class(brachistochrone_field), allocatable :: field
     type(endpoint_solution), allocatable :: solutions(:)
     type(message), allocatable :: report(:)
     character(len=:), allocatable :: problem
@@ -44,11 +44,12 @@ program main
         stop code, quiet=.true.
     end if
 
-    model = new_inverse_square_model()
+    call new_field(table%force, table%exponent, field, status)
+    if (status /= status_ok) call fail(exit_input, table%path//': '//status_message(status))
     allocate (solutions(first:last))
-    call solve_rows(model, table, first, last, solutions, .not. options%quiet)
+    call solve_rows(field, table, first, last, solutions, .not. options%quiet)
 
-    call deliver_results(options, model, table, first, last, solutions, code)
+    call deliver_results(options, field, table, first, last, solutions, code)
     stop code, quiet=.true.
 
 contains

@@ -10,7 +10,9 @@ module test_central_force
             harmonic_law
     use brachistochrone_central_force, only: central_force_model, new_central_force_model
     use brachistochrone_inverse_square, only: inverse_square_model, new_inverse_square_model
-    use brachistochrone_two_point, only: endpoint_solution, solve_endpoint, arch_inaccessible
+    use brachistochrone_two_point, only: solve_endpoint
+    use brachistochrone_solution, only: endpoint_solution
+    use brachistochrone_arches, only: arch_inaccessible
     use testing, only: check, check_close, check_digits, section, digits_of_agreement
     implicit none
     private

@@ -2,7 +2,8 @@
 module test_io
     use brachistochrone_kinds, only: qp, pi
     use brachistochrone_status, only: status_inaccessible
-    use brachistochrone_two_point, only: endpoint_solution, arch_inaccessible
+    use brachistochrone_solution, only: endpoint_solution
+    use brachistochrone_arches, only: arch_inaccessible
     use brachistochrone_endpoint_input, only: endpoint_table, read_endpoint_file
     use brachistochrone_result_output, only: format_real, csv_row, write_results_namelist
     use testing, only: check, section

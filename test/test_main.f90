@@ -10,6 +10,8 @@ program test_main
     use test_harmonic, only: run_harmonic_tests
     use test_uniform_gravity, only: run_uniform_gravity_tests
     use test_repulsive, only: run_repulsive_tests
+    use test_fields, only: run_field_tests
+    use test_sha256, only: run_sha256_tests
     implicit none
     integer :: code
     call run_numerics_tests()
@@ -21,6 +23,8 @@ program test_main
     call run_harmonic_tests()
     call run_uniform_gravity_tests()
     call run_repulsive_tests()
+    call run_field_tests()
+    call run_sha256_tests()
     code = summary()
     if (code /= 0) error stop 1
 end program test_main

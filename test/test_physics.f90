@@ -12,10 +12,12 @@ module test_physics
                             apse_angle_limit, inaccessible_angle, radial_fall_time
     use brachistochrone_quadrature, only: univariate_integrand, gauss_legendre, integrate_adaptive
     use brachistochrone_inverse_square, only: inverse_square_model, new_inverse_square_model, &
+            evaluate_arch, &
             arch_values, level_fine
-    use brachistochrone_two_point, only: endpoint_solution, solve_endpoint, solve_endpoint_secant, &
-                         arch_first, arch_second, arch_complete, arch_radial, &
-                         arch_inaccessible, arch_word
+    use brachistochrone_two_point, only: solve_endpoint, solve_endpoint_secant
+    use brachistochrone_solution, only: endpoint_solution
+    use brachistochrone_arches, only: arch_first, arch_second, arch_complete, arch_radial, &
+                                      arch_inaccessible, arch_word
     use reference_tables, only: csv_table, read_reference
     use testing, only: check, check_close, check_digits, section, digits_of_agreement
     implicit none
@@ -106,11 +108,11 @@ contains
                     big_r = fraction(j)*rho(i)
                     d = rho(i) - big_r
                     h = 1.0e-9_qp*min(big_r, d)
-                    values = model%evaluate_arch(level_fine, second, rho(i), big_r, d, &
+                    values = evaluate_arch(model, level_fine, second, rho(i), big_r, d, &
                                                  .true., .true.)
-                    plus = model%evaluate_arch(level_fine, second, rho(i), big_r + h, d - h, &
+                    plus = evaluate_arch(model, level_fine, second, rho(i), big_r + h, d - h, &
                                                .false., .true.)
-                    minus = model%evaluate_arch(level_fine, second, rho(i), big_r - h, &
+                    minus = evaluate_arch(model, level_fine, second, rho(i), big_r - h, &
                                                 d + h, .false., .true.)
                     analytic = values%arclength_dr_smooth &
                                + values%boundary_sign*values%arclength_boundary/sqrt(d)

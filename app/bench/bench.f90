@@ -8,14 +8,14 @@
 !! measured in the same run. Output: `key = value` lines.
 program bench
     use, intrinsic :: iso_fortran_env, only: int64, error_unit, output_unit
-    use brachistochrone, only: qp, inverse_square_model, new_inverse_square_model, &
-                               endpoint_solution, status_ok
+    use brachistochrone, only: qp, brachistochrone_field, new_field, endpoint_solution, &
+                               status_ok
     use brachistochrone_endpoint_input, only: endpoint_table, read_endpoint_file
     use brachistochrone_batch_run, only: solve_rows
     !$ use omp_lib, only: omp_set_num_threads
     implicit none
     type(endpoint_table) :: table
-    type(inverse_square_model) :: model
+    class(brachistochrone_field), allocatable :: field
     type(endpoint_solution), allocatable :: solutions(:)
     integer :: repeats, k, i, length, ios, evaluations, threads
     integer(int64) :: start, finish, rate
@@ -50,11 +50,11 @@ program bench
         end do
         stop 1, quiet=.true.
     end if
-    model = new_inverse_square_model()
+    call new_field(table%force, table%exponent, field, k)
     allocate (solutions(table%n), seconds(repeats))
     do k = 1, repeats
         call system_clock(start, rate)
-        call solve_rows(model, table, 1, table%n, solutions, .false.)
+        call solve_rows(field, table, 1, table%n, solutions, .false.)
         call system_clock(finish)
         seconds(k) = real(finish - start, qp)/real(rate, qp)
     end do

@@ -25,8 +25,9 @@ module brachistochrone_central_force
             gauss_legendre, integrate_adaptive
     use brachistochrone_roots, only: root_function, bracketed_secant
     use brachistochrone_speed_laws, only: speed_law
-    use brachistochrone_two_point, only: endpoint_solution, arch_first, arch_second, &
-            arch_complete, arch_radial, arch_inaccessible
+    use brachistochrone_solution, only: endpoint_solution, endpoint_status, region_inside
+    use brachistochrone_arches, only: arch_first, arch_second, arch_complete, arch_radial, &
+                                      arch_inaccessible
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     implicit none
     private
@@ -251,16 +252,8 @@ contains
 
         solution%rho = rho
         solution%psi = psi
-        if (.not. (ieee_is_finite(rho) .and. ieee_is_finite(psi))) then
-            solution%status = status_not_finite
-            return
-        else if (rho <= 0.0_qp .or. rho > 1.0_qp) then
-            solution%status = status_rho_out_of_range
-            return
-        else if (psi < 0.0_qp .or. psi > pi) then
-            solution%status = status_psi_out_of_range
-            return
-        end if
+        solution%status = endpoint_status(rho, psi, region_inside)
+        if (solution%status /= status_ok) return
         limit = self%law%apse_angle_limit()
         if (psi == 0.0_qp .or. psi >= 2.0_qp*limit) then
             call self%fall_time(rho, fall_rho, status)

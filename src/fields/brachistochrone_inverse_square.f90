@@ -43,7 +43,7 @@ module brachistochrone_inverse_square
     private
 
     public :: inverse_square_model, new_inverse_square_model
-    public :: arch_values, level_fine, level_coarse, level_rough, level_digits
+    public :: evaluate_arch, arch_values, level_fine, level_coarse, level_rough, level_digits
 
     !> Rule set selector: full quad precision.
     integer, parameter :: level_fine = 1
@@ -89,7 +89,6 @@ module brachistochrone_inverse_square
         procedure :: arclength      !! S(r,R), eq. (56)
         procedure :: travel_time    !! T(r,R), eq. (57)
         procedure :: apse_angle     !! Theta(R,R), eq. (66)
-        procedure :: evaluate_arch  !! the solver's kernel: values and d/dR pieces
     end type inverse_square_model
 
     !> Angle, arclength and time at radius r of the brachistochrone with apse R, on one
@@ -258,7 +257,7 @@ contains
     !! precision. Preconditions (not checked): 0 < R < 1, 0 <= d, R + d = r <= 1.
     pure function evaluate_arch(self, level, second, r, big_r, d, want_derivative, &
                                 want_length_time) result(values)
-        class(inverse_square_model), intent(in) :: self
+        type(inverse_square_model), intent(in) :: self
         integer, intent(in) :: level            !! level_fine or level_coarse
         logical, intent(in) :: second           !! second half-arch (after the apse)
         real(qp), intent(in) :: r               !! radius of the point
@@ -493,7 +492,7 @@ contains
         time = 0.0_qp
         status = check_radii(r, big_r)
         if (status /= status_ok) return
-        values = self%evaluate_arch(level_fine, second, r, big_r, r - big_r, .false., .true.)
+        values = evaluate_arch(self, level_fine, second, r, big_r, r - big_r, .false., .true.)
         angle = values%angle
         arclength = values%arclength
         time = values%time
@@ -510,7 +509,7 @@ contains
         value = 0.0_qp
         status = check_radii(r, big_r)
         if (status /= status_ok) return
-        values = self%evaluate_arch(level_fine, .false., r, big_r, r - big_r, .false., .false.)
+        values = evaluate_arch(self, level_fine, .false., r, big_r, r - big_r, .false., .false.)
         value = values%angle
     end subroutine theta
 

@@ -20,22 +20,20 @@
 !!   rule |R_n - R_(n-1)| < tol and a step count, which reproduces Table 1.
 module brachistochrone_two_point
     use brachistochrone_kinds, only: qp, pi, eps_qp
-    use brachistochrone_status, only: status_ok, status_inaccessible, &
-                                      status_rho_out_of_range, status_psi_out_of_range, &
-                                      status_not_finite, status_outside_domain
+    use brachistochrone_status, only: status_ok, status_inaccessible, status_outside_domain
+    use brachistochrone_solution, only: endpoint_solution, endpoint_status, region_inside
     use brachistochrone_closed_forms, only: radial_time, kappa_time, inaccessible_angle
-    use brachistochrone_inverse_square, only: inverse_square_model, arch_values, level_fine, &
+    use brachistochrone_inverse_square, only: inverse_square_model, evaluate_arch, arch_values, &
+            level_fine, &
             level_coarse, level_rough, level_digits
     use brachistochrone_roots, only: root_function, newton_bracketed, secant
-    use brachistochrone_arches, only: arch_none, arch_first, arch_second, arch_complete, &
-                                      arch_radial, arch_inaccessible, arch_word
+    use brachistochrone_arches, only: arch_first, arch_second, arch_complete, arch_radial, &
+                                      arch_inaccessible
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     implicit none
     private
 
-    public :: endpoint_solution, solve_endpoint, solve_endpoint_secant
-    public :: arch_none, arch_first, arch_second, arch_complete, arch_radial, &
-              arch_inaccessible, arch_word
+    public :: solve_endpoint, solve_endpoint_secant
 
     !> Limit on root-finder evaluations per phase.
     integer, parameter :: max_steps = 200
@@ -45,24 +43,6 @@ module brachistochrone_two_point
 
     !> Unknowns of the default solver.
     integer, parameter :: unknown_u = 1, unknown_r = 2, unknown_log_r = 3
-
-    !> Everything known about one endpoint after solving.
-    type :: endpoint_solution
-        real(qp) :: rho = 0.0_qp          !! endpoint radius
-        real(qp) :: psi = 0.0_qp          !! endpoint angle (radians)
-        integer :: arch = arch_none       !! arch_first, arch_second, ...
-        real(qp) :: apse_radius = 0.0_qp  !! R-bar (0 for radial fall)
-        !> rho - R-bar as the solver carried it (exact near the apse, where rho - R-bar
-        !! computed from the rounded R-bar would lose digits); 0 when there is no R-bar
-        real(qp) :: apse_gap = 0.0_qp
-        real(qp) :: arclength = 0.0_qp    !! s, arclength from A to B
-        real(qp) :: time = 0.0_qp         !! t, time from A to B (kappa when inaccessible)
-        integer :: steps = 0              !! root-finder evaluations (secant steps)
-        integer :: status = status_ok     !! status code
-        logical :: has_apse_radius = .false. !! R-bar exists
-        logical :: has_arclength = .false.   !! s exists
-        logical :: has_time = .false.        !! t exists
-    end type endpoint_solution
 
     !> Upsilon(R) - psi in one of the unknowns, for the root finders.
     type, extends(root_function) :: upsilon_function
@@ -94,12 +74,9 @@ contains
         solution%psi = psi
         apse_angle_rho = 0.0_qp
         done = .true.
-        if (.not. (ieee_is_finite(rho) .and. ieee_is_finite(psi))) then
-            solution%status = status_not_finite
-        else if (rho <= 0.0_qp .or. rho > 1.0_qp) then
-            solution%status = status_rho_out_of_range
-        else if (psi < 0.0_qp .or. psi > pi) then
-            solution%status = status_psi_out_of_range
+        solution%status = endpoint_status(rho, psi, region_inside)
+        if (solution%status /= status_ok) then
+            return
         else if (psi >= inaccessible_angle) then
             solution%arch = arch_inaccessible
             solution%status = status_inaccessible
@@ -187,7 +164,7 @@ contains
             return
         end if
         status = status_ok
-        values = self%model%evaluate_arch(self%level, self%second, self%rho, big_r, d, &
+        values = evaluate_arch(self%model, self%level, self%second, self%rho, big_r, d, &
                                           .true., .false.)
         df = self%slope_in_unknown(x, big_r, d, values%angle_dr_smooth, &
                                    values%boundary_sign*values%boundary)
@@ -227,10 +204,10 @@ contains
             ! Which half of (0, rho] holds the root: Upsilon at R = rho/2, on the rough
             ! rules unless the sign is in doubt
             half = 0.5_qp*rho
-            values = model%evaluate_arch(level_rough, fun%second, rho, half, rho - half, &
+            values = evaluate_arch(model, level_rough, fun%second, rho, half, rho - half, &
                                          .true., .false.)
             if (abs(values%angle - psi) < 1.0e-6_qp*psi) then
-                values = model%evaluate_arch(level_fine, fun%second, rho, half, &
+                values = evaluate_arch(model, level_fine, fun%second, rho, half, &
                                              rho - half, .true., .false.)
             end if
             f_half = values%angle - psi
@@ -347,7 +324,7 @@ contains
         start = x0
         call fun%radius_of(start, big_r, d, inside)
         if (.not. inside) return
-        values = fun%model%evaluate_arch(level_fine, fun%second, fun%rho, big_r, d, &
+        values = evaluate_arch(fun%model, level_fine, fun%second, fun%rho, big_r, d, &
                                          .true., .true.)
         solution%steps = solution%steps + 1
         f = values%angle - fun%psi
@@ -417,7 +394,7 @@ contains
         logical, intent(in) :: second
         real(qp), intent(in) :: big_r, d
         type(arch_values) :: values
-        values = model%evaluate_arch(level_fine, second, solution%rho, big_r, d, &
+        values = evaluate_arch(model, level_fine, second, solution%rho, big_r, d, &
                                      .false., .true.)
         solution%apse_radius = big_r
         solution%apse_gap = d

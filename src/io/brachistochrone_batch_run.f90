@@ -6,14 +6,8 @@
 module brachistochrone_batch_run
     use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
     use brachistochrone_kinds, only: qp
-    use brachistochrone_inverse_square, only: inverse_square_model
-    use brachistochrone_two_point, only: endpoint_solution, solve_endpoint, solve_endpoint_secant
-    use brachistochrone_central_force, only: central_force_model, new_central_force_model
-    use brachistochrone_speed_laws, only: power_law, logarithmic_law, harmonic_law
-    use brachistochrone_repulsive, only: repulsive_solution, solve_repulsive, &
-            repulsive_arch_unbounded => arch_unbounded, repulsive_arch_first => arch_first_half
-    use brachistochrone_arches, only: arch_first, arch_second, arch_complete, arch_radial, &
-                                      arch_unbounded
+    use brachistochrone_solution, only: endpoint_solution
+    use brachistochrone_field_interface, only: brachistochrone_field
     use brachistochrone_status, only: status_ok, status_no_convergence
     use brachistochrone_endpoint_input, only: endpoint_table, message, read_endpoint_file, &
             max_curve_points
@@ -99,9 +93,9 @@ contains
     !! table on stdout (as requested), with problems explained on stderr. Returns the
     !! exit code: exit_ok; exit_unsolved when an endpoint has no solution or a solved one
     !! has no curve; exit_input or exit_io when a file could not be written.
-    subroutine deliver_results(options, model, table, first, last, solutions, code)
+    subroutine deliver_results(options, field, table, first, last, solutions, code)
         type(run_options), intent(in) :: options       !! the command line
-        type(inverse_square_model), intent(in) :: model !! the evaluator (for curves)
+        class(brachistochrone_field), intent(in) :: field !! the field solved
         type(endpoint_table), intent(in) :: table      !! the input
         integer, intent(in) :: first, last             !! the rows solved
         type(endpoint_solution), intent(in) :: solutions(first:) !! their solutions
@@ -111,10 +105,10 @@ contains
 
         date = timestamp()
         missing = 0
-        call write_outputs(options%request, table, first, last, solutions, date, status, &
-                           problem)
+        call write_outputs(options%request, field, table, first, last, solutions, date, &
+                           status, problem)
         if (status == 0) call write_curves(options%request%curves_path, &
-                                           options%request%force, model, table, first, &
+                                           options%request%force, field, table, first, &
                                            last, solutions, date, .not. options%quiet, &
                                            status, problem, missing)
         if (status /= 0) then
@@ -123,9 +117,9 @@ contains
             return
         end if
         if (options%show_table) then
-            call write_table_header(output_unit)
+            call write_table_header(output_unit, field)
             do i = first, last
-                call write_table_row(output_unit, i, solutions(i))
+                call write_table_row(output_unit, field, i, solutions(i))
             end do
         end if
         code = exit_ok
@@ -143,88 +137,33 @@ contains
         end if
     end subroutine deliver_results
 
-    !> Solve rows first..last of the table, in parallel over OpenMP threads (dynamic
-    !! schedule; each row is independent and `pure`, so the results do not depend on the
-    !! number of threads), with a progress report on stderr when `report` is set.
-    !! The field is the table's `force`: 'inverse_square' takes the fast path, the others
-    !! the general engine.
-    subroutine solve_rows(model, table, first, last, solutions, report)
-        type(inverse_square_model), intent(in) :: model        !! the evaluator
+    !> Solve rows first..last of the table in `field`, in parallel over OpenMP threads
+    !! (dynamic schedule; each row is independent and `pure`, so the results do not
+    !! depend on the number of threads), with a progress report on stderr when `report`
+    !! is set. Rows with estimates r0, r1 use the field's secant method.
+    subroutine solve_rows(field, table, first, last, solutions, report)
+        class(brachistochrone_field), intent(in) :: field      !! the force field
         type(endpoint_table), intent(in) :: table              !! the input
         integer, intent(in) :: first, last                     !! rows to solve
         type(endpoint_solution), intent(out) :: solutions(first:) !! their solutions
         logical, intent(in) :: report                          !! progress on stderr
         type(progress_type) :: progress
-        type(central_force_model) :: general
-        logical :: fast
         integer :: i
-        fast = table%force == 'inverse_square'
-        select case (table%force)
-        case ('power');       general = new_central_force_model(power_law(n=table%exponent))
-        case ('logarithmic'); general = new_central_force_model(logarithmic_law())
-        case ('harmonic');    general = new_central_force_model(harmonic_law())
-        end select
         call progress%start(last - first + 1, report)
         !$omp parallel do schedule(dynamic, 16) default(shared) private(i)
         do i = first, last
-            if (table%force == 'repulsive') then
-                solutions(i) = least_time_repulsive(table%rho(i), table%psi(i))
-            else if (.not. fast) then
-                solutions(i) = general%solve(table%rho(i), table%psi(i))
-            else if (table%has_estimates(i)) then
-                solutions(i) = solve_endpoint_secant(model, table%rho(i), table%psi(i), &
-                                                     table%r0(i), table%r1(i), &
-                                                     table%secant_tolerance)
+            if (table%has_estimates(i)) then
+                solutions(i) = field%solve_from_estimates(table%rho(i), table%psi(i), &
+                                                          table%r0(i), table%r1(i), &
+                                                          table%secant_tolerance)
             else
-                solutions(i) = solve_endpoint(model, table%rho(i), table%psi(i))
+                solutions(i) = field%solve(table%rho(i), table%psi(i))
             end if
             call progress%step()
         end do
         !$omp end parallel do
         call progress%finish()
     end subroutine solve_rows
-
-    !> The least-time brachistochrone through B under repulsive force (Tee sec. 6): every
-    !! target angle has exactly one curve and time grows with the angle swept, so it is
-    !! the one sweeping psi itself (`repulsive` derives this; the library API lists the
-    !! curves with more windings). R-bar exists for bounded curves only.
-    pure function least_time_repulsive(rho, psi) result(solution)
-        real(qp), intent(in) :: rho, psi
-        type(endpoint_solution) :: solution
-        type(repulsive_solution), allocatable :: found(:)
-        integer :: best, status
-        solution%rho = rho
-        solution%psi = psi
-        call solve_repulsive(rho, psi, 0, found, best, status)
-        if (status /= status_ok) then
-            solution%status = status
-            return
-        else if (best == 0) then
-            solution%status = status_no_convergence
-            if (size(found) > 0) solution%status = found(1)%status
-            return
-        end if
-        associate (b => found(best))
-            solution%status = b%status
-            if (b%status /= status_ok) return
-            if (b%curve%k2 == 0.0_qp) then
-                solution%arch = arch_radial
-            else if (b%arch == repulsive_arch_unbounded) then
-                solution%arch = arch_unbounded
-            else if (rho == 1.0_qp) then
-                solution%arch = arch_complete
-            else
-                solution%arch = merge(arch_first, arch_second, b%arch == repulsive_arch_first)
-            end if
-            solution%has_apse_radius = b%curve%bounded
-            if (b%curve%bounded) solution%apse_radius = b%curve%apse
-            solution%arclength = b%arclength
-            solution%time = b%time
-            solution%steps = b%steps
-            solution%has_arclength = .true.
-            solution%has_time = .true.
-        end associate
-    end function least_time_repulsive
 
     !> Resolve the slice (-1 means the table's first or last row) and check it.
     subroutine check_slice(table, first, last, ok, message)

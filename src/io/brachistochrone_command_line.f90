@@ -1,6 +1,7 @@
 !> The command line shared by the batch drivers (serial/OpenMP and MPI).
 module brachistochrone_command_line
     use brachistochrone_version, only: program_version
+    use brachistochrone_fields, only: field_names
     use brachistochrone_result_output, only: output_request
     implicit none
     private
@@ -127,8 +128,12 @@ contains
         write (unit, '(a)') ''
         write (unit, '(a)') 'Solves the brachistochrone from A = (1, 0) to each endpoint '// &
             '(rho, psi) of the namelist'
-        write (unit, '(a)') 'group &endpoints in FILE.nml (attractive inverse-square '// &
-            'force, Tee 1998). Prints a table.'
+        write (unit, '(a)') 'group &endpoints in FILE.nml, in the field that its variable '// &
+            'force names (Tee 1998):'
+        write (unit, '(a)') '  '//field_names//';'
+        write (unit, '(a)') '  default ''inverse_square'' (attractive, F = mu/r^2); '// &
+            '''power'' needs exponent = n > 1.'
+        write (unit, '(a)') 'Prints a table; every output names the field it solved.'
         write (unit, '(a)') '  --csv OUT.csv       write rho,psi,arch,R,s,t,steps,status'
         write (unit, '(a)') '  --nml OUT.nml       write the results as namelist group '// &
             '&results (reads back bit for bit)'

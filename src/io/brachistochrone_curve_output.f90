@@ -9,9 +9,9 @@
 !! memory stays bounded and the file does not depend on the number of threads.
 module brachistochrone_curve_output
     use brachistochrone_status, only: status_word
-    use brachistochrone_inverse_square, only: inverse_square_model
-    use brachistochrone_two_point, only: endpoint_solution
-    use brachistochrone_curve, only: curve_samples, sample_endpoint_curve
+    use brachistochrone_field_interface, only: brachistochrone_field
+    use brachistochrone_solution, only: endpoint_solution
+    use brachistochrone_curve, only: curve_samples
     use brachistochrone_endpoint_input, only: endpoint_table
     use brachistochrone_result_output, only: format_real, write_provenance, temporary_name, &
             finish_file
@@ -64,11 +64,11 @@ contains
     !> Sample the curve of every solved row first..last with `table%curve_points` points
     !! and write them to `path`. status: 0 ok; 1 the file exists and force is off; 3 an
     !! I/O error (nothing partial is left). `missing` counts the rows without a curve.
-    subroutine write_curves(path, force, model, table, first, last, solutions, date, &
+    subroutine write_curves(path, force, field, table, first, last, solutions, date, &
                             report, status, message, missing)
         character(len=*), intent(in) :: path               !! the CSV ('' : nothing)
         logical, intent(in) :: force                       !! replace an existing file
-        type(inverse_square_model), intent(in) :: model    !! the evaluator
+        class(brachistochrone_field), intent(in) :: field  !! the field solved
         type(endpoint_table), intent(in) :: table          !! the input
         integer, intent(in) :: first, last                 !! rows solved
         type(endpoint_solution), intent(in) :: solutions(first:) !! their solutions
@@ -102,7 +102,7 @@ contains
             message = 'cannot write '//path//': '//trim(io_message)
             return
         end if
-        call write_provenance(unit, table, first, last, date, '# ', ios, io_message)
+        call write_provenance(unit, field, table, first, last, date, '# ', ios, io_message)
         if (ios == 0) write (unit, '(a)', iostat=ios, iomsg=io_message) '# curves: '// &
             integer_text(table%curve_points)//' points per curve from A to B, equal '// &
             'steps of arclength on each half-arch (the apse is a point); id = input row'
@@ -116,7 +116,7 @@ contains
             allocate (block(block_first:block_last))
             !$omp parallel do schedule(dynamic, 1) default(shared) private(i)
             do i = block_first, block_last
-                block(i) = sample_endpoint_curve(model, solutions(i), table%curve_points)
+                block(i) = field%sample_curve(solutions(i), table%curve_points)
                 call progress%step()
             end do
             !$omp end parallel do

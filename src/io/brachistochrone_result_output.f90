@@ -11,9 +11,11 @@ module brachistochrone_result_output
     use, intrinsic :: iso_c_binding, only: c_char, c_int, c_null_char
     use, intrinsic :: iso_fortran_env, only: compiler_version, compiler_options
     use brachistochrone_kinds, only: qp
-    use brachistochrone_status, only: status_word, status_ok
+    use brachistochrone_status, only: status_word, status_ok, status_inaccessible
     use brachistochrone_version, only: program_name, program_version
-    use brachistochrone_two_point, only: endpoint_solution, arch_word
+    use brachistochrone_solution, only: endpoint_solution
+    use brachistochrone_field_interface, only: brachistochrone_field
+    use brachistochrone_arches, only: arch_word
     use brachistochrone_endpoint_input, only: endpoint_table, group_name
     use brachistochrone_strings, only: integer_text
     implicit none
@@ -94,18 +96,20 @@ contains
                integer_text(solution%steps)//','//status_word(solution%status)
     end function csv_row
 
-    !> Header of the readable table.
-    subroutine write_table_header(unit)
-        integer, intent(in) :: unit !! open formatted unit
-        write (unit, '(a)') '# Brachistochrones from A = (1, 0) under attractive '// &
-            'inverse-square force (Tee 1998), units mu = 1'
+    !> Header of the readable table: the field, its units.
+    subroutine write_table_header(unit, field)
+        integer, intent(in) :: unit                       !! open formatted unit
+        class(brachistochrone_field), intent(in) :: field !! the field solved
+        write (unit, '(a)') '# Brachistochrones from A = (1, 0) under '// &
+            field%description()//exponent_note(field)//', '//field%units()
         write (unit, '(a)') '# row  rho, psi -> arch, steps, status; then R-bar, s, t '// &
             '(36 significant digits)'
     end subroutine write_table_header
 
     !> One endpoint as a block, like a row of Tee's Table 1.
-    subroutine write_table_row(unit, row, solution)
+    subroutine write_table_row(unit, field, row, solution)
         integer, intent(in) :: unit                     !! open formatted unit
+        class(brachistochrone_field), intent(in) :: field !! the field solved
         integer, intent(in) :: row                      !! row number in the input
         type(endpoint_solution), intent(in) :: solution !! the solved endpoint
         write (unit, '(a)') ''
@@ -117,17 +121,18 @@ contains
         if (solution%has_arclength) write (unit, '(4x,a)') 's     = '// &
             format_real(solution%arclength)
         if (solution%has_time) then
-            if (solution%has_apse_radius) then
+            if (solution%status /= status_inaccessible) then
                 write (unit, '(4x,a)') 't     = '//format_real(solution%time)
             else
                 write (unit, '(4x,a)') 't    >= '//format_real(solution%time)// &
-                    '  (greatest lower bound kappa(rho); not attained)'
+                    '  ('//field%bound_note()//')'
             end if
         end if
     end subroutine write_table_row
 
     !> Provenance: who made the results, how, from what. `date` is an ISO 8601 stamp.
-    function provenance_lines(table, first, last, date) result(lines)
+    function provenance_lines(field, table, first, last, date) result(lines)
+        class(brachistochrone_field), intent(in) :: field !! the field solved
         type(endpoint_table), intent(in) :: table !! the input
         integer, intent(in) :: first, last        !! rows solved
         character(len=*), intent(in) :: date      !! when
@@ -136,15 +141,19 @@ contains
                  line_text('compiler: '//compiler_version()), &
                  line_text('compiler options: '//compiler_options()), &
                  line_text('date: '//date), &
+                 line_text('field: '//field%name()//', '//field%description()// &
+                           exponent_note(field)//', '//field%units()), &
                  line_text('input: '//table%path//', rows '//integer_text(first)//' to '// &
                            integer_text(last)//' of '//integer_text(table%n)), &
                  line_text('effective input:')]
-        lines = [lines, effective_input(table, first, last)]
+        lines = [lines, effective_input(field, table, first, last)]
     end function provenance_lines
 
     !> Write the provenance (`provenance_lines`) as comment lines starting with `prefix`.
-    subroutine write_provenance(unit, table, first, last, date, prefix, ios, io_message)
+    subroutine write_provenance(unit, field, table, first, last, date, prefix, ios, &
+                                io_message)
         integer, intent(in) :: unit               !! open formatted unit
+        class(brachistochrone_field), intent(in) :: field !! the field solved
         type(endpoint_table), intent(in) :: table !! the input
         integer, intent(in) :: first, last        !! rows solved
         character(len=*), intent(in) :: date      !! when
@@ -153,7 +162,7 @@ contains
         character(len=*), intent(inout) :: io_message !! iomsg of the writes
         type(line_text), allocatable :: lines(:)
         integer :: k
-        lines = provenance_lines(table, first, last, date)
+        lines = provenance_lines(field, table, first, last, date)
         ios = 0
         do k = 1, size(lines)
             write (unit, '(a)', iostat=ios, iomsg=io_message) prefix//lines(k)%text
@@ -163,7 +172,8 @@ contains
 
     !> The input as read (after defaults), as a namelist group that reads back the same
     !! rows: values in full precision, null values where a row has no estimates.
-    function effective_input(table, first, last) result(lines)
+    function effective_input(field, table, first, last) result(lines)
+        class(brachistochrone_field), intent(in) :: field
         type(endpoint_table), intent(in) :: table
         integer, intent(in) :: first, last
         type(line_text), allocatable :: lines(:)
@@ -172,7 +182,8 @@ contains
         rows = last - first + 1
         echo = rows <= max_echoed_rows
         estimates = echo .and. any(table%has_estimates(first:last))
-        count_lines = 6 + merge(1, 0, table%force == 'power') + merge(2*(rows + 1), 1, echo) &
+        count_lines = 6 + merge(1, 0, field%exponent() /= 0.0_qp) &
+                      + merge(2*(rows + 1), 1, echo) &
                       + merge(2*(rows + 1), 0, estimates)
         allocate (lines(count_lines))
         k = 0
@@ -180,8 +191,8 @@ contains
         call put('  n = '//integer_text(rows))
         call put('  secant_tolerance = '//format_real(table%secant_tolerance))
         call put('  curve_points = '//integer_text(table%curve_points))
-        call put('  force = '''//table%force//'''')
-        if (table%force == 'power') call put('  exponent = '//format_real(table%exponent))
+        call put('  force = '''//field%name()//'''')
+        if (field%exponent() /= 0.0_qp) call put('  exponent = '//format_real(field%exponent()))
         if (.not. echo) then
             call put('  ! rho, psi, r0, r1: '//integer_text(rows)//' rows, more than '// &
                      integer_text(max_echoed_rows)//' are not echoed; the rows of this '// &
@@ -226,8 +237,10 @@ contains
 
     !> Write every requested file. status: 0 ok; 1 a target exists and force is off;
     !! 3 an I/O error (the message says which file). Nothing partial is left behind.
-    subroutine write_outputs(request, table, first, last, solutions, date, status, message)
+    subroutine write_outputs(request, field, table, first, last, solutions, date, status, &
+                             message)
         type(output_request), intent(in) :: request        !! which files
+        class(brachistochrone_field), intent(in) :: field  !! the field solved
         type(endpoint_table), intent(in) :: table          !! the input
         integer, intent(in) :: first, last                 !! rows solved
         type(endpoint_solution), intent(in) :: solutions(first:) !! their solutions
@@ -238,7 +251,7 @@ contains
 
         status = 0
         message = ''
-        provenance = provenance_lines(table, first, last, date)
+        provenance = provenance_lines(field, table, first, last, date)
         call write_one(request%csv_path, 'csv')
         if (status == 0) call write_one(request%nml_path, 'nml')
         if (status == 0) call write_one(request%table_path, 'table')
@@ -288,9 +301,9 @@ contains
                     if (ios == 0) write (unit, '(a)', iostat=ios, iomsg=io_message) &
                         '# '//provenance(k)%text
                 end do
-                if (ios == 0) call write_table_header(unit)
+                if (ios == 0) call write_table_header(unit, field)
                 do k = first, last
-                    call write_table_row(unit, k, solutions(k))
+                    call write_table_row(unit, field, k, solutions(k))
                 end do
             end select
             call finish_file(unit, temporary, path, ios, io_message, status, message)
@@ -370,6 +383,14 @@ contains
         integer, intent(out) :: status            !! 0 on success
         status = int(c_rename(temporary//c_null_char, path//c_null_char))
     end subroutine commit_file
+
+    !> ` with n = ...` for fields with an exponent, '' for the others.
+    pure function exponent_note(field) result(text)
+        class(brachistochrone_field), intent(in) :: field
+        character(len=:), allocatable :: text
+        text = ''
+        if (field%exponent() /= 0.0_qp) text = ' with n = '//short_real(field%exponent())
+    end function exponent_note
 
     pure function optional_real(present_, x) result(text)
         logical, intent(in) :: present_
