@@ -37,6 +37,7 @@ module brachistochrone_endpoint_input
     use, intrinsic :: iso_fortran_env, only: int64
     use, intrinsic :: iso_c_binding, only: c_int, c_size_t, c_char
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+    use brachistochrone_fields, only: field_names
     use brachistochrone_kinds, only: qp, pi
     use brachistochrone_namelist_scan, only: group_scan, scan_group, problem_list
     use brachistochrone_strings, only: integer_text, escape_text, real_from_text, &
@@ -56,8 +57,7 @@ module brachistochrone_endpoint_input
     character(len=*), parameter :: variable_names = &
         'n, rho, psi, r0, r1, secant_tolerance, curve_points, force, exponent'
     !> The force fields `force` may name.
-    character(len=*), parameter :: force_names = &
-        "'inverse_square', 'power', 'logarithmic', 'harmonic', 'repulsive'"
+    character(len=*), parameter :: force_names = field_names
     !> Most points per curve (`curve_points`); the fewest is 2 (A and B).
     integer, parameter :: max_curve_points = 100000
     !> The input path that means standard input.
