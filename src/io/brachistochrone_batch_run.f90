@@ -17,7 +17,7 @@ module brachistochrone_batch_run
     use brachistochrone_version, only: program_name
     use brachistochrone_command_line, only: run_options, exit_ok, exit_input, exit_unsolved, exit_io
     use brachistochrone_run_support, only: progress_type, timestamp
-    use brachistochrone_strings, only: integer_text
+    use brachistochrone_strings, only: integer_text, escape_text
     implicit none
     private
 
@@ -46,8 +46,8 @@ contains
         if (size(table%errors) > 0) then
             report = [(message(program_name//': '//table%errors(i)%text), &
                        i = 1, size(table%errors))]
-            report = [report, message(program_name//': '//integer_text(size(table%errors)) &
-                      //' problem(s) in '//options%input_path// &
+            report = [report, message(program_name//': '//integer_text(table%problems) &
+                      //' problem(s) in '//escape_text(options%input_path)// &
                       '; nothing was computed or written')]
             code = exit_input
             finished = .true.
@@ -61,7 +61,7 @@ contains
             text = '--curves '//options%request%curves_path//' needs the number of points '// &
                    'per curve: set curve_points = N (2 <= N <= '// &
                    integer_text(max_curve_points)//') in the group &endpoints of '// &
-                   options%input_path
+                   escape_text(options%input_path)
         end if
         if (ok .and. .not. options%check_only) call check_targets(options%request, ok, text)
         if (.not. ok) then
@@ -69,7 +69,7 @@ contains
             code = exit_input
             finished = .true.
         else if (options%check_only) then
-            report = [message(options%input_path//': '//integer_text(table%n)// &
+            report = [message(escape_text(options%input_path)//': '//integer_text(table%n)// &
                               ' endpoints, valid')]
             finished = .true.
         end if
