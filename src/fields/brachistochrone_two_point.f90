@@ -24,8 +24,7 @@ module brachistochrone_two_point
     use brachistochrone_solution, only: endpoint_solution, endpoint_status, region_inside
     use brachistochrone_closed_forms, only: radial_time, kappa_time, inaccessible_angle
     use brachistochrone_inverse_square, only: inverse_square_model, evaluate_arch, arch_values, &
-            level_fine, &
-            level_coarse, level_rough, level_digits
+            level_fine, level_coarse, level_hardware, level_digits, hardware_epsilon
     use brachistochrone_roots, only: root_function, newton_bracketed, secant
     use brachistochrone_arches, only: arch_first, arch_second, arch_complete, arch_radial, &
                                       arch_inaccessible
@@ -40,6 +39,12 @@ module brachistochrone_two_point
     !> Relative tolerance of the 17-digit phase: near its noise, so that one
     !! full-precision Newton step is short enough for `final_step`.
     real(qp), parameter :: coarse_tolerance = 1.0e-16_qp
+    !> The 17-digit phase runs in hardware precision (level_hardware): its tolerance and
+    !! the accuracy of its evaluations (x87 extended: 1e-16 and 1e-17; where the widest
+    !! hardware kind is double, larger, and the full-precision phase takes more steps).
+    real(qp), parameter :: hardware_tolerance = max(coarse_tolerance, 100.0_qp*hardware_epsilon)
+    real(qp), parameter :: hardware_accuracy = max(10.0_qp**(-level_digits(level_coarse)), &
+                                                   10.0_qp*hardware_epsilon)
 
     !> Unknowns of the default solver.
     integer, parameter :: unknown_u = 1, unknown_r = 2, unknown_log_r = 3
@@ -201,10 +206,10 @@ contains
             big_r = rho
             d = 0.0_qp
         else
-            ! Which half of (0, rho] holds the root: Upsilon at R = rho/2, on the rough
-            ! rules unless the sign is in doubt
+            ! Which half of (0, rho] holds the root: Upsilon at R = rho/2, in hardware
+            ! precision unless the sign is in doubt
             half = 0.5_qp*rho
-            values = evaluate_arch(model, level_rough, fun%second, rho, half, rho - half, &
+            values = evaluate_arch(model, level_hardware, fun%second, rho, half, rho - half, &
                                          .true., .false.)
             if (abs(values%angle - psi) < 1.0e-6_qp*psi) then
                 values = evaluate_arch(model, level_fine, fun%second, rho, half, &
@@ -247,7 +252,7 @@ contains
             else
                 ! first half-arch, small R: Theta(rho,R) ~ C R^(3/2); unknown log R first
                 fun%unknown = unknown_log_r
-                fun%level = level_coarse
+                fun%level = level_hardware
                 hi = log(half)
                 x0 = hi + (2.0_qp/3.0_qp)*log(psi/theta_half)
                 log_lo = x0 - 2.0_qp
@@ -257,9 +262,9 @@ contains
                     if (status == status_ok .and. f_lo < 0.0_qp) exit
                     log_lo = log_lo - 4.0_qp
                 end do
-                call newton_bracketed(fun, log_lo, f_lo, hi, 1.0_qp, x0, coarse_tolerance, &
+                call newton_bracketed(fun, log_lo, f_lo, hi, 1.0_qp, x0, hardware_tolerance, &
                                       0.0_qp, max_steps, x, steps, status, curvature, &
-                                      10.0_qp**(-level_digits(level_coarse)))
+                                      hardware_accuracy)
                 solution%steps = solution%steps + steps
                 ! then R itself at full precision, on the same bracket; with f(R) = g(log R)
                 ! the curvature |f''/2f'| = |g'' - g'|/(2 |g'| R) <= (2 |g''/2g'| + 1)/(2R)
@@ -272,13 +277,13 @@ contains
                 if (curvature > 0.0_qp) curvature = (2.0_qp*curvature + 1.0_qp)/(2.0_qp*x0)
             end if
             if (fun%unknown /= unknown_r .or. fun%second) then
-                ! 17-digit phase, which also measures the curvature of Upsilon - psi:
-                ! the full-precision phase then usually needs one step
+                ! 17-digit phase in hardware precision, which also measures the curvature
+                ! of Upsilon - psi: the full-precision phase then usually needs one step
                 x = x0
-                fun%level = level_coarse
-                call newton_bracketed(fun, lo, f_lo, hi, f_hi, x, coarse_tolerance, 0.0_qp, &
-                                      max_steps, x0, steps, status, curvature, &
-                                      10.0_qp**(-level_digits(level_coarse)))
+                fun%level = level_hardware
+                call newton_bracketed(fun, lo, f_lo, hi, f_hi, x, hardware_tolerance, &
+                                      0.0_qp, max_steps, x0, steps, status, curvature, &
+                                      hardware_accuracy)
                 solution%steps = solution%steps + steps
             end if
             ! full-precision phase
