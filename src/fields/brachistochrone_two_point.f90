@@ -43,7 +43,7 @@ module brachistochrone_two_point
     !! the accuracy of its evaluations (x87 extended: 1e-16 and 1e-17; where the widest
     !! hardware kind is double, larger, and the full-precision phase takes more steps).
     real(qp), parameter :: hardware_tolerance = max(coarse_tolerance, 100.0_qp*hardware_epsilon)
-    real(qp), parameter :: hardware_accuracy = max(10.0_qp**(-level_digits(level_coarse)), &
+    real(qp), parameter :: hardware_accuracy = max(1.0e-17_qp, &
                                                    10.0_qp*hardware_epsilon)
 
     !> Unknowns of the default solver.
