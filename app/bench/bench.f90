@@ -5,13 +5,21 @@
 !! Solves every endpoint of FILE.nml REPEATS times (default 5) on THREADS OpenMP threads
 !! (default 1) with the program's own loop (`solve_rows`), and prints the median wall
 !! time per endpoint, so that scripts/bench.py can compare it with SciPy and mpmath
-!! measured in the same run. Output: `key = value` lines.
+!! measured in the same run. Also times, on the solved endpoints, the floor of the
+!! solver (one full-precision evaluation of the inverse-square kernel with s, t and the
+!! derivatives: what remains when every earlier step is free) and the formatting of
+!! the results (`format_quad` against the formatted `write` it replaced, ns per value).
+!! Output: `key = value` lines.
 program bench
     use, intrinsic :: iso_fortran_env, only: int64, error_unit, output_unit
     use brachistochrone, only: qp, brachistochrone_field, new_field, endpoint_solution, &
                                status_ok
     use brachistochrone_endpoint_input, only: endpoint_table, read_endpoint_file
     use brachistochrone_batch_run, only: solve_rows
+    use brachistochrone_inverse_square, only: inverse_square_model, new_inverse_square_model, &
+                                              evaluate_arch, arch_values, level_fine
+    use brachistochrone_arches, only: arch_first, arch_second, arch_complete
+    use brachistochrone_format, only: format_quad, format_quad_by_write
     !$ use omp_lib, only: omp_set_num_threads
     implicit none
     type(endpoint_table) :: table
@@ -69,8 +77,67 @@ program bench
         1.0e6_qp*median(seconds)/real(table%n, qp)
     write (output_unit, '(a,f0.3)') 'best_us_per_endpoint = ', &
         1.0e6_qp*minval(seconds)/real(table%n, qp)
+    call time_floor_and_format(solutions, repeats)
 
 contains
+
+    !> The floor (one full-precision evaluation per solved endpoint, at its solution) and
+    !! the formatting of rho, psi, R, s, t: medians over `repeats` passes.
+    subroutine time_floor_and_format(solutions, repeats)
+        type(endpoint_solution), intent(in) :: solutions(:)
+        integer, intent(in) :: repeats
+        type(inverse_square_model) :: model
+        type(arch_values) :: values
+        real(qp) :: floor_seconds(repeats), fast(repeats), slow(repeats), sink
+        integer(int64) :: start, finish, rate
+        integer :: k, i, solved, formatted
+        character(len=:), allocatable :: text
+        model = new_inverse_square_model()
+        sink = 0.0_qp
+        solved = 0
+        do k = 1, repeats
+            solved = 0
+            call system_clock(start, rate)
+            do i = 1, size(solutions)
+                associate (b => solutions(i))
+                if (b%status /= status_ok .or. .not. any(b%arch == &
+                    [arch_first, arch_second, arch_complete])) cycle
+                values = evaluate_arch(model, level_fine, b%arch /= arch_first, b%rho, &
+                                       b%apse_radius, b%apse_gap, .true., .true.)
+                sink = sink + values%time
+                solved = solved + 1
+                end associate
+            end do
+            call system_clock(finish)
+            floor_seconds(k) = real(finish - start, qp)/real(rate, qp)
+        end do
+        formatted = 0
+        do k = 1, repeats
+            call system_clock(start, rate)
+            do i = 1, size(solutions)
+                text = format_quad(solutions(i)%arclength)//format_quad(solutions(i)%time)
+                sink = sink + real(len(text), qp)
+            end do
+            call system_clock(finish)
+            fast(k) = real(finish - start, qp)/real(rate, qp)
+            call system_clock(start, rate)
+            do i = 1, size(solutions)
+                text = format_quad_by_write(solutions(i)%arclength)// &
+                       format_quad_by_write(solutions(i)%time)
+                sink = sink + real(len(text), qp)
+            end do
+            call system_clock(finish)
+            slow(k) = real(finish - start, qp)/real(rate, qp)
+        end do
+        formatted = 2*size(solutions)
+        write (output_unit, '(a,f0.3)') 'floor_us_per_endpoint = ', &
+            1.0e6_qp*median(floor_seconds)/real(max(solved, 1), qp)
+        write (output_unit, '(a,f0.1)') 'format_ns_per_value = ', &
+            1.0e9_qp*median(fast)/real(max(formatted, 1), qp)
+        write (output_unit, '(a,f0.1)') 'format_write_ns_per_value = ', &
+            1.0e9_qp*median(slow)/real(max(formatted, 1), qp)
+        if (sink < 0.0_qp) write (output_unit, '(a)') 'unreachable'
+    end subroutine time_floor_and_format
 
     function median(values) result(middle)
         real(qp), intent(in) :: values(:)

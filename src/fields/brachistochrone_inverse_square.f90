@@ -75,6 +75,7 @@ module brachistochrone_inverse_square
     integer, parameter :: min_nodes = 6
     !> Digits aimed at by the node choice: fine (with a margin over 34) and coarse.
     real(qp), parameter :: fine_digits = 36.0_qp, coarse_digits = 17.0_qp, &
+                           hardware_digits = 19.0_qp, &
                            rough_digits = 9.0_qp
     !> Pieces of [0, 1] and points per piece of the whole-half-arch tables: the slowest
     !! piece, next to R = 1 (Bernstein radius 18 from the singularity at 3/2), reaches
@@ -144,7 +145,7 @@ contains
         select case (level)
         case (level_coarse);  digits = coarse_digits
         case (level_rough);   digits = rough_digits
-        case (level_hardware);  digits = coarse_digits
+        case (level_hardware); digits = hardware_digits
         case default;         digits = fine_digits
         end select
     end function level_digits
@@ -165,7 +166,7 @@ contains
             model%gauss(j)%double_weight_xp = real(model%gauss(j)%double_weight, xp)
         end do
         call build_whole_tables(model)
-        model%whole_xp = series_xp(model%whole(1), 0.1_qp*10.0_qp**(-coarse_digits))
+        model%whole_xp = series_xp(model%whole(1), 0.1_qp*10.0_qp**(-hardware_digits))
         ! d Theta(R,R)/dR at R = 0 (Theta(R,R) = pi/3 - 0.8095502 R + ...), with
         ! Theta(R,R) = (1 - R) A(R): A'(0) - A(0)
         call model%whole(1)%evaluate(0.0_qp, angle, slope)
@@ -349,14 +350,14 @@ contains
         sin_l = sqrt(dd/(rr*one_minus_big_r))
         upper_apse = sin_l/(1.0_xp + cos_l)
         upper_start = cos_l/(1.0_xp + sin_l)
-        rule_start = rule_index(big_r, real(upper_start, qp), .false., coarse_digits, .false.)
+        rule_start = rule_index(big_r, real(upper_start, qp), .false., hardware_digits, .false.)
         whole_factor = 0.0_xp
         whole = 0.0_xp
         whole_slope = 0.0_xp
         values%boundary_sign = 1.0_qp
         if (second) then
             call evaluate_xp(model%whole_xp, br, whole, whole_slope)
-            rule_apse = rule_index(big_r, real(upper_apse, qp), .true., coarse_digits, .false.)
+            rule_apse = rule_index(big_r, real(upper_apse, qp), .true., hardware_digits, .false.)
             values%boundary_sign = -1.0_qp
             if (rule_apse <= rule_start) then
                 part = sweep_hardware(model, rule_apse, br, one_minus_big_r, upper_apse, .true.)

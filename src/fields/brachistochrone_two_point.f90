@@ -12,8 +12,10 @@
 !!   u^2 keep full precision for endpoints next to the apse. In the lower part the unknown
 !!   is R itself (second half-arch: Upsilon = 2 pi/3 - 1.619 R + O(R^(3/2))) or log R
 !!   (first half-arch: Theta(rho,R) ~ C R^(3/2)), so tiny R-bar keeps its relative
-!!   precision. Safeguarded Newton on 17-digit rules, then one step on full
-!!   quad-precision rules that also yields s and t (`final_step`); the derivative is
+!!   precision. Safeguarded Newton on 19-digit rules evaluated in hardware precision
+!!   (x87 extended, `level_hardware`: about a microsecond each), then one step on full
+!!   quad-precision rules that also yields s and t (`final_step`), the one
+!!   software-binary128 evaluation per endpoint in the usual case; the derivative is
 !!   differentiated under the integral sign (eq. 67-71) plus the boundary term of the
 !!   moving limit L(R).
 !! - `solve_endpoint_secant`: the paper's secant method from R0, R1 with its stopping
@@ -24,7 +26,7 @@ module brachistochrone_two_point
     use brachistochrone_solution, only: endpoint_solution, endpoint_status, region_inside
     use brachistochrone_closed_forms, only: radial_time, kappa_time, inaccessible_angle
     use brachistochrone_inverse_square, only: inverse_square_model, evaluate_arch, arch_values, &
-            level_fine, level_coarse, level_hardware, level_digits, hardware_epsilon
+            level_fine, level_hardware, hardware_epsilon
     use brachistochrone_roots, only: root_function, newton_bracketed, secant
     use brachistochrone_arches, only: arch_first, arch_second, arch_complete, arch_radial, &
                                       arch_inaccessible
@@ -36,15 +38,14 @@ module brachistochrone_two_point
 
     !> Limit on root-finder evaluations per phase.
     integer, parameter :: max_steps = 200
-    !> Relative tolerance of the 17-digit phase: near its noise, so that one
-    !! full-precision Newton step is short enough for `final_step`.
-    real(qp), parameter :: coarse_tolerance = 1.0e-16_qp
-    !> The 17-digit phase runs in hardware precision (level_hardware): its tolerance and
-    !! the accuracy of its evaluations (x87 extended: 1e-16 and 1e-17; where the widest
-    !! hardware kind is double, larger, and the full-precision phase takes more steps).
-    real(qp), parameter :: hardware_tolerance = max(coarse_tolerance, 100.0_qp*hardware_epsilon)
-    real(qp), parameter :: hardware_accuracy = max(1.0e-17_qp, &
-                                                   10.0_qp*hardware_epsilon)
+    !> The phase before the full-precision step runs in hardware precision
+    !! (level_hardware, 19-digit rules): its relative tolerance and the accuracy of its
+    !! evaluations, from the rounding of the hardware kind (x87 extended: 1.1e-17 and
+    !! 1.1e-18, so that the full-precision Newton step is below 1e-17 of the bracket and
+    !! `final_step` accepts it; where the widest hardware kind is double, 2.2e-14 and
+    !! 2.2e-15, and the full-precision phase takes more steps).
+    real(qp), parameter :: hardware_tolerance = 100.0_qp*hardware_epsilon
+    real(qp), parameter :: hardware_accuracy = max(1.0e-19_qp, 10.0_qp*hardware_epsilon)
 
     !> Unknowns of the default solver.
     integer, parameter :: unknown_u = 1, unknown_r = 2, unknown_log_r = 3
@@ -277,7 +278,7 @@ contains
                 if (curvature > 0.0_qp) curvature = (2.0_qp*curvature + 1.0_qp)/(2.0_qp*x0)
             end if
             if (fun%unknown /= unknown_r .or. fun%second) then
-                ! 17-digit phase in hardware precision, which also measures the curvature
+                ! 19-digit phase in hardware precision, which also measures the curvature
                 ! of Upsilon - psi: the full-precision phase then usually needs one step
                 x = x0
                 fun%level = level_hardware
@@ -305,7 +306,7 @@ contains
 
     !> The full-precision step, when one suffices: one evaluation at x0 on the full rules,
     !! with s and t there and the slopes of Upsilon and s. The Newton step dx from x0 is
-    !! accepted when it stays in the bracket, the curvature measured on the 17-digit
+    !! accepted when it stays in the bracket, the curvature measured on the 19-digit
     !! phase certifies it (error about K dx^2 below the tolerance), and it is so short
     !! (|dx| <= 1e-17 of the bracket) that s is linear over it to far below rounding.
     !! Then the root and s, t there need no further evaluation:
