@@ -7,7 +7,8 @@
 !! time per endpoint, so that scripts/bench.py can compare it with SciPy and mpmath
 !! measured in the same run. Also times, on the solved endpoints, the floor of the
 !! solver (one full-precision evaluation of the inverse-square kernel with s, t and the
-!! derivatives: what remains when every earlier step is free) and the formatting of
+!! derivatives, level_final as the solver's last step makes it: what remains when every
+!! earlier step is free) and the formatting of
 !! the results (rho, psi, R, s, t by `format_quad` against the formatted `write` it
 !! replaced, ns per value).
 !! Output: `key = value` lines.
@@ -18,7 +19,7 @@ program bench
     use brachistochrone_endpoint_input, only: endpoint_table, read_endpoint_file
     use brachistochrone_batch_run, only: solve_rows
     use brachistochrone_inverse_square, only: inverse_square_model, new_inverse_square_model, &
-                                              evaluate_arch, arch_values, level_fine
+                                              evaluate_arch, arch_values, level_final
     use brachistochrone_arches, only: arch_first, arch_second, arch_complete
     use brachistochrone_format, only: format_quad, format_quad_by_write
     !$ use omp_lib, only: omp_set_num_threads
@@ -104,7 +105,7 @@ contains
                 associate (b => solutions(i))
                 if (b%status /= status_ok .or. .not. any(b%arch == &
                     [arch_first, arch_second, arch_complete])) cycle
-                values = evaluate_arch(model, level_fine, b%arch /= arch_first, b%rho, &
+                values = evaluate_arch(model, level_final, b%arch /= arch_first, b%rho, &
                                        b%apse_radius, b%apse_gap, .true., .true.)
                 sink = sink + values%time
                 solved = solved + 1

@@ -44,7 +44,7 @@ module brachistochrone_inverse_square
 
     public :: inverse_square_model, new_inverse_square_model
     public :: evaluate_arch, arch_values, level_fine, level_coarse, level_rough, level_digits
-    public :: level_hardware, hardware_epsilon
+    public :: level_hardware, level_final, hardware_epsilon
 
     !> Rule set selector: full quad precision.
     integer, parameter :: level_fine = 1
@@ -62,6 +62,11 @@ module brachistochrone_inverse_square
     integer, parameter :: xp_candidate = selected_real_kind(18, 4931)
     integer, parameter :: xp = merge(xp_candidate, real64, &
                                      xp_candidate > 0 .and. xp_candidate /= qp)
+    !> Rule set selector: the full rules, the values (angle, s, t) in binary128 and the
+    !! d/dR pieces of the integrals in hardware precision (`xp`, relative error about
+    !! 1e-18): for a last Newton step whose size is already below 1e-17, where the
+    !! slopes' error is negligible, at about two thirds of the cost of level_fine.
+    integer, parameter :: level_final = 5
     !> Relative rounding of `xp` (the level_hardware evaluations are about 100 times
     !! less accurate).
     real(qp), parameter :: hardware_epsilon = real(epsilon(1.0_xp), qp)
@@ -134,6 +139,10 @@ module brachistochrone_inverse_square
         !! / sqrt(r - R) (with both the derivative and arclength requested)
         real(qp) :: arclength_dr_smooth = 0.0_qp
         real(qp) :: arclength_boundary = 0.0_qp  !! its 1/sqrt(r - R) coefficient, >= 0
+        !> Bounds on the absolute errors of angle_dr_smooth and arclength_dr_smooth from
+        !! their hardware-precision sums (level_final; 0 on the other levels)
+        real(qp) :: angle_dr_error = 0.0_qp
+        real(qp) :: arclength_dr_error = 0.0_qp
     end type arch_values
 
 contains
@@ -146,6 +155,7 @@ contains
         case (level_coarse);  digits = coarse_digits
         case (level_rough);   digits = rough_digits
         case (level_hardware); digits = hardware_digits
+        case (level_final);    digits = fine_digits
         case default;         digits = fine_digits
         end select
     end function level_digits
@@ -470,18 +480,18 @@ contains
             rule_apse = rule_index(big_r, upper_apse, .true., digits, want_length_time)
             if (rule_apse <= rule_start) then
                 call sweep(model, rule_apse, big_r, one_minus_big_r, upper_apse, .true., &
-                           want_derivative, want_length_time, part)
+                           want_derivative, want_length_time, level == level_final, part)
                 whole_factor = 1.0_qp
             else
                 call sweep(model, rule_start, big_r, one_minus_big_r, upper_start, .false., &
-                           want_derivative, want_length_time, part)
+                           want_derivative, want_length_time, level == level_final, part)
                 whole_factor = 2.0_qp
                 part = -part
             end if
             values%boundary_sign = -1.0_qp
         else
             call sweep(model, rule_start, big_r, one_minus_big_r, upper_start, .false., &
-                       want_derivative, want_length_time, part)
+                       want_derivative, want_length_time, level == level_final, part)
             whole_factor = 0.0_qp
             whole = 0.0_qp
             whole_slope = 0.0_qp
@@ -490,6 +500,11 @@ contains
         values%angle = whole_factor*one_minus_big_r*whole(1) + part(1)
         values%angle_dr_smooth = whole_factor*(one_minus_big_r*whole_slope(1) - whole(1)) &
                                  + part(2)
+        if (level == level_final) then
+            ! sums of terms of one sign, each within a few roundings of xp
+            values%angle_dr_error = 100.0_qp*hardware_epsilon*abs(part(2))
+            values%arclength_dr_error = 100.0_qp*hardware_epsilon*big_r*abs(part(5))
+        end if
 
         if (want_derivative) then
             z_l = big_r/r
@@ -540,7 +555,7 @@ contains
         ! the tables' values are about 1: an absolute tolerance a tenth of the level's
         tolerance = 0.1_qp*10.0_qp**(-level_digits(level))
         ! (the T correction's slope is not needed: see two_point's Hamilton-Jacobi step)
-        if (level == level_fine) then
+        if (level == level_fine .or. level == level_final) then
             call model%whole(1)%evaluate(big_r, whole(1), slope(1))
             if (want_length_time) then
                 call model%whole(2)%evaluate(big_r, whole(2), slope(2))
@@ -571,17 +586,25 @@ contains
     !! v = tau from the apse or v = eta from the start, both with
     !! d lambda = 2 dv/(1 + v^2). The last entry is filled only with both flags set.
     pure subroutine sweep(model, j, big_r, one_minus_big_r, upper, from_apse, &
-                          want_derivative, want_length_time, sums)
+                          want_derivative, want_length_time, hardware_slopes, sums)
         type(inverse_square_model), intent(in) :: model
         integer, intent(in) :: j  !! the rule: model%gauss(j), from `rule_index`
         real(qp), intent(in) :: big_r, one_minus_big_r, upper
         logical, intent(in) :: from_apse, want_derivative, want_length_time
+        logical, intent(in) :: hardware_slopes !! the d/dR sums in `xp` (level_final)
         real(qp), intent(out) :: sums(5)
         real(qp) :: v, v2, jacobian, c, s, c2, z, q, theta_term, lengths, inverse
         real(qp) :: s_big_q, inverse_d, length_term, two_z_plus
+        real(xp) :: slopes(2)
+        logical :: quad_slopes
         integer :: k
 
         sums = 0.0_qp
+        slopes = 0.0_xp
+        s_big_q = 0.0_qp
+        inverse_d = 0.0_qp
+        length_term = 0.0_qp
+        quad_slopes = want_derivative .and. .not. hardware_slopes
         if (upper <= 0.0_qp) return
         associate (rule => model%gauss(j))
         do k = 1, rule%n
@@ -597,12 +620,12 @@ contains
             end if
             c2 = c*c
             z = big_r + one_minus_big_r*c2
-            two_z_plus = z + z + one_minus_big_r
+            if (quad_slopes) two_z_plus = z + z + one_minus_big_r
             q = z*(z + one_minus_big_r) + one_minus_big_r
             inverse = inverse_sqrt(q)
             theta_term = rule%double_weight(k)*jacobian*c2*inverse
             sums(1) = sums(1) + theta_term
-            if (want_derivative) then
+            if (quad_slopes) then
                 sums(2) = sums(2) - theta_term*(inverse*inverse)*(z*(z + z) + &
                           one_minus_big_r*(z + 1.0_qp + two_z_plus*(s*s)))
             end if
@@ -613,15 +636,22 @@ contains
                 length_term = lengths*c
                 sums(3) = sums(3) + length_term
                 sums(4) = sums(4) + lengths
-                if (want_derivative) then
+                if (quad_slopes) then
                     ! dq/dR = (2z + 1 - R) s^2 - (1 + z); d(1/(QD))/dR = -(1/(QD)) dq/dR
                     ! (D + sQ)/(2 Q^2 D)
                     sums(5) = sums(5) + length_term*(two_z_plus*(s*s) - (1.0_qp + z)) &
                               *(1.0_qp + s_big_q + s_big_q)*(inverse*inverse)*inverse_d
                 end if
             end if
+            if (want_derivative .and. hardware_slopes) then
+                call add_slopes_xp(real(z, xp), real(s, xp), real(inverse, xp), &
+                                   real(theta_term, xp), real(one_minus_big_r, xp), &
+                                   want_length_time, real(length_term, xp), &
+                                   real(s_big_q, xp), real(inverse_d, xp), slopes)
+            end if
         end do
         end associate
+        if (hardware_slopes) sums([2, 5]) = real(slopes, qp)
         ! common factors: Theta 2(1-R) c^2/Q; S 2(1-R) c^3/(QD); T 2 sqrt(1-R) c^2/(QD);
         ! d/dR of the S integrand: -2 c^3/(QD) - (1-R) c^3 q_R (D + sQ)/(Q^3 D^2)
         sums(1) = sums(1)*upper*one_minus_big_r
@@ -630,6 +660,23 @@ contains
         sums(3) = sums(3)*upper*one_minus_big_r
         sums(4) = sums(4)*upper*sqrt(one_minus_big_r)
     end subroutine sweep
+
+    !> The d/dR integrands of `sweep` at one node, added in hardware precision.
+    pure subroutine add_slopes_xp(z, s, inverse, theta_term, one_minus_big_r, &
+                                  want_length_time, length_term, s_big_q, inverse_d, slopes)
+        real(xp), intent(in) :: z, s, inverse, theta_term, one_minus_big_r
+        logical, intent(in) :: want_length_time
+        real(xp), intent(in) :: length_term, s_big_q, inverse_d
+        real(xp), intent(inout) :: slopes(2)
+        real(xp) :: two_z_plus
+        two_z_plus = z + z + one_minus_big_r
+        slopes(1) = slopes(1) - theta_term*(inverse*inverse)*(z*(z + z) + &
+                    one_minus_big_r*(z + 1.0_xp + two_z_plus*(s*s)))
+        if (want_length_time) then
+            slopes(2) = slopes(2) + length_term*(two_z_plus*(s*s) - (1.0_xp + z)) &
+                        *(1.0_xp + s_big_q + s_big_q)*(inverse*inverse)*inverse_d
+        end if
+    end subroutine add_slopes_xp
 
     !> Check 0 < R < 1, R <= r <= 1, all finite.
     pure function check_radii(r, big_r) result(status)

@@ -26,7 +26,7 @@ module brachistochrone_two_point
     use brachistochrone_solution, only: endpoint_solution, endpoint_status, region_inside
     use brachistochrone_closed_forms, only: radial_time, kappa_time, inaccessible_angle
     use brachistochrone_inverse_square, only: inverse_square_model, evaluate_arch, arch_values, &
-            level_fine, level_hardware, hardware_epsilon
+            level_fine, level_hardware, level_final, hardware_epsilon
     use brachistochrone_roots, only: root_function, newton_bracketed, secant
     use brachistochrone_arches, only: arch_first, arch_second, arch_complete, arch_radial, &
                                       arch_inaccessible
@@ -309,6 +309,10 @@ contains
     !! accepted when it stays in the bracket, the curvature measured on the 19-digit
     !! phase certifies it (error about K dx^2 below the tolerance), and it is so short
     !! (|dx| <= 1e-17 of the bracket) that s is linear over it to far below rounding.
+    !! The slopes of Upsilon and s enter only through dx, so they are summed in hardware
+    !! precision (level_final, about a third less binary128 work); their error bounds
+    !! are part of the certification (the step error |dx| err(f')/|f'| and err(s') |dx|
+    !! must stay below the tolerance and a rounding of s).
     !! Then the root and s, t there need no further evaluation:
     !! - s(x0 + dx) = s(x0) + s'(x0) dx;
     !! - t by Hamilton-Jacobi: along the extremals from A at fixed rho, dt/dpsi = K, the
@@ -324,14 +328,16 @@ contains
         logical, intent(out) :: done
         type(arch_values) :: values
         real(qp) :: big_r, d, f, df, ds, dx, x, start, tolerance, mid_r, mid_d, conserved
+        real(qp) :: slope_error
         logical :: inside
 
         done = .false.
         start = x0
         call fun%radius_of(start, big_r, d, inside)
         if (.not. inside) return
-        values = evaluate_arch(fun%model, level_fine, fun%second, fun%rho, big_r, d, &
-                                         .true., .true.)
+        ! full rules; the slopes (used only for a step below 1e-17) in hardware precision
+        values = evaluate_arch(fun%model, level_final, fun%second, fun%rho, big_r, d, &
+                               .true., .true.)
         solution%steps = solution%steps + 1
         f = values%angle - fun%psi
         df = fun%slope_in_unknown(start, big_r, d, values%angle_dr_smooth, &
@@ -342,11 +348,17 @@ contains
         if (.not. (ieee_is_finite(x) .and. x > lo .and. x < hi)) return
         x0 = x
         if (abs(dx) > 1.0e-17_qp*(hi - lo)) return
-        ! certified: below the tolerance, or a known curvature K with K dx^2 below it
-        if (abs(dx) > tolerance .and. &
-            (curvature <= 0.0_qp .or. 4.0_qp*curvature*dx*dx > tolerance)) return
+        ! certified: below the tolerance, or a known curvature K with K dx^2, plus the
+        ! part of dx that the slope's error bound moves, below it
+        slope_error = abs(dx*fun%slope_in_unknown(start, big_r, d, values%angle_dr_error, &
+                                                   0.0_qp)/df)
+        if (abs(dx) > tolerance .and. (curvature <= 0.0_qp .or. &
+            4.0_qp*curvature*dx*dx + slope_error > tolerance)) return
         ds = fun%slope_in_unknown(start, big_r, d, values%arclength_dr_smooth, &
                                   values%boundary_sign*values%arclength_boundary)
+        ! s(x0) + s'(x0) dx: the error of s' moves s by below a rounding
+        if (abs(dx*fun%slope_in_unknown(start, big_r, d, values%arclength_dr_error, &
+                                        0.0_qp)) > eps_qp*abs(values%arclength)) return
         call fun%radius_of(start + 0.5_qp*dx, mid_r, mid_d, inside)
         conserved = sqrt(mid_r**3/(2.0_qp*((1.0_qp - fun%rho) + mid_d)))
         call fun%radius_of(x, big_r, d, inside)
