@@ -16,7 +16,9 @@ Usage::
    mpmath at 34 digits (mp.quad on the same integrals, findroot with a bracket) on
    the first M.
 4. Prints time per endpoint, endpoints per second and the ratios, plus the digits
-   to which SciPy and mpmath agree with the Fortran results on their samples.
+   to which SciPy and mpmath agree with the Fortran results on their samples, the
+   solver's floor (one full-precision evaluation per endpoint) and the time to format
+   a value (`format_quad` against formatted `write`), from the same bench run.
 The machine is shared: compare ratios measured in the same run, not absolute times.
 """
 import argparse
@@ -188,8 +190,14 @@ def main(argv=None):
     print("ratio = time per endpoint / Fortran's on one thread; digits = fewest significant "
           "digits of R, s, t agreeing with the Fortran results on that sample")
     print(f"2-thread throughput: {fortran_us / fortran_2_us:.2f} x one thread")
-    print(f"building the model (once per run, not above): "
-          f"{report['field_build_cpu_ms']} ms of CPU")
+    floor_us, cpu_us = (float(report[k]) for k in ("floor_us_per_endpoint",
+                                                   "median_cpu_us_per_endpoint"))
+    print(f"CPU time: solver {cpu_us:.1f} us per endpoint, floor (its one full-precision "
+          f"evaluation with s, t) {floor_us:.1f} us; solver / floor = {cpu_us / floor_us:.2f}")
+    fast_ns, write_ns = (float(report[k]) for k in ("format_ns_per_value",
+                                                     "format_write_ns_per_value"))
+    print(f"formatting a value to 36 digits: {fast_ns:.0f} ns (formatted write "
+          f"{write_ns:.0f} ns, {write_ns / fast_ns:.1f} x slower)")
     return 0
 
 

@@ -5,6 +5,8 @@ program test_main
     use test_physics, only: run_physics_tests
     use test_io, only: run_io_tests
     use test_namelist, only: run_namelist_tests
+    use test_format, only: run_format_tests
+    use test_hardware_level, only: run_hardware_level_tests
     use test_central_force, only: run_central_force_tests
     use test_curves, only: run_curve_tests
     use test_harmonic, only: run_harmonic_tests
@@ -18,6 +20,8 @@ program test_main
     call run_numerics_tests()
     call run_io_tests()
     call run_namelist_tests()
+    call run_format_tests()
+    call run_hardware_level_tests()
     call run_physics_tests()
     call run_central_force_tests()
     call run_curve_tests()

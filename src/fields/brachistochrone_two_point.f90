@@ -12,8 +12,10 @@
 !!   u^2 keep full precision for endpoints next to the apse. In the lower part the unknown
 !!   is R itself (second half-arch: Upsilon = 2 pi/3 - 1.619 R + O(R^(3/2))) or log R
 !!   (first half-arch: Theta(rho,R) ~ C R^(3/2)), so tiny R-bar keeps its relative
-!!   precision. Safeguarded Newton on 17-digit rules, then one step on full
-!!   quad-precision rules that also yields s and t (`final_step`); the derivative is
+!!   precision. Safeguarded Newton on 19-digit rules evaluated in hardware precision
+!!   (x87 extended, `level_hardware`: about a microsecond each), then one step on full
+!!   quad-precision rules that also yields s and t (`final_step`), the one
+!!   software-binary128 evaluation per endpoint in the usual case; the derivative is
 !!   differentiated under the integral sign (eq. 67-71) plus the boundary term of the
 !!   moving limit L(R).
 !! - `solve_endpoint_secant`: the paper's secant method from R0, R1 with its stopping
@@ -24,8 +26,7 @@ module brachistochrone_two_point
     use brachistochrone_solution, only: endpoint_solution, endpoint_status, region_inside
     use brachistochrone_closed_forms, only: radial_time, kappa_time, inaccessible_angle
     use brachistochrone_inverse_square, only: inverse_square_model, evaluate_arch, arch_values, &
-            level_fine, &
-            level_coarse, level_rough, level_digits
+            level_fine, level_hardware, level_final, hardware_epsilon
     use brachistochrone_roots, only: root_function, newton_bracketed, secant
     use brachistochrone_arches, only: arch_first, arch_second, arch_complete, arch_radial, &
                                       arch_inaccessible
@@ -37,9 +38,14 @@ module brachistochrone_two_point
 
     !> Limit on root-finder evaluations per phase.
     integer, parameter :: max_steps = 200
-    !> Relative tolerance of the 17-digit phase: near its noise, so that one
-    !! full-precision Newton step is short enough for `final_step`.
-    real(qp), parameter :: coarse_tolerance = 1.0e-16_qp
+    !> The phase before the full-precision step runs in hardware precision
+    !! (level_hardware, 19-digit rules): its relative tolerance and the accuracy of its
+    !! evaluations, from the rounding of the hardware kind (x87 extended: 1.1e-17 and
+    !! 1.1e-18, so that the full-precision Newton step is below 1e-17 of the bracket and
+    !! `final_step` accepts it; where the widest hardware kind is double, 2.2e-14 and
+    !! 2.2e-15, and the full-precision phase takes more steps).
+    real(qp), parameter :: hardware_tolerance = 100.0_qp*hardware_epsilon
+    real(qp), parameter :: hardware_accuracy = max(1.0e-19_qp, 10.0_qp*hardware_epsilon)
 
     !> Unknowns of the default solver.
     integer, parameter :: unknown_u = 1, unknown_r = 2, unknown_log_r = 3
@@ -201,10 +207,10 @@ contains
             big_r = rho
             d = 0.0_qp
         else
-            ! Which half of (0, rho] holds the root: Upsilon at R = rho/2, on the rough
-            ! rules unless the sign is in doubt
+            ! Which half of (0, rho] holds the root: Upsilon at R = rho/2, in hardware
+            ! precision unless the sign is in doubt
             half = 0.5_qp*rho
-            values = evaluate_arch(model, level_rough, fun%second, rho, half, rho - half, &
+            values = evaluate_arch(model, level_hardware, fun%second, rho, half, rho - half, &
                                          .true., .false.)
             if (abs(values%angle - psi) < 1.0e-6_qp*psi) then
                 values = evaluate_arch(model, level_fine, fun%second, rho, half, &
@@ -247,7 +253,7 @@ contains
             else
                 ! first half-arch, small R: Theta(rho,R) ~ C R^(3/2); unknown log R first
                 fun%unknown = unknown_log_r
-                fun%level = level_coarse
+                fun%level = level_hardware
                 hi = log(half)
                 x0 = hi + (2.0_qp/3.0_qp)*log(psi/theta_half)
                 log_lo = x0 - 2.0_qp
@@ -257,9 +263,9 @@ contains
                     if (status == status_ok .and. f_lo < 0.0_qp) exit
                     log_lo = log_lo - 4.0_qp
                 end do
-                call newton_bracketed(fun, log_lo, f_lo, hi, 1.0_qp, x0, coarse_tolerance, &
+                call newton_bracketed(fun, log_lo, f_lo, hi, 1.0_qp, x0, hardware_tolerance, &
                                       0.0_qp, max_steps, x, steps, status, curvature, &
-                                      10.0_qp**(-level_digits(level_coarse)))
+                                      hardware_accuracy)
                 solution%steps = solution%steps + steps
                 ! then R itself at full precision, on the same bracket; with f(R) = g(log R)
                 ! the curvature |f''/2f'| = |g'' - g'|/(2 |g'| R) <= (2 |g''/2g'| + 1)/(2R)
@@ -272,13 +278,13 @@ contains
                 if (curvature > 0.0_qp) curvature = (2.0_qp*curvature + 1.0_qp)/(2.0_qp*x0)
             end if
             if (fun%unknown /= unknown_r .or. fun%second) then
-                ! 17-digit phase, which also measures the curvature of Upsilon - psi:
-                ! the full-precision phase then usually needs one step
+                ! 19-digit phase in hardware precision, which also measures the curvature
+                ! of Upsilon - psi: the full-precision phase then usually needs one step
                 x = x0
-                fun%level = level_coarse
-                call newton_bracketed(fun, lo, f_lo, hi, f_hi, x, coarse_tolerance, 0.0_qp, &
-                                      max_steps, x0, steps, status, curvature, &
-                                      10.0_qp**(-level_digits(level_coarse)))
+                fun%level = level_hardware
+                call newton_bracketed(fun, lo, f_lo, hi, f_hi, x, hardware_tolerance, &
+                                      0.0_qp, max_steps, x0, steps, status, curvature, &
+                                      hardware_accuracy)
                 solution%steps = solution%steps + steps
             end if
             ! full-precision phase
@@ -300,9 +306,13 @@ contains
 
     !> The full-precision step, when one suffices: one evaluation at x0 on the full rules,
     !! with s and t there and the slopes of Upsilon and s. The Newton step dx from x0 is
-    !! accepted when it stays in the bracket, the curvature measured on the 17-digit
+    !! accepted when it stays in the bracket, the curvature measured on the 19-digit
     !! phase certifies it (error about K dx^2 below the tolerance), and it is so short
     !! (|dx| <= 1e-17 of the bracket) that s is linear over it to far below rounding.
+    !! The slopes of Upsilon and s enter only through dx, so they are summed in hardware
+    !! precision (level_final, about a third less binary128 work); their error bounds
+    !! are part of the certification (the step error |dx| err(f')/|f'| and err(s') |dx|
+    !! must stay below the tolerance and a rounding of s).
     !! Then the root and s, t there need no further evaluation:
     !! - s(x0 + dx) = s(x0) + s'(x0) dx;
     !! - t by Hamilton-Jacobi: along the extremals from A at fixed rho, dt/dpsi = K, the
@@ -318,14 +328,16 @@ contains
         logical, intent(out) :: done
         type(arch_values) :: values
         real(qp) :: big_r, d, f, df, ds, dx, x, start, tolerance, mid_r, mid_d, conserved
+        real(qp) :: slope_error
         logical :: inside
 
         done = .false.
         start = x0
         call fun%radius_of(start, big_r, d, inside)
         if (.not. inside) return
-        values = evaluate_arch(fun%model, level_fine, fun%second, fun%rho, big_r, d, &
-                                         .true., .true.)
+        ! full rules; the slopes (used only for a step below 1e-17) in hardware precision
+        values = evaluate_arch(fun%model, level_final, fun%second, fun%rho, big_r, d, &
+                               .true., .true.)
         solution%steps = solution%steps + 1
         f = values%angle - fun%psi
         df = fun%slope_in_unknown(start, big_r, d, values%angle_dr_smooth, &
@@ -336,11 +348,17 @@ contains
         if (.not. (ieee_is_finite(x) .and. x > lo .and. x < hi)) return
         x0 = x
         if (abs(dx) > 1.0e-17_qp*(hi - lo)) return
-        ! certified: below the tolerance, or a known curvature K with K dx^2 below it
-        if (abs(dx) > tolerance .and. &
-            (curvature <= 0.0_qp .or. 4.0_qp*curvature*dx*dx > tolerance)) return
+        ! certified: below the tolerance, or a known curvature K with K dx^2, plus the
+        ! part of dx that the slope's error bound moves, below it
+        slope_error = abs(dx*fun%slope_in_unknown(start, big_r, d, values%angle_dr_error, &
+                                                   0.0_qp)/df)
+        if (abs(dx) > tolerance .and. (curvature <= 0.0_qp .or. &
+            4.0_qp*curvature*dx*dx + slope_error > tolerance)) return
         ds = fun%slope_in_unknown(start, big_r, d, values%arclength_dr_smooth, &
                                   values%boundary_sign*values%arclength_boundary)
+        ! s(x0) + s'(x0) dx: the error of s' moves s by below a rounding
+        if (abs(dx*fun%slope_in_unknown(start, big_r, d, values%arclength_dr_error, &
+                                        0.0_qp)) > eps_qp*abs(values%arclength)) return
         call fun%radius_of(start + 0.5_qp*dx, mid_r, mid_d, inside)
         conserved = sqrt(mid_r**3/(2.0_qp*((1.0_qp - fun%rho) + mid_d)))
         call fun%radius_of(x, big_r, d, inside)

@@ -18,6 +18,7 @@ module brachistochrone_result_output
     use brachistochrone_arches, only: arch_word
     use brachistochrone_endpoint_input, only: endpoint_table, group_name
     use brachistochrone_strings, only: integer_text
+    use brachistochrone_format, only: format_quad
     implicit none
     private
 
@@ -66,21 +67,7 @@ contains
     pure function format_real(x) result(text)
         real(qp), intent(in) :: x !! value
         character(len=:), allocatable :: text
-        character(len=64) :: buffer
-        character(len=8) :: exponent_text
-        integer :: e_position, exponent
-        write (buffer, '(es0.35e4)') x
-        e_position = scan(buffer, 'E')
-        if (e_position == 0) then
-            ! gfortran writes ES0 without an exponent when it is zero; NaN and Infinity
-            ! (never produced by the solver) have none either
-            text = trim(buffer)
-            if (verify(text(1:1), '+-0123456789') == 0) text = text//'e+00'
-            return
-        end if
-        read (buffer(e_position + 1:), '(i5)') exponent
-        write (exponent_text, '(sp,i0.2)') exponent
-        text = buffer(:e_position - 1)//'e'//trim(exponent_text)
+        text = format_quad(x)
     end function format_real
 
     !> One CSV row: `rho,psi,arch,R,s,t,steps,status`; empty fields where a value does
