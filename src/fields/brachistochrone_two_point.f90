@@ -22,7 +22,8 @@
 !!   rule |R_n - R_(n-1)| < tol and a step count, which reproduces Table 1.
 module brachistochrone_two_point
     use brachistochrone_kinds, only: qp, pi, eps_qp
-    use brachistochrone_status, only: status_ok, status_inaccessible, status_outside_domain
+    use brachistochrone_status, only: status_ok, status_inaccessible, status_outside_domain, &
+                                      status_no_convergence
     use brachistochrone_solution, only: endpoint_solution, endpoint_status, region_inside
     use brachistochrone_closed_forms, only: radial_time, kappa_time, inaccessible_angle
     use brachistochrone_inverse_square, only: inverse_square_model, evaluate_arch, arch_values, &
@@ -38,6 +39,8 @@ module brachistochrone_two_point
 
     !> Limit on root-finder evaluations per phase.
     integer, parameter :: max_steps = 200
+    !> Steps down in log R (by 4 each) looking for the lower end of the bracket.
+    integer, parameter :: max_probes = 100
     !> The phase before the full-precision step runs in hardware precision
     !! (level_hardware, 19-digit rules): its relative tolerance and the accuracy of its
     !! evaluations, from the rounding of the hardware kind (x87 extended: 1.1e-17 and
@@ -51,6 +54,17 @@ module brachistochrone_two_point
     integer, parameter :: unknown_u = 1, unknown_r = 2, unknown_log_r = 3
 
     !> Upsilon(R) - psi in one of the unknowns, for the root finders.
+    !> The bracket of the root in the solver's unknown: its ends, the signs of Upsilon -
+    !! psi there, a start, the curvature measured so far, and Upsilon - psi at rho/2.
+    type :: root_bracket
+        real(qp) :: lo = 0.0_qp, hi = 0.0_qp      !! the ends
+        real(qp) :: f_lo = 0.0_qp, f_hi = 0.0_qp  !! Upsilon - psi there (signs)
+        real(qp) :: x0 = 0.0_qp                   !! start, then the early phase's root
+        real(qp) :: curvature = 0.0_qp            !! |f''/2f'| measured (0: unknown)
+        real(qp) :: half = 0.0_qp                 !! rho/2
+        real(qp) :: f_half = 0.0_qp               !! Upsilon - psi at R = rho/2
+    end type root_bracket
+
     type, extends(root_function) :: upsilon_function
         type(inverse_square_model) :: model
         integer :: level = level_fine
@@ -191,118 +205,172 @@ contains
         real(qp), intent(in) :: psi                     !! endpoint angle
         type(endpoint_solution) :: solution
         type(upsilon_function) :: fun
-        type(arch_values) :: values
-        real(qp) :: apse_angle_rho, half, f_half, f_end, lo, hi, f_lo, f_hi, x, x0
-        real(qp) :: big_r, d, log_lo, theta_half, slope, slope_lo, curvature
-        integer :: steps, status, probe
-        logical :: done, low_region, inside
+        type(root_bracket) :: b
+        real(qp) :: apse_angle_rho, x, big_r, d
+        integer :: steps, status
+        logical :: done, inside
 
         call classify(model, rho, psi, solution, apse_angle_rho, done)
         if (done) return
         fun = upsilon_function(model=model, level=level_fine, &
                                second=solution%arch /= arch_first, rho=rho, psi=psi)
-
         if (psi == apse_angle_rho) then
             ! B is the apse itself
-            big_r = rho
-            d = 0.0_qp
-        else
-            ! Which half of (0, rho] holds the root: Upsilon at R = rho/2, in hardware
-            ! precision unless the sign is in doubt
-            half = 0.5_qp*rho
-            values = evaluate_arch(model, level_hardware, fun%second, rho, half, rho - half, &
-                                         .true., .false.)
-            if (abs(values%angle - psi) < 1.0e-6_qp*psi) then
-                values = evaluate_arch(model, level_fine, fun%second, rho, half, &
-                                             rho - half, .true., .false.)
-            end if
-            f_half = values%angle - psi
-            theta_half = values%angle
-            if (fun%second) then
-                low_region = f_half <= 0.0_qp
-            else
-                low_region = f_half >= 0.0_qp
-            end if
-            solution%steps = 1
-            curvature = 0.0_qp
-            if (.not. low_region) then
-                ! unknown u = sqrt(rho - R) in [0, sqrt(rho/2)]; at u = 0 (the apse)
-                ! Upsilon = Theta(rho,rho) and dUpsilon/du = -+ 2 B(rho,rho), with
-                ! B(rho,rho) = sqrt((1-rho)/(rho (3 - 2 rho))) in closed form
-                fun%unknown = unknown_u
-                lo = 0.0_qp
-                hi = sqrt(rho - half)
-                f_lo = apse_angle_rho - psi
-                slope_lo = -2.0_qp*merge(-1.0_qp, 1.0_qp, fun%second) &
-                           *sqrt((1.0_qp - rho)/(rho*(3.0_qp - 2.0_qp*rho)))
-                f_hi = f_half
-                slope = -2.0_qp*hi*values%angle_dr_smooth &
-                        - 2.0_qp*values%boundary_sign*values%boundary
-                x0 = hermite_start(f_lo, slope_lo, hi, f_hi, slope)
-            else if (fun%second) then
-                ! unknown R in [0, rho/2]; at R -> 0, Upsilon = 2 pi/3 + 2 Theta_R(0) R
-                fun%unknown = unknown_r
-                lo = 0.0_qp
-                hi = half
-                f_lo = inaccessible_angle - psi
-                slope_lo = 2.0_qp*model%apse_slope_at_zero
-                f_hi = f_half
-                slope = values%angle_dr_smooth &
-                        + values%boundary_sign*values%boundary/sqrt(rho - half)
-                x0 = hermite_start(f_lo, slope_lo, hi, f_hi, slope)
-            else
-                ! first half-arch, small R: Theta(rho,R) ~ C R^(3/2); unknown log R first
-                fun%unknown = unknown_log_r
-                fun%level = level_hardware
-                hi = log(half)
-                x0 = hi + (2.0_qp/3.0_qp)*log(psi/theta_half)
-                log_lo = x0 - 2.0_qp
-                do probe = 1, 100
-                    call fun%evaluate(log_lo, f_lo, f_end, status)
-                    solution%steps = solution%steps + 1
-                    if (status == status_ok .and. f_lo < 0.0_qp) exit
-                    log_lo = log_lo - 4.0_qp
-                end do
-                call newton_bracketed(fun, log_lo, f_lo, hi, 1.0_qp, x0, hardware_tolerance, &
-                                      0.0_qp, max_steps, x, steps, status, curvature, &
-                                      hardware_accuracy)
-                solution%steps = solution%steps + steps
-                ! then R itself at full precision, on the same bracket; with f(R) = g(log R)
-                ! the curvature |f''/2f'| = |g'' - g'|/(2 |g'| R) <= (2 |g''/2g'| + 1)/(2R)
-                fun%unknown = unknown_r
-                lo = exp(log_lo)
-                hi = half
-                f_lo = -1.0_qp
-                f_hi = f_half
-                x0 = exp(x)
-                if (curvature > 0.0_qp) curvature = (2.0_qp*curvature + 1.0_qp)/(2.0_qp*x0)
-            end if
-            if (fun%unknown /= unknown_r .or. fun%second) then
-                ! 19-digit phase in hardware precision, which also measures the curvature
-                ! of Upsilon - psi: the full-precision phase then usually needs one step
-                x = x0
-                fun%level = level_hardware
-                call newton_bracketed(fun, lo, f_lo, hi, f_hi, x, hardware_tolerance, &
-                                      0.0_qp, max_steps, x0, steps, status, curvature, &
-                                      hardware_accuracy)
-                solution%steps = solution%steps + steps
-            end if
-            ! full-precision phase
-            fun%level = level_fine
-            call final_step(fun, lo, hi, x0, curvature, solution, done)
-            if (done) return
-            ! otherwise iterate on, from the Newton step final_step took when in the bracket
-            call newton_bracketed(fun, lo, f_lo, hi, f_hi, x0, 4.0_qp*eps_qp, &
-                                  tiny(1.0_qp), max_steps, x, steps, status, curvature)
-            solution%steps = solution%steps + steps
-            if (status /= status_ok) then
-                solution%status = status
-                return
-            end if
-            call fun%radius_of(x, big_r, d, inside)
+            call finish(model, solution, fun%second, rho, 0.0_qp)
+            return
         end if
+        call open_bracket(fun, apse_angle_rho, b, solution%steps)
+        if (fun%unknown == unknown_log_r) then
+            call log_phase(fun, b, solution%steps, status)
+        else
+            call hardware_phase(fun, b, solution%steps, status)
+        end if
+        if (status /= status_ok) then
+            solution%status = status
+            return
+        end if
+        ! full-precision phase: usually one step, certified by the measured curvature
+        fun%level = level_fine
+        call final_step(fun, b%lo, b%hi, b%x0, b%curvature, solution, done)
+        if (done) return
+        ! otherwise iterate on, from the Newton step final_step took when in the bracket
+        call newton_bracketed(fun, b%lo, b%f_lo, b%hi, b%f_hi, b%x0, 4.0_qp*eps_qp, &
+                              tiny(1.0_qp), max_steps, x, steps, status, b%curvature)
+        solution%steps = solution%steps + steps
+        if (status /= status_ok) then
+            solution%status = status
+            return
+        end if
+        call fun%radius_of(x, big_r, d, inside)
         call finish(model, solution, fun%second, big_r, d)
     end function solve_endpoint
+
+    !> The unknown and its bracket: Upsilon at R = rho/2 (in hardware precision unless
+    !! the sign is in doubt) says which half of (0, rho] holds the root. Near the apse the
+    !! unknown is u = sqrt(rho - R), below rho/2 it is R (second half-arch) or log R
+    !! (first half-arch). One evaluation, counted in `steps`.
+    pure subroutine open_bracket(fun, apse_angle_rho, b, steps)
+        type(upsilon_function), intent(inout) :: fun !! sets its unknown
+        real(qp), intent(in) :: apse_angle_rho       !! Theta(rho, rho)
+        type(root_bracket), intent(out) :: b         !! bracket, end signs, start
+        integer, intent(out) :: steps                !! evaluations made
+        type(arch_values) :: values
+        real(qp) :: rho, psi, slope, slope_lo
+        logical :: low_region
+        rho = fun%rho
+        psi = fun%psi
+        b%half = 0.5_qp*rho
+        values = evaluate_arch(fun%model, level_hardware, fun%second, rho, b%half, &
+                               rho - b%half, .true., .false.)
+        if (abs(values%angle - psi) < 1.0e-6_qp*psi) then
+            values = evaluate_arch(fun%model, level_fine, fun%second, rho, b%half, &
+                                   rho - b%half, .true., .false.)
+        end if
+        b%f_half = values%angle - psi
+        low_region = merge(b%f_half <= 0.0_qp, b%f_half >= 0.0_qp, fun%second)
+        steps = 1
+        b%f_hi = b%f_half
+        if (.not. low_region) then
+            ! unknown u = sqrt(rho - R) in [0, sqrt(rho/2)]; at u = 0 (the apse)
+            ! Upsilon = Theta(rho,rho) and dUpsilon/du = -+ 2 B(rho,rho), with
+            ! B(rho,rho) = sqrt((1-rho)/(rho (3 - 2 rho))) in closed form
+            fun%unknown = unknown_u
+            b%hi = sqrt(rho - b%half)
+            b%f_lo = apse_angle_rho - psi
+            slope_lo = -2.0_qp*merge(-1.0_qp, 1.0_qp, fun%second) &
+                       *sqrt((1.0_qp - rho)/(rho*(3.0_qp - 2.0_qp*rho)))
+            slope = -2.0_qp*b%hi*values%angle_dr_smooth &
+                    - 2.0_qp*values%boundary_sign*values%boundary
+            b%x0 = hermite_start(b%f_lo, slope_lo, b%hi, b%f_hi, slope)
+        else if (fun%second) then
+            ! unknown R in [0, rho/2]; at R -> 0, Upsilon = 2 pi/3 + 2 Theta_R(0) R
+            fun%unknown = unknown_r
+            b%hi = b%half
+            b%f_lo = inaccessible_angle - psi
+            slope_lo = 2.0_qp*fun%model%apse_slope_at_zero
+            slope = values%angle_dr_smooth &
+                    + values%boundary_sign*values%boundary/sqrt(rho - b%half)
+            b%x0 = hermite_start(b%f_lo, slope_lo, b%hi, b%f_hi, slope)
+        else
+            ! first half-arch, small R: Theta(rho,R) ~ C R^(3/2); unknown log R first
+            fun%unknown = unknown_log_r
+            b%hi = log(b%half)
+            b%x0 = b%hi + (2.0_qp/3.0_qp)*log(psi/values%angle)
+        end if
+    end subroutine open_bracket
+
+    !> First half-arch below rho/2: Newton in log R on the hardware rules (the lower
+    !! end of the bracket found by stepping down), then the bracket and start in R for
+    !! the full-precision phase. status: status_ok, status_no_convergence when no lower
+    !! end is found, or an evaluation's status.
+    pure subroutine log_phase(fun, b, steps, status)
+        type(upsilon_function), intent(inout) :: fun !! unknown log R, then R
+        type(root_bracket), intent(inout) :: b       !! the bracket, in log R then in R
+        integer, intent(inout) :: steps              !! evaluations made
+        integer, intent(out) :: status               !! the phase's status
+        real(qp) :: log_lo, f_lo, f_end, x
+        integer :: probe, used
+        fun%level = level_hardware
+        log_lo = b%x0 - 2.0_qp
+        do probe = 1, max_probes
+            call fun%evaluate(log_lo, f_lo, f_end, status)
+            steps = steps + 1
+            if (status == status_ok .and. f_lo < 0.0_qp) exit
+            log_lo = log_lo - 4.0_qp
+        end do
+        if (status /= status_ok) return
+        if (.not. f_lo < 0.0_qp) then
+            status = status_no_convergence
+            return
+        end if
+        call newton_bracketed(fun, log_lo, f_lo, b%hi, 1.0_qp, b%x0, hardware_tolerance, &
+                              0.0_qp, max_steps, x, used, status, b%curvature, &
+                              hardware_accuracy)
+        steps = steps + used
+        call accept_phase(status, b%curvature)
+        if (status /= status_ok) return
+        ! then R itself at full precision, on the same bracket; with f(R) = g(log R)
+        ! the curvature |f''/2f'| = |g'' - g'|/(2 |g'| R) <= (2 |g''/2g'| + 1)/(2R)
+        fun%unknown = unknown_r
+        b%lo = exp(log_lo)
+        b%hi = b%half
+        b%f_lo = -1.0_qp
+        b%f_hi = b%f_half
+        b%x0 = exp(x)
+        if (b%curvature > 0.0_qp) b%curvature = (2.0_qp*b%curvature + 1.0_qp)/(2.0_qp*b%x0)
+    end subroutine log_phase
+
+    !> Newton on the hardware rules to about 1e-17, which also measures the curvature of
+    !! Upsilon - psi: the full-precision phase then usually needs one step. status:
+    !! status_ok or an evaluation's status.
+    pure subroutine hardware_phase(fun, b, steps, status)
+        type(upsilon_function), intent(inout) :: fun !! the function
+        type(root_bracket), intent(inout) :: b       !! bracket; x0 becomes the root
+        integer, intent(inout) :: steps              !! evaluations made
+        integer, intent(out) :: status               !! the phase's status
+        real(qp) :: x
+        integer :: used
+        x = b%x0
+        fun%level = level_hardware
+        call newton_bracketed(fun, b%lo, b%f_lo, b%hi, b%f_hi, x, hardware_tolerance, &
+                              0.0_qp, max_steps, b%x0, used, status, b%curvature, &
+                              hardware_accuracy)
+        steps = steps + used
+        call accept_phase(status, b%curvature)
+    end subroutine hardware_phase
+
+    !> The verdict on an early phase: its root is only a start for the full-precision
+    !! phase, so a phase that ran out of steps (status_no_convergence, its last iterate
+    !! still inside the bracket) is accepted without its curvature (final_step then
+    !! certifies nothing and Newton goes on); an evaluation's failure stays a failure.
+    pure subroutine accept_phase(status, curvature)
+        integer, intent(inout) :: status      !! the phase's status
+        real(qp), intent(inout) :: curvature  !! its measured curvature
+        if (status == status_no_convergence) then
+            status = status_ok
+            curvature = 0.0_qp
+        end if
+    end subroutine accept_phase
 
     !> The full-precision step, when one suffices: one evaluation at x0 on the full rules,
     !! with s and t there and the slopes of Upsilon and s. The Newton step dx from x0 is
