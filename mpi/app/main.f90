@@ -11,7 +11,7 @@ program main
     use, intrinsic :: iso_fortran_env, only: error_unit, output_unit, int8
     use mpi_f08, only: mpi_init, mpi_finalize, mpi_comm_world, mpi_comm_rank, &
                        mpi_comm_size, mpi_gatherv, mpi_bcast, mpi_byte, mpi_integer, &
-                       mpi_abort
+                       mpi_abort, mpi_logical
     !$ use omp_lib, only: omp_set_num_threads
     use brachistochrone, only: brachistochrone_field, new_field, endpoint_solution, &
                                status_ok, status_message
@@ -50,7 +50,11 @@ program main
     end if
     !$ if (options%threads > 0) call omp_set_num_threads(options%threads)
 
-    call prepare_run(options, table, first, last, report, code, finished)
+    ! only rank 0 writes files (and creates their temporary files before the work)
+    call prepare_run(options, table, first, last, report, code, finished, &
+                     writes_files=rank == 0)
+    call mpi_bcast(code, 1, mpi_integer, 0, mpi_comm_world)
+    call mpi_bcast(finished, 1, mpi_logical, 0, mpi_comm_world)
     if (finished) then
         if (rank == 0) call print_report(report, code)
         call finish(code)
