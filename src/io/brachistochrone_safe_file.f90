@@ -53,7 +53,9 @@ module brachistochrone_safe_file
                                  at_empty_path = 4096_c_int, rename_noreplace = 1_c_int
     integer(c_int), parameter :: o_cloexec = 524288_c_int   ! 02000000 on Linux
     integer(c_int), parameter :: e_intr = 4, e_noent = 2, e_exist = 17, e_inval = 22, &
-                                 e_nosys = 38, e_opnotsupp = 95
+                                 e_pipe = 32, e_nosys = 38, e_opnotsupp = 95
+    integer(c_intptr_t), parameter :: sig_ign = 1       ! SIG_IGN
+    integer(c_int), parameter :: sigpipe = 13
     integer, parameter :: s_ifmt = int(o'170000'), s_ifreg = int(o'100000'), &
         s_iflnk = int(o'120000'), s_ifdir = int(o'040000'), s_ifchr = int(o'020000'), &
         s_ifblk = int(o'060000'), s_ififo = int(o'010000'), s_ifsock = int(o'140000')
@@ -375,7 +377,11 @@ contains
         if (file%path /= standard_output .and. file%error == 0) then
             if (c_fsync(file%fd) /= 0) call remember(file, 'fsync')
         end if
-        if (file%error /= 0) then
+        if (file%error == e_pipe .and. file%path == standard_output) then
+            ! the reader has gone (SIGPIPE ignored by the parent): end quietly, as SIGPIPE
+            call on_exit()
+            call c_exit_now(128_c_int + sigpipe)
+        else if (file%error /= 0) then
             status = safe_io_error
             if (file%path == standard_output) then
                 message = 'cannot write to standard output: '//error_text(file%error)
@@ -429,6 +435,12 @@ contains
         integer(c_int) :: code
         temporary = file%temporary//c_null_char
         target = file%path//c_null_char
+        if (.not. holds_descriptor(file%temporary, file%fd)) then
+            status = safe_io_error
+            message = 'cannot put the finished '//file%path//' in place: its temporary '// &
+                      'file '//file%temporary//' was removed or replaced by another process'
+            return
+        end if
         if (file%force) then
             call check_target(file%path, .true., status, message)
             if (status /= safe_ok) return
@@ -618,11 +630,13 @@ contains
         type(c_funptr) :: old
         integer(c_int) :: code
         integer :: k
-        integer(c_int), parameter :: signals(4) = [1_c_int, 2_c_int, 13_c_int, 15_c_int]
+        integer(c_int), parameter :: signals(4) = [1_c_int, 2_c_int, sigpipe, 15_c_int]
         if (handlers_installed) return
         handlers_installed = .true.
         do k = 1, size(signals)
             old = c_signal(signals(k), c_funloc(on_signal))
+            ! a signal ignored by the parent (nohup: SIGHUP) stays ignored
+            if (transfer(old, 0_c_intptr_t) == sig_ign) old = c_signal(signals(k), old)
         end do
         code = c_atexit(c_funloc(on_exit))
     end subroutine install_handlers
