@@ -40,7 +40,7 @@ contains
         type(run_options), intent(out) :: options         !! the options
         integer, intent(out) :: status                    !! exit_ok or exit_input
         character(len=:), allocatable, intent(out) :: message !! what is wrong
-        integer :: k, count_arguments, equals
+        integer :: k, count_arguments
         character(len=:), allocatable :: argument, value
         logical :: has_value, options_ended
 
@@ -58,22 +58,11 @@ contains
         do while (k < count_arguments .and. status == exit_ok)
             k = k + 1
             argument = get_argument(k)
-            equals = 0
-            if (.not. options_ended .and. len(argument) > 2) then
-                if (argument(1:2) == '--') equals = index(argument, '=')
-            end if
-            has_value = equals > 0
-            if (has_value) then
-                value = argument(equals + 1:)
-                argument = argument(:equals - 1)
-            end if
-            if (options_ended .or. argument == '-' .or. len(argument) == 0) then
-                call take_input(argument)
-                cycle
-            else if (argument(1:1) /= '-') then
+            if (.not. is_option(argument)) then
                 call take_input(argument)
                 cycle
             end if
+            call split_value(argument, value, has_value)
             select case (argument)
             case ('-h', '--help')
                 options%help = .true.
@@ -94,10 +83,7 @@ contains
                 end if
                 call take_value(argument, value)
             case ('--force', '--quiet', '--no-table', '--check')
-                if (has_value) then
-                    call problem(argument//' takes no value')
-                    exit
-                end if
+                if (has_value) call problem(argument//' takes no value')
                 select case (argument)
                 case ('--force');    options%request%force = .true.
                 case ('--quiet');    options%quiet = .true.
@@ -111,6 +97,31 @@ contains
         if (status == exit_ok) call check_outputs()
 
     contains
+
+        !> An option: starts with -, is not - itself, and no `--` came before.
+        logical function is_option(text)
+            character(len=*), intent(in) :: text
+            is_option = .false.
+            if (options_ended .or. len(text) < 2) return
+            is_option = text(1:1) == '-'
+        end function is_option
+
+        !> `--name=value` -> `--name`, `value`.
+        subroutine split_value(text, value, has_value)
+            character(len=:), allocatable, intent(inout) :: text
+            character(len=:), allocatable, intent(out) :: value
+            logical, intent(out) :: has_value
+            integer :: equals
+            equals = 0
+            if (len(text) > 2) then
+                if (text(1:2) == '--') equals = index(text, '=')
+            end if
+            has_value = equals > 0
+            value = ''
+            if (.not. has_value) return
+            value = text(equals + 1:)
+            text = text(:equals - 1)
+        end subroutine split_value
 
         subroutine take_input(path)
             character(len=*), intent(in) :: path
