@@ -318,6 +318,30 @@ def test_target_appearing_during_the_run_is_kept_and_nothing_committed(app, run,
     assert leftovers(tmp_path) == []
 
 
+def test_force_commit_failure_restores_the_replaced_file(app, tmp_path):
+    nml = write_input(tmp_path / "in.nml", 2000)
+    old = tmp_path / "a.csv"
+    old.write_text("previous results\n")
+    slow = blocked_run(app, nml, "--csv", old, "--nml", tmp_path / "b.nml", "--force")
+    wait_for(lambda: len(leftovers(tmp_path)) == 2)
+    (tmp_path / "b.nml").mkdir()                      # the second target turns into a dir
+    slow.stdout.read()
+    assert slow.wait(timeout=120) == 1
+    assert "is a directory" in slow.stderr.read().decode()
+    assert old.read_text() == "previous results\n"    # a.csv was committed, then restored
+    assert os.stat(old).st_nlink == 1 and leftovers(tmp_path) == []
+
+
+def test_full_disk_with_force_keeps_the_old_file(run, tmp_path, small_disk):
+    nml = write_input(tmp_path / "in.nml", 2000)
+    out = small_disk / "out.csv"
+    out.write_text("previous results\n")
+    result = run(nml, "--csv", out, "--force", "--no-table", "--quiet")
+    assert result.returncode == 3 and "No space left on device" in result.stderr
+    assert out.read_text() == "previous results\n"
+    assert os.listdir(small_disk) == ["out.csv"]
+
+
 # --- command line and resources -----------------------------------------------------
 
 def test_command_line_values(run, tmp_path):
