@@ -4,7 +4,7 @@
 !! drivers (which only parse, decide and exit), so the serial/OpenMP program and the MPI
 !! program solve rows and write files with the same code and give the same bytes.
 module brachistochrone_batch_run
-    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
+    use, intrinsic :: iso_fortran_env, only: error_unit
     use brachistochrone_kinds, only: qp
     use brachistochrone_solution, only: endpoint_solution
     use brachistochrone_field_interface, only: brachistochrone_field
@@ -96,18 +96,30 @@ contains
         end if
     end subroutine prepare_run
 
-    !> Print `prepare_run`'s report: stdout for a verdict, stderr for problems.
+    !> Print `prepare_run`'s report: stdout (checked: a failure is exit_io) for a verdict,
+    !! stderr for problems.
     subroutine print_report(report, code)
         type(message), intent(in) :: report(:) !! the lines
-        integer, intent(in) :: code            !! exit_ok: stdout; otherwise stderr
-        integer :: i
-        do i = 1, size(report)
-            if (code == exit_ok) then
-                write (output_unit, '(a)') report(i)%text
-            else
+        integer, intent(inout) :: code         !! exit_ok: stdout; otherwise stderr;
+                                               !! set to exit_io when stdout fails
+        type(safe_file) :: stdout
+        character(len=:), allocatable :: problem
+        integer :: i, status
+        if (code /= exit_ok) then
+            do i = 1, size(report)
                 write (error_unit, '(a)') report(i)%text
-            end if
+            end do
+            return
+        end if
+        call open_output(stdout, standard_output, .false., status, problem)
+        do i = 1, size(report)
+            call stdout%put(report(i)%text)
         end do
+        call finish_output(stdout, status, problem)
+        if (status /= safe_ok) then
+            write (error_unit, '(a)') program_name//': '//problem
+            code = exit_io
+        end if
     end subroutine print_report
 
     !> Everything after solving rows first..last: the result files, the curves and the

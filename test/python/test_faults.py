@@ -114,6 +114,10 @@ def test_stdout_to_dev_full(app, tmp_path):
     assert result.returncode == 3
     assert "standard output: No space left on device" in result.stderr
     assert not out.exists() and leftovers(tmp_path) == []       # all or none
+    with open("/dev/full", "w") as sink:                         # the --check verdict too
+        result = subprocess.run([str(app), "--check", str(nml)], stdout=sink,
+                                stderr=subprocess.PIPE, text=True, timeout=120)
+    assert result.returncode == 3 and "No space left on device" in result.stderr
 
 
 @pytest.mark.parametrize("ignore_sigpipe", [False, True])
