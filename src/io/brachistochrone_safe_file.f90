@@ -407,7 +407,8 @@ contains
         message = ''
         committing = .true.
         do k = 1, size(files)
-            if (files(k)%fd < 0 .or. files(k)%path == standard_output) cycle
+            if (files(k)%fd < 0) cycle
+            if (files(k)%path == standard_output) cycle
             call commit_one(files(k), status, message)
             if (status /= safe_ok) exit
         end do
