@@ -72,8 +72,8 @@ contains
         call check_slice(table, first, last, ok, text)
         if (ok .and. len(options%request%curves_path) > 0 .and. table%curve_points == 0) then
             ok = .false.
-            text = '--curves '//options%request%curves_path//' needs the number of points '// &
-                   'per curve: set curve_points = N (2 <= N <= '// &
+            text = '--curves '//escape_text(options%request%curves_path)//' needs the '// &
+                   'number of points per curve: set curve_points = N (2 <= N <= '// &
                    integer_text(max_curve_points)//') in the group &endpoints of '// &
                    escape_text(options%input_path)
         end if
@@ -171,7 +171,7 @@ contains
         if (missing > unsolved) then
             write (error_unit, '(a)') program_name//': '//integer_text(missing - unsolved)// &
                 ' solved endpoints have no curve; see the comments in '// &
-                options%request%curves_path
+                escape_text(options%request%curves_path)
             code = exit_unsolved
         end if
         if (unsolved > 0) then
@@ -269,15 +269,16 @@ contains
             if (same_name(path, options%input_path) .or. &
                 same_file(path, options%input_path)) then
                 code = exit_input
-                message = trim(names(k))//' '//path//' is the input file '// &
-                          options%input_path//'; choose another name'
+                message = trim(names(k))//' '//escape_text(path)//' is the input file '// &
+                          escape_text(options%input_path)//'; choose another name'
                 return
             end if
             do j = 1, k - 1
                 if (.not. same_name(path, output_path(options%request, j))) cycle
                 code = exit_input
-                message = trim(names(j))//' '//output_path(options%request, j)// &
-                          ' and '//trim(names(k))//' '//path//' are the same file; '// &
+                message = trim(names(j))//' '//escape_text(output_path(options%request, j))// &
+                          ' and '//trim(names(k))//' '//escape_text(path)//' are the same '// &
+                          'file; '// &
                           'give each output its own name'
                 return
             end do

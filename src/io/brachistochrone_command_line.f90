@@ -3,7 +3,7 @@ module brachistochrone_command_line
     use brachistochrone_version, only: program_version
     use brachistochrone_fields, only: field_names
     use brachistochrone_result_output, only: output_request
-    use brachistochrone_strings, only: integer_text
+    use brachistochrone_strings, only: integer_text, escape_text
     implicit none
     private
 
@@ -83,7 +83,7 @@ contains
                 end if
                 call take_value(argument, value)
             case ('--force', '--quiet', '--no-table', '--check')
-                if (has_value) call problem(argument//' takes no value')
+                if (has_value) call problem(escape_text(argument)//' takes no value')
                 select case (argument)
                 case ('--force');    options%request%force = .true.
                 case ('--quiet');    options%quiet = .true.
@@ -91,7 +91,7 @@ contains
                 case default;        options%check_only = .true.
                 end select
             case default
-                call problem('unknown option '//argument//' (see --help)')
+                call problem('unknown option '//escape_text(argument)//' (see --help)')
             end select
         end do
         if (status == exit_ok) call check_outputs()
@@ -128,7 +128,8 @@ contains
             if (len(path) == 0) then
                 call problem('an empty argument is not a file name')
             else if (len(options%input_path) > 0) then
-                call problem('only one input file, got '//options%input_path//' and '//path)
+                call problem('only one input file, got '//escape_text(options%input_path)// &
+                             ' and '//escape_text(path))
             else
                 options%input_path = path
             end if
@@ -140,8 +141,9 @@ contains
                 call problem(option//' needs a value, got an empty one')
                 return
             else if (text(1:1) == '-' .and. text /= '-') then
-                call problem(option//' needs a value, got the option "'//text//'" (a file '// &
-                             'name starting with - can be written ./'//text//')')
+                call problem(option//' needs a value, got the option "'//escape_text(text)// &
+                             '" (a file name starting with - can be written ./'// &
+                             escape_text(text)//')')
                 return
             end if
             select case (option)
@@ -155,7 +157,7 @@ contains
                 options%threads = whole_number(option, text)
                 if (status == exit_ok .and. (options%threads < 1 .or. &
                     options%threads > max_threads)) call problem('--threads needs a number '// &
-                    'from 1 to '//integer_text(max_threads)//', got '//text)
+                    'from 1 to '//integer_text(max_threads)//', got '//escape_text(text))
             end select
         end subroutine take_value
 
@@ -188,7 +190,7 @@ contains
                 read (text, *, iostat=ios) whole_number
             end if
             if (ios /= 0) call problem(option//' needs a whole number (at most 9 digits), '// &
-                                       'got "'//text//'"')
+                                       'got "'//escape_text(text)//'"')
         end function whole_number
 
         subroutine problem(text)

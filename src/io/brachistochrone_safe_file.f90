@@ -27,6 +27,7 @@ module brachistochrone_safe_file
     use, intrinsic :: iso_c_binding, only: c_int, c_int16_t, c_int32_t, c_int64_t, c_char, &
             c_size_t, c_intptr_t, c_ptr, c_funptr, c_funloc, c_f_pointer, c_null_char, &
             c_associated
+    use brachistochrone_strings, only: escape_text
     implicit none
     private
 
@@ -227,8 +228,9 @@ contains
         slot = findloc(slot_used, .false., dim=1)
         if (len(template) > max_path .or. slot == 0) then
             status = safe_io_error
-            message = 'cannot write '//path//': '//merge('the name is too long      ', &
-                                                         'too many outputs at a time', slot /= 0)
+            message = 'cannot write '//escape_text(path)//': '// &
+                      trim(merge('the name is too long      ', 'too many outputs at a time', &
+                                 slot /= 0))
             return
         end if
         call install_handlers()
@@ -237,7 +239,8 @@ contains
         file%fd = c_mkostemps(slot_name(1, slot), 4_c_int, o_cloexec)
         if (file%fd < 0) then
             status = safe_io_error
-            message = 'cannot write '//path//': cannot create a file in its directory ('// &
+            message = 'cannot write '//escape_text(path)//': cannot create a file in its '// &
+                      'directory ('// &
                       error_text(errno())//')'
             return
         end if
@@ -266,16 +269,18 @@ contains
             code = errno()
             if (code == e_noent) return     ! a missing directory is found by the create
             status = safe_io_error
-            message = 'cannot write '//path//': '//error_text(code)
+            message = 'cannot write '//escape_text(path)//': '//error_text(code)
             return
         end if
         kind = iand(int(info%mode), s_ifmt)
         if (.not. force) then
             status = safe_refused
-            message = path//' exists; use --force to replace it, or choose another name'
+            message = escape_text(path)//' exists; use --force to replace it, or choose '// &
+                      'another name'
         else if (kind /= s_ifreg .and. kind /= s_iflnk) then
             status = safe_refused
-            message = path//' is '//kind_word(kind)//'; --force replaces only regular '// &
+            message = escape_text(path)//' is '//kind_word(kind)//'; --force replaces only '// &
+                      'regular '// &
                       'files and symbolic links'
         end if
     end subroutine check_target
@@ -386,7 +391,7 @@ contains
             if (file%path == standard_output) then
                 message = 'cannot write to standard output: '//error_text(file%error)
             else
-                message = 'cannot write '//file%path//': '//error_text(file%error)// &
+                message = 'cannot write '//escape_text(file%path)//': '//error_text(file%error)// &
                           ' (in '//file%failed//')'
             end if
         end if
@@ -438,8 +443,9 @@ contains
         target = file%path//c_null_char
         if (.not. holds_descriptor(file%temporary, file%fd)) then
             status = safe_io_error
-            message = 'cannot put the finished '//file%path//' in place: its temporary '// &
-                      'file '//file%temporary//' was removed or replaced by another process'
+            message = 'cannot put the finished '//escape_text(file%path)//' in place: its '// &
+                      'temporary file '//escape_text(file%temporary)//' was removed or '// &
+                      'replaced by another process'
             return
         end if
         if (file%force) then
@@ -462,11 +468,12 @@ contains
             slot_used(file%slot) = .false.    ! the temporary name is gone
         else if (errno() == e_exist) then
             status = safe_refused
-            message = file%path//' appeared during the run and was kept; use --force to '// &
+            message = escape_text(file%path)//' appeared during the run and was kept; use '// &
+                      '--force to '// &
                       'replace it, or choose another name'
         else
             status = safe_io_error
-            message = 'cannot put the finished '//file%path//' in place: '// &
+            message = 'cannot put the finished '//escape_text(file%path)//' in place: '// &
                       error_text(errno())
         end if
         if (code /= 0 .and. allocated(file%backup)) then
