@@ -224,6 +224,25 @@ def test_link_swapped_in_at_temporary_name_is_not_committed(app, tmp_path):
     assert not (tmp_path / "out.csv").exists() and leftovers(tmp_path) == []
 
 
+def test_links_planted_for_the_next_pids_are_never_written_through(app, tmp_path):
+    # the attack of issue 9 on the old OUT.tmp<pid> names: links for the next 300 pids
+    nml = write_input(tmp_path / "in.nml", 3)
+    victim = tmp_path / "victim.txt"
+    victim.write_text("precious\n")
+    out = tmp_path / "out.csv"
+    if not os.path.exists("/proc/sys/kernel/ns_last_pid"):
+        pytest.skip("no /proc/sys/kernel/ns_last_pid to predict the next pids")
+    next_pid = int(open("/proc/sys/kernel/ns_last_pid").read()) + 1
+    for pid in range(next_pid, next_pid + 300):
+        os.symlink(victim, f"{out}.tmp{pid}")
+    result = subprocess.run([str(app), str(nml), "--csv", str(out), "--no-table"],
+                            capture_output=True, text=True, timeout=120)
+    assert result.returncode == 0, result.stderr
+    assert victim.read_text() == "precious\n"
+    assert not out.is_symlink() and out.read_text().startswith("# brachistochrone")
+    assert leftovers(tmp_path) == []
+
+
 # --- same outputs, output = input, directories ---------------------------------------
 
 def test_same_path_outputs_are_refused_before_work(run, tmp_path):
@@ -348,11 +367,34 @@ def test_full_disk_with_force_keeps_the_old_file(run, tmp_path, small_disk):
 
 # --- command line and resources -----------------------------------------------------
 
+def test_out_of_memory_for_the_solutions_exit_1_and_nothing_left(app, tmp_path):
+    import resource
+    nml = tmp_path / "many.nml"       # 2,000,000 rows in 70 bytes: table ~100 MB,
+    nml.write_text("&endpoints\n n = 2000000\n rho = 2000000*0.5\n psi = 2000000*0.1\n/\n")
+    out = tmp_path / "out.csv"        # solutions ~250 MB: more than the 280 MB limit allows
+
+    def limit():
+        resource.setrlimit(resource.RLIMIT_AS, (280 << 20, 280 << 20))
+    try:
+        result = subprocess.run([str(app), str(nml), "--csv", str(out), "--threads", "1",
+                                 "--quiet"], capture_output=True, text=True, timeout=60,
+                                preexec_fn=limit)
+    except subprocess.TimeoutExpired:
+        pytest.fail("the solutions fitted under 280 MB; the test needs a larger table")
+    assert result.returncode == 1, result.stderr
+    assert "out of memory for the solutions of 2000000 endpoints" in result.stderr
+    assert "--first/--last" in result.stderr and "Error termination" not in result.stderr
+    assert sorted(os.listdir(tmp_path)) == ["many.nml"]
+
+
 def test_command_line_values(run, tmp_path):
     nml = write_input(tmp_path / "in.nml", 2)
     result = run(nml, "--csv", "--force", "--no-table")
     assert result.returncode == 1 and 'got the option "--force"' in result.stderr
     assert not (tmp_path / "--force").exists()
+    result = run(nml, "--csv", tmp_path / "no\ndir" / "x.csv", "--no-table")
+    assert result.returncode == 3 and "no\\ndir" in result.stderr       # escaped: one line
+    assert len(result.stderr.splitlines()) == 1
     result = run(nml, "--threads", "2000")
     assert result.returncode == 1 and "from 1 to 1024" in result.stderr
     result = run(nml, "--csv", "-", "--nml", "-")
