@@ -3,10 +3,13 @@
 !! An output is written to a temporary file *created* by this run in the target's
 !! directory, `.NAME.XXXXXX.tmp` (six random letters and digits from `mkostemps`, which
 !! opens with O_CREAT|O_EXCL: a planted file or link at that name is never followed or
-!! written through, a new name is drawn instead). Bytes go out through `write(2)` in
+!! written through, a new name is drawn instead; POSIX makes O_EXCL refuse a symbolic
+!! link, so O_NOFOLLOW, whose value differs between Linux architectures, is not needed;
+!! O_CLOEXEC is added and the mode set to 0666 & ~umask). Bytes go out through `write(2)` in
 !! 1 MiB chunks, every return value and `errno` checked (libgfortran 12 reports iostat = 0
 !! on a full disk, so Fortran I/O is not used for outputs); the file is `fsync`ed before
-!! it is committed. Commit without `force` is `renameat2(RENAME_NOREPLACE)` (or
+!! it is committed, and only while its name still holds this run's file (device and inode
+!! of the open descriptor). Commit without `force` is `renameat2(RENAME_NOREPLACE)` (or
 !! `link` + `unlink` where the file system lacks it), so an existing target, also one that
 !! appears during the run, is never replaced; with `force`, `rename(2)` replaces a regular
 !! file or a symbolic link (the link itself, never its target); a directory, device, FIFO
