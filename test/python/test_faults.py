@@ -38,6 +38,15 @@ def leftovers(directory):
     return [name for name in os.listdir(directory) if TEMPORARY.match(name)]
 
 
+def mount_tmpfs(options, directory):
+    """mount -t tmpfs; a CompletedProcess, also when there is no mount command."""
+    try:
+        return subprocess.run(["mount", "-t", "tmpfs", "-o", options, "tmpfs", str(directory)],
+                              capture_output=True, text=True)
+    except OSError as error:
+        return subprocess.CompletedProcess([], 1, "", str(error))
+
+
 @pytest.fixture
 def small_disk(tmp_path):
     """A 200 KiB tmpfs: a full disk. Needs root and a working mount; skipped otherwise."""
@@ -45,8 +54,7 @@ def small_disk(tmp_path):
         pytest.skip("full-disk cases need root to mount a small tmpfs (not root here)")
     disk = tmp_path / "disk"
     disk.mkdir()
-    mounted = subprocess.run(["mount", "-t", "tmpfs", "-o", "size=200k", "tmpfs", str(disk)],
-                             capture_output=True, text=True)
+    mounted = mount_tmpfs("size=200k", disk)
     if mounted.returncode != 0:
         pytest.skip(f"cannot mount a tmpfs here: {mounted.stderr.strip()}")
     yield disk
@@ -65,8 +73,7 @@ def read_only_dir(tmp_path):
         return
     directory = tmp_path / "ro"
     directory.mkdir()
-    mounted = subprocess.run(["mount", "-t", "tmpfs", "-o", "size=20k,ro", "tmpfs",
-                              str(directory)], capture_output=True, text=True)
+    mounted = mount_tmpfs("size=20k,ro", directory)
     if mounted.returncode != 0:
         pytest.skip(f"root ignores permissions and a read-only mount failed: "
                     f"{mounted.stderr.strip()}")
