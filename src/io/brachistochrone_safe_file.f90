@@ -239,15 +239,18 @@ contains
         call install_handlers()
         slot_name(:, slot) = c_null_char
         slot_name(1:len(template), slot) = transfer(template, slot_name(:len(template), slot))
+        ! listed before it exists, so that a signal between the create and the return
+        ! still removes it (before the create the name does not exist: unlink fails)
+        slot_used(slot) = .true.
         file%fd = c_mkostemps(slot_name(1, slot), 4_c_int, o_cloexec)
         if (file%fd < 0) then
+            slot_used(slot) = .false.
             status = safe_io_error
             message = 'cannot write '//escape_text(path)//': cannot create a file in its '// &
                       'directory ('// &
                       error_text(errno())//')'
             return
         end if
-        slot_used(slot) = .true.
         file%slot = slot
         file%temporary = c_text(slot_name(:, slot))
         mask = c_umask(int(o'022', c_int))
