@@ -6,9 +6,10 @@
 !! The brachistochrones from A are a one-parameter family (Tee 1998, sec. 4): this
 !! subcommand samples the members named by their apse radii R (figures 9-14 of the
 !! paper), and the apsidal locus theta = Theta(R,R) (figure 7), with the library's
-!! `curve` module. Outputs are CSV files with provenance comments, written to a temporary
-!! name and renamed when complete. Exit codes: 0 done; 1 usage error (nothing written);
-!! 3 I/O error. (Until 0.2.0 this was the program `brachistochrone-family`.)
+!! `curve` module. Outputs are CSV files with provenance comments, written safely and
+!! committed together (`brachistochrone_safe_file`). Exit codes: 0 done; 1 usage error
+!! (nothing written); 3 I/O error (nothing written); 128 + N killed by signal N. (Until
+!! 0.2.0 this was the program `brachistochrone-family`.)
 module brachistochrone_app_family
     use, intrinsic :: iso_fortran_env, only: error_unit, output_unit, compiler_version, &
                                              compiler_options
@@ -18,7 +19,9 @@ module brachistochrone_app_family
                                status_ok, status_word
     use brachistochrone_version, only: program_name, program_version
     use brachistochrone_endpoint_input, only: max_curve_points
-    use brachistochrone_result_output, only: format_real, temporary_name, commit_file
+    use brachistochrone_result_output, only: format_real
+    use brachistochrone_safe_file, only: safe_file, open_output, finish_output, &
+            commit_outputs, discard_outputs, same_name, safe_ok, safe_refused
     use brachistochrone_run_support, only: timestamp
     use brachistochrone_strings, only: integer_text
     use brachistochrone_command_line, only: get_argument
@@ -36,6 +39,7 @@ module brachistochrone_app_family
     type(curve_samples) :: locus
     integer :: points
     logical :: force
+    type(safe_file) :: files(2)    ! curves, locus
 
 contains
 
@@ -101,8 +105,12 @@ contains
         if (any(radii == 1.0_qp) .and. len(curves_path) > 0) &
             call fail(exit_usage, 'apse radius 1 has no complete brachistochrone (it is the '// &
                       'point A); leave it out of --curves')
-        call refuse_existing(curves_path)
-        call refuse_existing(locus_path)
+        if (len(curves_path) > 0 .and. len(locus_path) > 0) then
+            if (same_name(curves_path, locus_path)) call fail(exit_usage, '--curves '// &
+                curves_path//' and --locus '//locus_path//' are the same file')
+        end if
+        call open_file(files(1), curves_path)
+        call open_file(files(2), locus_path)
 
         call get_command_line(command)
         date = timestamp()
@@ -114,12 +122,13 @@ contains
                 arches(j) = sample_complete_arch(model, radii(j), points)
             end do
             !$omp end parallel do
-            call write_file(curves_path, 'curves')
+            call write_file(files(1), 'curves')
         end if
         if (len(locus_path) > 0) then
             locus = apsidal_locus(model, radii)
-            call write_file(locus_path, 'locus')
+            call write_file(files(2), 'locus')
         end if
+        call commit_all()
         stop exit_ok, quiet=.true.
     end subroutine compute_and_write
 
@@ -140,79 +149,72 @@ contains
         radii = [radii, value]
     end subroutine add_radius
 
-    !> Write the curves or the locus to `path` (temporary name, renamed when complete).
-    subroutine write_file(path, kind)
-        character(len=*), intent(in) :: path, kind
-        character(len=:), allocatable :: temporary
-        character(len=512) :: io_message
-        integer :: unit, ios, i, p, rename_status
-        temporary = temporary_name(path)
-        open (newunit=unit, file=temporary, status='replace', action='write', iostat=ios, &
-              iomsg=io_message)
-        if (ios /= 0) call fail(exit_io, 'cannot write '//path//': '//trim(io_message))
-        call put_line(unit, '# '//name//' '//program_version, ios, io_message)
-        call put_line(unit, '# compiler: '//compiler_version(), ios, io_message)
-        call put_line(unit, '# compiler options: '//compiler_options(), ios, io_message)
-        call put_line(unit, '# date: '//date, ios, io_message)
-        call put_line(unit, '# command: '//command, ios, io_message)
+    !> Write the curves or the locus into its open output.
+    subroutine write_file(file, kind)
+        type(safe_file), intent(inout) :: file
+        character(len=*), intent(in) :: kind
+        integer :: i, p
+        call file%put('# '//name//' '//program_version)
+        call file%put('# compiler: '//compiler_version())
+        call file%put('# compiler options: '//compiler_options())
+        call file%put('# date: '//date)
+        call file%put('# command: '//command)
         if (kind == 'curves') then
-            call put_line(unit, '# complete brachistochrones from A = (1, 0) to A'' at '// &
+            call file%put('# complete brachistochrones from A = (1, 0) to A'' at '// &
                           'radius 1, '//integer_text(points)//' points each at equal steps '// &
                           'of arclength on each half-arch (the apse is a point); id = '// &
-                          'position of R', ios, io_message)
-            call put_line(unit, 'id,R,point,r,theta,s,t,x,y', ios, io_message)
+                          'position of R')
+            call file%put('id,R,point,r,theta,s,t,x,y')
             do i = 1, size(arches)
                 if (arches(i)%status /= status_ok) then
-                    call put_line(unit, '# id '//integer_text(i)//': no curve ('// &
-                                  status_word(arches(i)%status)//')', ios, io_message)
+                    call file%put('# id '//integer_text(i)//': no curve ('// &
+                                  status_word(arches(i)%status)//')')
                     cycle
                 end if
                 do p = 1, arches(i)%n
-                    call put_line(unit, integer_text(i)//','//format_real(radii(i))//','// &
-                                  integer_text(p)//','//row(arches(i), p), ios, io_message)
+                    call file%put(integer_text(i)//','//format_real(radii(i))//','// &
+                                  integer_text(p)//','//row(arches(i), p))
                 end do
             end do
         else
-            call put_line(unit, '# apsidal locus theta = Theta(R,R) (eq. 66), r = R; '// &
+            call file%put('# apsidal locus theta = Theta(R,R) (eq. 66), r = R; '// &
                           's = S(R,R), t = T(R,R) are the arclength and time from A to '// &
-                          'the apse', ios, io_message)
-            call put_line(unit, 'R,theta,s,t,x,y', ios, io_message)
+                          'the apse')
+            call file%put('R,theta,s,t,x,y')
             do p = 1, locus%n
-                call put_line(unit, row(locus, p), ios, io_message)
+                call file%put(row(locus, p))
             end do
-        end if
-        if (ios /= 0) then
-            close (unit, status='delete')
-            call fail(exit_io, 'cannot write '//path//': '//trim(io_message))
-        end if
-        close (unit, iostat=ios, iomsg=io_message)
-        rename_status = 0
-        if (ios == 0) call commit_file(temporary, path, rename_status)
-        if (ios /= 0 .or. rename_status /= 0) then
-            open (newunit=unit, file=temporary, iostat=ios)
-            close (unit, status='delete', iostat=ios)
-            call fail(exit_io, 'cannot put the finished output in place as '//path)
         end if
     end subroutine write_file
 
-    !> Write one line unless an earlier write failed.
-    subroutine put_line(unit, line, ios, io_message)
-        integer, intent(in) :: unit
-        character(len=*), intent(in) :: line
-        integer, intent(inout) :: ios
-        character(len=*), intent(inout) :: io_message
-        if (ios == 0) write (unit, '(a)', iostat=ios, iomsg=io_message) line
-    end subroutine put_line
-
-    !> Stop before any work when an output exists and --force is not given.
-    subroutine refuse_existing(path)
+    !> Before any work: refuse an output in the way, create its temporary file.
+    subroutine open_file(file, path)
+        type(safe_file), intent(inout) :: file
         character(len=*), intent(in) :: path
-        logical :: exists
-        if (len(path) == 0 .or. force) return
-        inquire (file=path, exist=exists)
-        if (exists) call fail(exit_usage, path//' exists; use --force to replace it, or '// &
-                              'choose another name')
-    end subroutine refuse_existing
+        integer :: status
+        character(len=:), allocatable :: problem
+        if (len(path) == 0) return
+        call open_output(file, path, force, status, problem)
+        if (status /= safe_ok) then
+            call discard_outputs(files)
+            call fail(merge(exit_usage, exit_io, status == safe_refused), problem)
+        end if
+    end subroutine open_file
+
+    !> Finish and commit both outputs, or neither.
+    subroutine commit_all()
+        integer :: status, i
+        character(len=:), allocatable :: problem
+        do i = 1, size(files)
+            call finish_output(files(i), status, problem)
+            if (status /= safe_ok) exit
+        end do
+        if (status == safe_ok) call commit_outputs(files, status, problem)
+        if (status /= safe_ok) then
+            call discard_outputs(files)
+            call fail(merge(exit_usage, exit_io, status == safe_refused), problem)
+        end if
+    end subroutine commit_all
 
     !> r,theta,s,t,x,y of point p.
     function row(c, p) result(line)

@@ -8,7 +8,8 @@
 !! name is `./family`).
 !! Exit codes: 0 every endpoint solved; 1 usage or input error (nothing written);
 !! 2 some endpoints have no solution (files written, their status says why);
-!! 3 I/O error.
+!! 3 I/O error (no output file written); 128 + N killed by signal N (no output file
+!! written; see brachistochrone_safe_file).
 program main
     use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
     !$ use omp_lib, only: omp_set_num_threads
@@ -18,7 +19,9 @@ program main
     use brachistochrone_endpoint_input, only: endpoint_table, message
     use brachistochrone_command_line, only: run_options, parse_command_line, write_usage, exit_ok, &
                             exit_input
-    use brachistochrone_batch_run, only: prepare_run, print_report, solve_rows, deliver_results
+    use brachistochrone_batch_run, only: prepare_run, print_report, solve_rows, deliver_results, &
+                                         abandon_outputs
+    use brachistochrone_strings, only: integer_text
     use brachistochrone_app_family, only: run_family
     use brachistochrone_app_tunnel, only: run_tunnel
     implicit none
@@ -29,7 +32,7 @@ program main
     type(endpoint_solution), allocatable :: solutions(:)
     type(message), allocatable :: report(:)
     character(len=:), allocatable :: problem
-    integer :: status, first, last, code
+    integer :: status, first, last, code, stat
     logical :: finished
 
     call run_subcommand()
@@ -54,8 +57,17 @@ program main
     end if
 
     call new_field(table%force, table%exponent, field, status)
-    if (status /= status_ok) call fail(exit_input, table%path//': '//status_message(status))
-    allocate (solutions(first:last))
+    if (status /= status_ok) then
+        call abandon_outputs()
+        call fail(exit_input, table%path//': '//status_message(status))
+    end if
+    allocate (solutions(first:last), stat=stat)
+    if (stat /= 0) then
+        call abandon_outputs()
+        call fail(exit_input, 'out of memory for the solutions of '// &
+                  integer_text(last - first + 1)//' endpoints; solve fewer rows at a time '// &
+                  'with --first/--last')
+    end if
     call solve_rows(field, table, first, last, solutions, .not. options%quiet)
 
     call deliver_results(options, field, table, first, last, solutions, code)

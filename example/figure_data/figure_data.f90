@@ -51,7 +51,9 @@ program figure_data
     use brachistochrone_repulsive, only: repulsive_curve, curve_from_apse, curve_from_gap, &
                                          repulsive_values, critical_values
     use brachistochrone_version, only: program_version
-    use brachistochrone_result_output, only: format_real, temporary_name, commit_file
+    use brachistochrone_result_output, only: format_real
+    use brachistochrone_safe_file, only: safe_file, open_output, finish_output, &
+                                         commit_outputs, discard_outputs, safe_ok
     use brachistochrone_command_line, only: get_argument
     use brachistochrone_strings, only: integer_text
     implicit none
@@ -472,35 +474,26 @@ contains
         end do
     end function numbers
 
-    !> Write every line to standard output, or to a temporary file renamed onto the path.
+    !> Write every line to standard output, or to FILE (replaced when it exists; a
+    !! regular file or link only), through the checked writer (`brachistochrone_safe_file`).
     subroutine write_output()
-        character(len=:), allocatable :: temporary
-        character(len=512) :: message
-        integer :: unit, ios, i, rename_status
+        type(safe_file) :: out(1)
+        character(len=:), allocatable :: message
+        integer :: status, i
         if (len(output_path) == 0) then
-            do i = 1, line_count
-                write (output_unit, '(a)') lines(i)%text
-            end do
-            return
+            call open_output(out(1), '-', .true., status, message)
+        else
+            call open_output(out(1), output_path, .true., status, message)
         end if
-        temporary = temporary_name(output_path)
-        open (newunit=unit, file=temporary, status='replace', action='write', iostat=ios, &
-              iomsg=message)
-        if (ios /= 0) call fail(exit_io, 'cannot write '//output_path//': '//trim(message))
+        if (status /= safe_ok) call fail(exit_io, message)
         do i = 1, line_count
-            if (ios == 0) write (unit, '(a)', iostat=ios, iomsg=message) lines(i)%text
+            call out(1)%put(lines(i)%text)
         end do
-        if (ios /= 0) then
-            close (unit, status='delete')
-            call fail(exit_io, 'cannot write '//output_path//': '//trim(message))
-        end if
-        close (unit, iostat=ios, iomsg=message)
-        rename_status = 1
-        if (ios == 0) call commit_file(temporary, output_path, rename_status)
-        if (rename_status /= 0) then
-            open (newunit=unit, file=temporary, iostat=ios)
-            close (unit, status='delete', iostat=ios)
-            call fail(exit_io, 'cannot put the finished output in place as '//output_path)
+        call finish_output(out(1), status, message)
+        if (status == safe_ok) call commit_outputs(out, status, message)
+        if (status /= safe_ok) then
+            call discard_outputs(out)
+            call fail(exit_io, message)
         end if
     end subroutine write_output
 
