@@ -139,9 +139,9 @@ def test_a_million_endpoints_validate(run, tmp_path):
 
 
 def test_progress_on_stderr_and_quiet(run, tmp_path):
-    # progress starts after 2 s: 40,000 endpoints take about 5 s on one thread
+    # progress starts after 2 s: 120,000 endpoints take about 5 s on one thread
     nml = tmp_path / "in.nml"
-    write_table(nml, 40000)
+    write_table(nml, 120000)
     loud = run(nml, "--no-table", "--threads", "1")
     assert loud.returncode == 0
     assert loud.stdout == ""
