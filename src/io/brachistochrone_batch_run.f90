@@ -56,7 +56,7 @@ contains
         code = exit_ok
         finished = .false.
         allocate (report(0))
-        call read_endpoint_file(options%input_path, table)
+        call read_endpoint_file(options%input_path, table, checksum=.not. options%check_only)
         if (size(table%errors) > 0) then
             report = [(message(program_name//': '//table%errors(i)%text), &
                        i = 1, size(table%errors))]
