@@ -106,6 +106,7 @@ module brachistochrone_central_force
     !> The endpoint of a two-point problem and the unknown used.
     type :: endpoint_problem
         real(qp) :: rho = 1.0_qp, psi = 0.0_qp, one_minus_rho = 0.0_qp, delta_rho = 0.0_qp
+        real(qp) :: fall_rho = 0.0_qp !! t0(rho), once per endpoint
         logical :: second = .false., use_u = .true.
         real(qp) :: limit = 0.0_qp    !! 2 lim Theta(R,R), R -> 0
         integer :: form = 0           !! 0: Upsilon - psi; 1: log(Upsilon/psi);
@@ -199,15 +200,20 @@ contains
         type(arch_setup), intent(in) :: a
         type(panel), intent(out) :: panels(max_panels)
         integer, intent(out) :: count
-        real(qp) :: b, c, meet, lo, hi, mu_r
+        real(qp) :: b, c, meet, lo, hi
         type(panel) :: start_side(max_panels)
         integer :: n_start, k
         count = 0
         b = min(1.0_qp, 0.5_qp*model%sigma_apse)
         c = min(1.0_qp, 0.5_qp*model%sigma_start)
         if (a%big_lambda <= b + c) then
-            mu_r = 2.0_qp*atan2(sqrt(a%lambda_r), sqrt(a%delta_r))
-            call add_split(panels, count, kind_both, 0.0_qp, pi, a%big_lambda, mu_r, a)
+            ! two root panels meeting in between: lambda = b' s^2 and delta = c' s^2
+            b = a%big_lambda*b/(b + c)
+            c = a%big_lambda - b
+            call add_split(panels, count, kind_apse_root, 0.0_qp, 1.0_qp, b, &
+                           sqrt(a%lambda_r/b), a)
+            call add_split(panels, count, kind_start_root, 0.0_qp, 1.0_qp, c, &
+                           sqrt(a%delta_r/c), a)
         else
             meet = max(b, min(a%big_lambda - c, a%big_lambda*b/(b + c)))
             ! apse side: lambda = b s^2 on [0, b], then [b, 4b], [4b, 16b], ... to meet
@@ -512,42 +518,44 @@ contains
         end do
     end function theta64
 
-    !> The radial fall time int x/v(x) d delta over delta in [0, delta_max], weight 1
-    !! below delta_r and `weight_above` above (t0(r): delta_r = delta_max = -log r;
-    !! 2 t0(R) - t0(r): delta_max = Lambda, weight_above = 2).
-    pure function fall_integral(model, delta_r, delta_max, weight_above) result(total)
+    !> A piece of the radial fall time, int x/v(x) d delta over [delta_lo, delta_hi]
+    !! (x = exp(-delta)): t0(r) = piece(0, -log r), t0(R) - t0(r) = piece(-log r, Lambda).
+    !! Panels from the start: delta = c s^2 on [0, c], then [c, 4c], [4c, 16c], ...
+    pure function fall_piece(model, delta_lo, delta_hi) result(total)
         type(central_force_model), intent(in) :: model
-        real(qp), intent(in) :: delta_r, delta_max, weight_above
+        real(qp), intent(in) :: delta_lo, delta_hi
         real(qp) :: total
         type(panel) :: panels(max_panels)
         type(arch_setup) :: a
         real(qp) :: c, lo, hi, v, delta, lambda, jacobian, g, part, last, share
         integer :: count, p, k, j
+        total = 0.0_qp
+        if (delta_hi <= delta_lo) return
         c = min(1.0_qp, 0.5_qp*model%sigma_start)
-        ! weights: start-side panels are 'reversed' in add_split
-        a%weight_above = 1.0_qp
-        a%weight_below = weight_above
+        ! weight 1 inside [delta_lo, delta_hi] (start-side panels are 'reversed')
+        a%weight_above = 0.0_qp
+        a%weight_below = 1.0_qp
         count = 0
-        call add_split(panels, count, kind_start_root, 0.0_qp, &
-                       min(1.0_qp, sqrt(delta_max/c)), c, sqrt(delta_r/c), a)
+        if (delta_lo < c) call add_split(panels, count, kind_start_root, 0.0_qp, &
+            min(1.0_qp, sqrt(delta_hi/c)), c, sqrt(delta_lo/c), a)
         lo = c
-        do while (lo < delta_max .and. count < max_panels - 2)
-            hi = min(4.0_qp*lo, delta_max)
-            call add_split(panels, count, kind_start, lo, hi, 1.0_qp, delta_r, a)
+        do while (lo < delta_hi .and. count < max_panels - 2)
+            hi = min(4.0_qp*lo, delta_hi)
+            if (hi > delta_lo) call add_split(panels, count, kind_start, lo, hi, 1.0_qp, &
+                                              delta_lo, a)
             lo = hi
         end do
-        total = 0.0_qp
         last = 0.0_qp
         do p = 1, count
-            associate (pan => panels(p))
             ! singularities: delta = 0 and +-i sigma_start (x = 0 is at infinity)
-            panels(p)%log_rho = bernstein_log(model, huge(1.0_qp)**0.25_qp, pan)
+            panels(p)%log_rho = bernstein_log(model, huge(1.0_qp)**0.25_qp, panels(p))
+            associate (pan => panels(p))
             share = 1.0_qp
             if (p > 1 .and. total > 0.0_qp) then
                 share = 4.0_qp*panel_length(pan)*last/total
                 if (share < negligible) exit
             end if
-            j = rule_for(panels(p)%log_rho, fine_digits + &
+            j = rule_for(pan%log_rho, fine_digits + &
                          min(0.0_qp, log10(max(share, 1.0e-60_qp))))
             part = 0.0_qp
             do k = 1, model%gauss(j)%n
@@ -560,23 +568,26 @@ contains
             total = total + pan%weight*(pan%hi - pan%lo)*part
             end associate
         end do
-    end function fall_integral
+    end function fall_piece
 
     !> Theta, S, T at the endpoint for the apse data `a` (first or second half-arch as
     !! the weights say); d = r - R exact, one_minus_r = 1 - r.
-    pure subroutine arch_values(model, a, d, one_minus_r, second, angle, length, time)
+    pure subroutine arch_values(model, a, d, one_minus_r, second, fall_r, angle, length, &
+                                time)
         type(central_force_model), intent(in) :: model
         type(arch_setup), intent(in) :: a
         real(qp), intent(in) :: d, one_minus_r
         logical, intent(in) :: second
+        real(qp), intent(in) :: fall_r   !! t0(r), the radial fall time to r
         real(qp), intent(out) :: angle, length, time
         real(qp) :: sums(3), fall
         sums = arch_integrals(model, a, fine_digits, .true.)
         if (second) then
-            fall = fall_integral(model, a%delta_r, a%big_lambda, 2.0_qp)
+            ! 2 t0(R) - t0(r) = t0(r) + 2 (t0(R) - t0(r))
+            fall = fall_r + 2.0_qp*fall_piece(model, a%delta_r, a%big_lambda)
             length = (one_minus_r + 2.0_qp*d) + a%big_r*sums(2)
         else
-            fall = fall_integral(model, a%delta_r, a%delta_r, 1.0_qp)
+            fall = fall_r
             length = one_minus_r + a%big_r*sums(2)
         end if
         angle = sums(1)
@@ -600,7 +611,8 @@ contains
         if (status /= status_ok) return
         a = setup_arch(self, big_r, 1.0_qp - big_r, r - big_r, minus_log(r, 1.0_qp - r), &
                        second, .false.)
-        call arch_values(self, a, r - big_r, 1.0_qp - r, second, angle, length, time)
+        call arch_values(self, a, r - big_r, 1.0_qp - r, second, &
+                         fall_piece(self, 0.0_qp, a%delta_r), angle, length, time)
     end subroutine general_half_arch
 
     !> -log r, from 1 - r where r is near 1.
@@ -646,7 +658,7 @@ contains
         else
             delta = 1.0e4_qp
         end if
-        value = fall_integral(self, delta, delta, 1.0_qp)
+        value = fall_piece(self, 0.0_qp, delta)
     end subroutine general_fall_time
 
     !> The apse data at the unknown x (u = sqrt(rho - R) or y = log R).
@@ -816,7 +828,8 @@ contains
         else
             d = prob%rho - a%big_r
         end if
-        call arch_values(model, a, d, prob%one_minus_rho, prob%second, angle, s, t)
+        call arch_values(model, a, d, prob%one_minus_rho, prob%second, prob%fall_rho, &
+                         angle, s, t)
         f = angle - prob%psi
     end subroutine evaluate_full
 
@@ -896,7 +909,8 @@ contains
             ! B is the apse itself
             a = setup_arch(self, rho, prob%one_minus_rho, 0.0_qp, prob%delta_rho, &
                            .false., .false.)
-            call arch_values(self, a, 0.0_qp, prob%one_minus_rho, .false., x, &
+            call arch_values(self, a, 0.0_qp, prob%one_minus_rho, .false., &
+                             fall_piece(self, 0.0_qp, prob%delta_rho), x, &
                              solution%arclength, solution%time)
             solution%apse_radius = rho
             solution%has_apse_radius = .true.
@@ -939,6 +953,7 @@ contains
             f_hi = f_half
         end if
         call double_phase(self, prob, lo, f_lo, hi, f_hi, x, slope, solution%steps)
+        prob%fall_rho = fall_piece(self, 0.0_qp, prob%delta_rho)
         call quad_phase(self, prob, x, slope, lo, hi, solution)
     end function general_solve
 

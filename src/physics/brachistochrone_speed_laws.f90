@@ -23,6 +23,7 @@
 module brachistochrone_speed_laws
     use brachistochrone_kinds, only: qp
     use brachistochrone_quad_math, only: expm1, log1p
+    use brachistochrone_fast_exp, only: fast_expm1
     use, intrinsic :: iso_fortran_env, only: real64
     implicit none
     private
@@ -306,41 +307,43 @@ contains
     elemental function decay(a, y) result(e)
         real(qp), intent(in) :: a, y
         real(qp) :: e
-        e = -expm1(-a*y)
+        e = -fast_expm1(-a*y)
     end function decay
 
-    !> Power law: [Lambda, E(Lambda), a, 0].
+    !> Power law: [Lambda, E(Lambda), a, exp(-a Lambda)].
     pure function power_apse_constants(self, big_r, one_minus_big_r, big_lambda) result(c)
         class(power_law), intent(in) :: self
         real(qp), intent(in) :: big_r, one_minus_big_r, big_lambda
         real(qp) :: c(4), a
         a = self%n - 1.0_qp
-        c = [big_lambda, decay(a, big_lambda), a, 0.0_qp]
+        c = [big_lambda, decay(a, big_lambda), a, exp(-a*big_lambda)]
     end function power_apse_constants
 
+    !> Two expm1 per node (three where a delta < 1/4): exp(-lambda) = 1 + expm1(-lambda),
+    !! 1 - exp(-2 lambda) = -expm1(-lambda) (2 + expm1(-lambda)), E(lambda) =
+    !! -expm1(-a lambda), exp(-a delta) = exp(-a Lambda)/exp(-a lambda).
     pure subroutine power_arch_terms(self, c, lambda, delta, q, one_minus_q, q_over_v, &
                                      x_over_r)
         class(power_law), intent(in) :: self
         real(qp), intent(in) :: c(4), lambda, delta
         real(qp), intent(out) :: q, one_minus_q, q_over_v, x_over_r
-        real(qp) :: a, e1, e2, ea, e_lambda, e_delta
+        real(qp) :: a, em1, e1, e2, eam1, ea, e_delta, exp_delta
         a = c(3)
-        e1 = exp(-lambda)
+        em1 = fast_expm1(-lambda)
+        e1 = 1.0_qp + em1
         e2 = e1*e1
-        ea = exp(-a*lambda)
-        if (a*lambda > 0.25_qp) then
-            e_lambda = 1.0_qp - ea
+        eam1 = fast_expm1(-a*lambda)
+        ea = 1.0_qp + eam1
+        if (a*delta > 0.25_qp .and. c(4) > 0.0_qp) then
+            exp_delta = c(4)/ea
+            e_delta = 1.0_qp - exp_delta
         else
-            e_lambda = decay(a, lambda)
+            e_delta = decay(a, delta)
+            exp_delta = 1.0_qp - e_delta
         end if
-        e_delta = decay(a, delta)
         q = e2*ea*e_delta/c(2)
-        if (lambda > 0.35_qp) then
-            one_minus_q = (1.0_qp - e2) + e2*e_lambda/c(2)
-        else
-            one_minus_q = -expm1(-2.0_qp*lambda) + e2*e_lambda/c(2)
-        end if
-        q_over_v = sqrt(0.5_qp*a*e_delta)/c(2)*exp(-(a + 2.0_qp)*lambda - 0.5_qp*a*delta)
+        one_minus_q = -em1*(2.0_qp + em1) + e2*(-eam1)/c(2)
+        q_over_v = sqrt(0.5_qp*a*e_delta*exp_delta)/c(2)*(e2*ea)
         x_over_r = 1.0_qp/e1
     end subroutine power_arch_terms
 
@@ -383,15 +386,12 @@ contains
         class(logarithmic_law), intent(in) :: self
         real(qp), intent(in) :: c(4), lambda, delta
         real(qp), intent(out) :: q, one_minus_q, q_over_v, x_over_r
-        real(qp) :: e1, e2
-        e1 = exp(-lambda)
+        real(qp) :: em1, e1, e2
+        em1 = fast_expm1(-lambda)
+        e1 = 1.0_qp + em1
         e2 = e1*e1
         q = e2*delta/c(1)
-        if (lambda > 0.35_qp) then
-            one_minus_q = (1.0_qp - e2) + e2*lambda/c(1)
-        else
-            one_minus_q = -expm1(-2.0_qp*lambda) + e2*lambda/c(1)
-        end if
+        one_minus_q = -em1*(2.0_qp + em1) + e2*lambda/c(1)
         q_over_v = e2*sqrt(0.5_qp*delta)/c(1)
         x_over_r = 1.0_qp/e1
     end subroutine logarithmic_arch_terms
