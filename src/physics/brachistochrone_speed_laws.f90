@@ -23,7 +23,7 @@
 module brachistochrone_speed_laws
     use brachistochrone_kinds, only: qp
     use brachistochrone_quad_math, only: expm1, log1p
-    use brachistochrone_fast_exp, only: fast_expm1
+    use brachistochrone_fast_exp, only: fast_exp, fast_expm1
     use, intrinsic :: iso_fortran_env, only: real64
     implicit none
     private
@@ -303,6 +303,21 @@ contains
         sigma = [acos(-1.0_qp), acos(-1.0_qp)]
     end function harmonic_log_scales
 
+    !> exp(-lambda) and 1 - exp(-2 lambda), both to full relative precision (lambda >= 0).
+    elemental subroutine exp_pair(lambda, e1, om2)
+        real(qp), intent(in) :: lambda
+        real(qp), intent(out) :: e1, om2
+        real(qp) :: em1
+        if (lambda > 0.5_qp) then
+            e1 = fast_exp(-lambda)
+            om2 = 1.0_qp - e1*e1
+        else
+            em1 = fast_expm1(-lambda)
+            e1 = 1.0_qp + em1
+            om2 = -em1*(2.0_qp + em1)
+        end if
+    end subroutine exp_pair
+
     !> E(y) = 1 - exp(-a y) for y >= 0, accurate for all a y.
     elemental function decay(a, y) result(e)
         real(qp), intent(in) :: a, y
@@ -327,13 +342,17 @@ contains
         class(power_law), intent(in) :: self
         real(qp), intent(in) :: c(4), lambda, delta
         real(qp), intent(out) :: q, one_minus_q, q_over_v, x_over_r
-        real(qp) :: a, em1, e1, e2, eam1, ea, e_delta, exp_delta
+        real(qp) :: a, om2, e1, e2, eam1, ea, e_delta, exp_delta
         a = c(3)
-        em1 = fast_expm1(-lambda)
-        e1 = 1.0_qp + em1
+        call exp_pair(lambda, e1, om2)
         e2 = e1*e1
-        eam1 = fast_expm1(-a*lambda)
-        ea = 1.0_qp + eam1
+        if (a*lambda > 0.5_qp) then
+            ea = fast_exp(-a*lambda)
+            eam1 = ea - 1.0_qp
+        else
+            eam1 = fast_expm1(-a*lambda)
+            ea = 1.0_qp + eam1
+        end if
         if (a*delta > 0.25_qp .and. c(4) > 0.0_qp) then
             exp_delta = c(4)/ea
             e_delta = 1.0_qp - exp_delta
@@ -342,7 +361,7 @@ contains
             exp_delta = 1.0_qp - e_delta
         end if
         q = e2*ea*e_delta/c(2)
-        one_minus_q = -em1*(2.0_qp + em1) + e2*(-eam1)/c(2)
+        one_minus_q = om2 + e2*(-eam1)/c(2)
         q_over_v = sqrt(0.5_qp*a*e_delta*exp_delta)/c(2)*(e2*ea)
         x_over_r = 1.0_qp/e1
     end subroutine power_arch_terms
@@ -386,12 +405,11 @@ contains
         class(logarithmic_law), intent(in) :: self
         real(qp), intent(in) :: c(4), lambda, delta
         real(qp), intent(out) :: q, one_minus_q, q_over_v, x_over_r
-        real(qp) :: em1, e1, e2
-        em1 = fast_expm1(-lambda)
-        e1 = 1.0_qp + em1
+        real(qp) :: om2, e1, e2
+        call exp_pair(lambda, e1, om2)
         e2 = e1*e1
         q = e2*delta/c(1)
-        one_minus_q = -em1*(2.0_qp + em1) + e2*lambda/c(1)
+        one_minus_q = om2 + e2*lambda/c(1)
         q_over_v = e2*sqrt(0.5_qp*delta)/c(1)
         x_over_r = 1.0_qp/e1
     end subroutine logarithmic_arch_terms
