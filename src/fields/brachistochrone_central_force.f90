@@ -40,6 +40,7 @@ module brachistochrone_central_force
                                       status_not_finite, status_outside_domain, &
                                       status_no_convergence, argument_status
     use brachistochrone_quad_math, only: log1p
+    use brachistochrone_fast_math, only: inverse_sqrt
     use brachistochrone_quadrature, only: gauss_legendre_rule, gauss_legendre
     use brachistochrone_speed_laws, only: speed_law
     use brachistochrone_two_point, only: endpoint_solution, arch_first, arch_second, &
@@ -401,7 +402,7 @@ contains
         real(qp) :: sums(3)
         type(panel) :: panels(max_panels)
         real(qp) :: part(3), last(3), share, v, lambda, delta, jacobian, q, omq, qv, xr
-        real(qp) :: root, g(3), length
+        real(qp) :: root, inverse_root, common, g(3), length
         integer :: count, p, k, j, m
         call arch_panels(model, a, panels, count)
         sums = 0.0_qp
@@ -426,11 +427,14 @@ contains
                 call node_point(pan%kind, pan%scale, a%big_lambda, v, lambda, delta, &
                                 jacobian)
                 call model%law%arch_terms(a%c, lambda, delta, q, omq, qv, xr)
-                root = sqrt(omq)
-                g(1) = sqrt(q)/root*jacobian
+                ! 1/sqrt(1 - q) and sqrt(q/(1 - q)) by a double seed and Newton steps
+                inverse_root = inverse_sqrt(omq)
+                g(1) = q*inverse_sqrt(q*omq)*jacobian
                 if (want_length_time) then
-                    g(2) = q*xr/(root*(1.0_qp + root))*jacobian
-                    g(3) = qv*xr/(root*(1.0_qp + root))*jacobian
+                    root = omq*inverse_root
+                    common = xr*inverse_root/(1.0_qp + root)*jacobian
+                    g(2) = q*common
+                    g(3) = qv*common
                 else
                     g(2:3) = 0.0_qp
                 end if
