@@ -67,6 +67,8 @@ contains
                    digits_of_agreement(b%arclength, expected(2)), &
                    digits_of_agreement(b%time, expected(3))]
             if (b%status /= 0) raw = 0.0_qp
+            if (minval(raw + credit) < 33.0_qp) write (output_unit, '(5x,a,2es12.3,3f7.2)') &
+                'weakest: rho, R, digits', rho, expected(1), raw + credit
             do k = 1, size(classes)
                 if (table%text(i, 'class') == trim(classes(k)) .or. k == size(classes)) then
                     worst(:, k) = min(worst(:, k), raw + credit)

@@ -99,7 +99,7 @@ module brachistochrone_central_force
     !! and the weights of the integrands below and above it.
     type :: arch_setup
         real(qp) :: big_r = 0.0_qp, one_minus_big_r = 1.0_qp, big_lambda = 0.0_qp
-        real(qp) :: c(4) = 0.0_qp
+        real(qp) :: c(6) = 0.0_qp
         real(qp) :: lambda_r = 0.0_qp, delta_r = 0.0_qp
         real(qp) :: weight_below = 0.0_qp, weight_above = 1.0_qp
     end type arch_setup
@@ -109,6 +109,7 @@ module brachistochrone_central_force
         real(qp) :: rho = 1.0_qp, psi = 0.0_qp, one_minus_rho = 0.0_qp, delta_rho = 0.0_qp
         real(qp) :: fall_rho = 0.0_qp !! t0(rho), once per endpoint
         logical :: second = .false., use_u = .true.
+        logical :: use_r = .false.    !! unknown R itself (the quad phase below rho/2)
         real(qp) :: limit = 0.0_qp    !! 2 lim Theta(R,R), R -> 0
         integer :: form = 0           !! 0: Upsilon - psi; 1: log(Upsilon/psi);
                                       !! 2: log((limit - Upsilon)/(limit - psi))
@@ -665,7 +666,7 @@ contains
         value = fall_piece(self, 0.0_qp, delta)
     end subroutine general_fall_time
 
-    !> The apse data at the unknown x (u = sqrt(rho - R) or y = log R).
+    !> The apse data at the unknown x (u = sqrt(rho - R), R, or y = log R).
     pure function setup_at(model, prob, x) result(a)
         type(central_force_model), intent(in) :: model
         type(endpoint_problem), intent(in) :: prob
@@ -675,6 +676,9 @@ contains
         if (prob%use_u) then
             d = x*x
             a = setup_arch(model, prob%rho - d, prob%one_minus_rho + d, d, prob%delta_rho, &
+                           prob%second, .false.)
+        else if (prob%use_r) then
+            a = setup_arch(model, x, 1.0_qp - x, prob%rho - x, prob%delta_rho, &
                            prob%second, .false.)
         else
             a = setup_arch_log(model, -x, prob%rho, prob%delta_rho, prob%second)
@@ -753,7 +757,7 @@ contains
         real(real64), intent(in) :: slope64
         type(endpoint_solution), intent(inout) :: solution
         type(arch_setup) :: a
-        real(qp) :: x(3), f(2), s(2), t(2), slope, step, k_mid, scale
+        real(qp) :: x(3), f(2), s(2), t(2), slope, step, k_mid, scale, floor
         integer :: iteration
         select case (prob%form)
         case (1)
@@ -764,6 +768,7 @@ contains
             slope = real(slope64, qp)
         end select
         scale = max(abs(hi - lo), 1.0e-300_qp)
+        floor = 1.0e-3_qp*scale
         x(1) = x_start
         call evaluate_full(model, prob, x(1), f(1), s(1), t(1))
         x(2) = clip(x(1) - f(1)/slope)
@@ -776,10 +781,14 @@ contains
             end if
             x(3) = clip(x(2) + step)
             ! predicted error of x(3): about |step| |x(3) - x(1)| |f''/2f'|, with
-            ! |f''/2f'| <= 1/|x - lo-or-hi| bounded by 10/scale
-            if (abs(step) <= 1.0e-17_qp*max(abs(x(2)), 1.0e-3_qp*scale) .and. &
+            ! |f''/2f'| taken as 10/scale (u; R: 10/R, Upsilon varies on the scale R)
+            if (prob%use_r) then
+                scale = x(2)
+                floor = tiny(1.0_qp)
+            end if
+            if (abs(step) <= 1.0e-17_qp*max(abs(x(2)), floor) .and. &
                 abs(step)*abs(x(3) - x(1))*10.0_qp/scale <= &
-                1.0e-35_qp*max(abs(x(3)), 1.0e-3_qp*scale)) exit
+                1.0e-35_qp*max(abs(x(3)), floor)) exit
             x(1) = x(2)
             f(1) = f(2)
             s(1) = s(2)
@@ -958,6 +967,14 @@ contains
         end if
         call double_phase(self, prob, lo, f_lo, hi, f_hi, x, slope, solution%steps)
         prob%fall_rho = fall_piece(self, 0.0_qp, prob%delta_rho)
+        if (.not. prob%use_u) then
+            ! the quad phase in R itself: y = log R resolves R only to eps |log R|
+            prob%use_r = .true.
+            x = exp(x)
+            slope = slope/real(x, real64)
+            lo = exp(lo)
+            hi = half
+        end if
         call quad_phase(self, prob, x, slope, lo, hi, solution)
     end function general_solve
 

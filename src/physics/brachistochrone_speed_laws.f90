@@ -248,9 +248,9 @@ contains
         real(qp), intent(in) :: big_r            !! apse radius R
         real(qp), intent(in) :: one_minus_big_r  !! 1 - R, exact
         real(qp), intent(in) :: big_lambda       !! -log R
-        real(qp) :: c(4)
+        real(qp) :: c(6)
         c = [big_r, one_minus_big_r, big_lambda, &
-             -one_minus_big_r*self%divided_difference(big_r, 1.0_qp)]
+             -one_minus_big_r*self%divided_difference(big_r, 1.0_qp), 0.0_qp, 0.0_qp]
     end function default_apse_constants
 
     !> q = (R/x)^2 P(x)/P(R), 1 - q = (x - R) M/x^2 with M = (x + R) - R^2 D(x,R)/P(R)
@@ -259,7 +259,7 @@ contains
     pure subroutine default_arch_terms(self, c, lambda, delta, q, one_minus_q, q_over_v, &
                                        x_over_r)
         class(speed_law), intent(in) :: self
-        real(qp), intent(in) :: c(4)           !! from apse_constants
+        real(qp), intent(in) :: c(6)           !! from apse_constants
         real(qp), intent(in) :: lambda, delta  !! offsets from the apse and the start
         real(qp), intent(out) :: q, one_minus_q, q_over_v, x_over_r
         real(qp) :: x, p_x, m
@@ -283,7 +283,7 @@ contains
     !> K = R/v(R), the conserved angular momentum of the associated free particle.
     pure function default_conserved(self, c) result(k)
         class(speed_law), intent(in) :: self
-        real(qp), intent(in) :: c(4) !! from apse_constants
+        real(qp), intent(in) :: c(6) !! from apse_constants
         real(qp) :: k
         k = c(1)/sqrt(c(4))
     end function default_conserved
@@ -303,13 +303,19 @@ contains
         sigma = [acos(-1.0_qp), acos(-1.0_qp)]
     end function harmonic_log_scales
 
-    !> exp(-lambda) and 1 - exp(-2 lambda), both to full relative precision (lambda >= 0).
-    elemental subroutine exp_pair(lambda, e1, om2)
-        real(qp), intent(in) :: lambda
+    !> exp(-lambda) and 1 - exp(-2 lambda), both to full relative precision (lambda >= 0);
+    !! where delta < lambda (nearer the start) exp(-lambda) = R exp(delta), since lambda =
+    !! Lambda - delta carries an absolute rounding error of Lambda's size.
+    elemental subroutine exp_pair(lambda, delta, big_r, e1, om2)
+        real(qp), intent(in) :: lambda, delta, big_r
         real(qp), intent(out) :: e1, om2
         real(qp) :: em1
         if (lambda > 0.5_qp) then
-            e1 = fast_exp(-lambda)
+            if (delta < lambda .and. big_r > 0.0_qp) then
+                e1 = big_r*fast_exp(delta)
+            else
+                e1 = fast_exp(-lambda)
+            end if
             om2 = 1.0_qp - e1*e1
         else
             em1 = fast_expm1(-lambda)
@@ -325,13 +331,15 @@ contains
         e = -fast_expm1(-a*y)
     end function decay
 
-    !> Power law: [Lambda, E(Lambda), a, exp(-a Lambda)].
+    !> Power law: [Lambda, E(Lambda), a, exp(-a Lambda), R, 0].
     pure function power_apse_constants(self, big_r, one_minus_big_r, big_lambda) result(c)
         class(power_law), intent(in) :: self
         real(qp), intent(in) :: big_r, one_minus_big_r, big_lambda
-        real(qp) :: c(4), a
+        real(qp) :: c(6), a
         a = self%n - 1.0_qp
-        c = [big_lambda, decay(a, big_lambda), a, exp(-a*big_lambda)]
+        ! R^a (powq) rather than exp(-a Lambda): Lambda's rounding would cost a Lambda eps
+        c = [big_lambda, decay(a, big_lambda), a, big_r**a, big_r, 0.0_qp]
+        if (a*big_lambda > 0.5_qp) c(2) = 1.0_qp - c(4)
     end function power_apse_constants
 
     !> Two expm1 per node (three where a delta < 1/4): exp(-lambda) = 1 + expm1(-lambda),
@@ -340,14 +348,19 @@ contains
     pure subroutine power_arch_terms(self, c, lambda, delta, q, one_minus_q, q_over_v, &
                                      x_over_r)
         class(power_law), intent(in) :: self
-        real(qp), intent(in) :: c(4), lambda, delta
+        real(qp), intent(in) :: c(6), lambda, delta
         real(qp), intent(out) :: q, one_minus_q, q_over_v, x_over_r
         real(qp) :: a, om2, e1, e2, eam1, ea, e_delta, exp_delta
         a = c(3)
-        call exp_pair(lambda, e1, om2)
+        call exp_pair(lambda, delta, c(5), e1, om2)
         e2 = e1*e1
         if (a*lambda > 0.5_qp) then
-            ea = fast_exp(-a*lambda)
+            if (delta < lambda .and. c(4) > 0.0_qp) then
+                ! nearer the start: exp(-a lambda) = R^a exp(a delta), exact arguments
+                ea = c(4)*fast_exp(a*delta)
+            else
+                ea = fast_exp(-a*lambda)
+            end if
             eam1 = ea - 1.0_qp
         else
             eam1 = fast_expm1(-a*lambda)
@@ -377,7 +390,7 @@ contains
 
     pure function power_conserved(self, c) result(k)
         class(power_law), intent(in) :: self
-        real(qp), intent(in) :: c(4)
+        real(qp), intent(in) :: c(6)
         real(qp) :: k
         k = sqrt(0.5_qp*c(3)/c(2))*exp(-(1.0_qp + 0.5_qp*c(3))*c(1))
     end function power_conserved
@@ -390,23 +403,23 @@ contains
                  2.0_qp*acos(-1.0_qp)/max(self%n - 1.0_qp, 1.0e-3_qp)]
     end function power_log_scales
 
-    !> Logarithmic law: [Lambda, 0, 0, 0].
+    !> Logarithmic law: [Lambda, 0, 0, 0, R, 0].
     pure function logarithmic_apse_constants(self, big_r, one_minus_big_r, big_lambda) &
         result(c)
         class(logarithmic_law), intent(in) :: self
         real(qp), intent(in) :: big_r, one_minus_big_r, big_lambda
-        real(qp) :: c(4)
-        c = [big_lambda, 0.0_qp, 0.0_qp, 0.0_qp]
+        real(qp) :: c(6)
+        c = [big_lambda, 0.0_qp, 0.0_qp, 0.0_qp, big_r, 0.0_qp]
     end function logarithmic_apse_constants
 
     !> The power law's terms in the limit a -> 0: E(y)/a -> y, P = 2 delta.
     pure subroutine logarithmic_arch_terms(self, c, lambda, delta, q, one_minus_q, &
                                            q_over_v, x_over_r)
         class(logarithmic_law), intent(in) :: self
-        real(qp), intent(in) :: c(4), lambda, delta
+        real(qp), intent(in) :: c(6), lambda, delta
         real(qp), intent(out) :: q, one_minus_q, q_over_v, x_over_r
         real(qp) :: om2, e1, e2
-        call exp_pair(lambda, e1, om2)
+        call exp_pair(lambda, delta, c(5), e1, om2)
         e2 = e1*e1
         q = e2*delta/c(1)
         one_minus_q = om2 + e2*lambda/c(1)
@@ -423,7 +436,7 @@ contains
 
     pure function logarithmic_conserved(self, c) result(k)
         class(logarithmic_law), intent(in) :: self
-        real(qp), intent(in) :: c(4)
+        real(qp), intent(in) :: c(6)
         real(qp) :: k
         k = exp(-c(1))/sqrt(2.0_qp*c(1))
     end function logarithmic_conserved
@@ -438,7 +451,7 @@ contains
     !> Double precision sqrt(q/(1 - q)) (here through the quad-precision terms).
     pure function default_theta_ratio64(self, c, lambda, delta) result(g)
         class(speed_law), intent(in) :: self
-        real(qp), intent(in) :: c(4)                 !! from apse_constants
+        real(qp), intent(in) :: c(6)                 !! from apse_constants
         real(real64), intent(in) :: lambda, delta    !! offsets from the apse and the start
         real(real64) :: g
         real(qp) :: q, one_minus_q, q_over_v, x_over_r
@@ -449,7 +462,7 @@ contains
 
     pure function power_theta_ratio64(self, c, lambda, delta) result(g)
         class(power_law), intent(in) :: self
-        real(qp), intent(in) :: c(4)
+        real(qp), intent(in) :: c(6)
         real(real64), intent(in) :: lambda, delta
         real(real64) :: g, a, e2, ea, e_big
         a = real(c(3), real64)
@@ -462,7 +475,7 @@ contains
 
     pure function logarithmic_theta_ratio64(self, c, lambda, delta) result(g)
         class(logarithmic_law), intent(in) :: self
-        real(qp), intent(in) :: c(4)
+        real(qp), intent(in) :: c(6)
         real(real64), intent(in) :: lambda, delta
         real(real64) :: g, e2, big
         big = real(c(1), real64)
