@@ -4,13 +4,15 @@
 module test_central_force
     use, intrinsic :: iso_fortran_env, only: output_unit
     use brachistochrone_kinds, only: qp, pi, eps_qp
-    use brachistochrone_status, only: status_ok, status_inaccessible
+    use brachistochrone_status, only: status_ok, status_inaccessible, &
+                                      status_parameter_out_of_range
     use brachistochrone_closed_forms, only: radial_time
     use brachistochrone_speed_laws, only: speed_law, inverse_square_law, power_law, &
-            logarithmic_law, harmonic_law
+            logarithmic_law, harmonic_law, max_power_exponent
     use brachistochrone_central_force, only: central_force_model, new_central_force_model
     use brachistochrone_inverse_square, only: inverse_square_model, new_inverse_square_model
-    use brachistochrone_two_point, only: endpoint_solution, solve_endpoint, arch_inaccessible
+    use brachistochrone_two_point, only: endpoint_solution, solve_endpoint, &
+                                         arch_inaccessible, arch_second
     use testing, only: check, check_close, check_digits, section, digits_of_agreement
     use reference_tables, only: csv_table, read_reference
     implicit none
@@ -27,7 +29,64 @@ contains
         call general_references('power1.5', power_law(n=1.5_qp))
         call general_references('power3', power_law(n=3.0_qp))
         call general_references('logarithmic', logarithmic_law())
+        call general_references('power10', power_law(n=10.0_qp))
+        call to_the_limits()
     end subroutine run_central_force_tests
+
+    !> The ends of the domain: n -> 1 (the logarithmic law is its limit), the largest
+    !! supported exponent, exponents refused beyond it, the logarithmic law up to psi = pi.
+    subroutine to_the_limits()
+        type(central_force_model) :: near_one, logarithm, steep, beyond
+        type(endpoint_solution) :: a, b
+        real(qp), parameter :: fractions(7) = [1.0e-3_qp, 0.01_qp, 0.5_qp, 0.9_qp, &
+                                               0.99_qp, 0.999_qp, 0.9999_qp]
+        real(qp), parameter :: radii(3) = [1.0_qp, 0.5_qp, 0.1_qp]
+        real(qp), parameter :: near_pi(6) = [3.135_qp, 3.137_qp, 3.139_qp, 3.14_qp, &
+                                             3.1415_qp, 3.14159_qp]
+        real(qp) :: worst, psi
+        integer :: i, j, solved
+        call section('central force: to the limits of the exponent and of the sector')
+        near_one = new_central_force_model(power_law(n=1.0_qp + 2.0_qp**(-100)))
+        logarithm = new_central_force_model(logarithmic_law())
+        worst = 99.0_qp
+        do i = 1, 3
+            do j = 1, 4
+                a = near_one%solve(radii(i), fractions(j)*pi)
+                b = logarithm%solve(radii(i), fractions(j)*pi)
+                worst = min(worst, digits_of_agreement(a%apse_radius, b%apse_radius), &
+                            digits_of_agreement(a%arclength, b%arclength), &
+                            digits_of_agreement(a%time, b%time))
+            end do
+        end do
+        write (output_unit, '(a,f6.2)') '   n = 1 + 2^-100 against the logarithmic law, '// &
+            'fewest digits of R, s, t: ', worst
+        ! they differ by O(n - 1) = 8e-31 relative (times the conditioning near pi)
+        call check(worst >= 28.0_qp, 'power law n = 1 + 2^-100 -> logarithmic law')
+        steep = new_central_force_model(power_law(n=max_power_exponent))
+        solved = 0
+        do i = 1, 3
+            do j = 1, size(fractions)
+                a = steep%solve(radii(i), fractions(j)*2.0_qp*pi/(max_power_exponent + 1))
+                if (a%status == status_ok) solved = solved + 1
+            end do
+        end do
+        call check(solved == 3*size(fractions), 'largest supported exponent: every '// &
+                   'endpoint of a grid up to 0.9999 of the sector solved')
+        beyond = new_central_force_model(power_law(n=2.0_qp*max_power_exponent))
+        a = beyond%solve(0.5_qp, 0.01_qp)
+        call check(a%status == status_parameter_out_of_range, &
+                   'exponent beyond max_power_exponent refused with a status')
+        ! logarithmic law up to pi: R-bar down to the binary128 range and below it
+        solved = 0
+        do j = 1, 6
+            psi = near_pi(j)
+            a = logarithm%solve(0.5_qp, psi)
+            if (a%status == status_ok .and. a%arch == arch_second) solved = solved + 1
+        end do
+        call check(solved == 6, 'logarithmic law: psi = 3.135 .. 3.14159 solved')
+        a = logarithm%solve(0.5_qp, pi)
+        call check(a%status == status_inaccessible, 'logarithmic law: psi = pi inaccessible')
+    end subroutine to_the_limits
 
     !> Two-point solutions of the general engine against mpmath on Tee's original
     !! integrals (27), (33), (39) (scripts/make_general_reference.py: bracketed roots, 55

@@ -38,7 +38,8 @@ module brachistochrone_central_force
     use brachistochrone_status, only: status_ok, status_inaccessible, &
                                       status_rho_out_of_range, status_psi_out_of_range, &
                                       status_not_finite, status_outside_domain, &
-                                      status_no_convergence, argument_status
+                                      status_no_convergence, argument_status, &
+                                      status_parameter_out_of_range
     use brachistochrone_quad_math, only: log1p
     use brachistochrone_fast_math, only: inverse_sqrt
     use brachistochrone_quadrature, only: gauss_legendre_rule, gauss_legendre
@@ -63,7 +64,7 @@ module brachistochrone_central_force
     integer, parameter :: kind_apse_root = 1, kind_apse = 2, kind_start = 3, &
                           kind_start_root = 4, kind_both = 5
     !> Most panels for one integral.
-    integer, parameter :: max_panels = 64
+    integer, parameter :: max_panels = 160
     !> Lowest log R searched (R above the smallest normal binary128 number).
     real(qp), parameter :: lowest_log_r = -11355.0_qp
 
@@ -202,7 +203,7 @@ contains
         type(arch_setup), intent(in) :: a
         type(panel), intent(out) :: panels(max_panels)
         integer, intent(out) :: count
-        real(qp) :: b, c, meet, lo, hi
+        real(qp) :: b, c, meet, lo, hi, origin, decay_rate
         type(panel) :: start_side(max_panels)
         integer :: n_start, k
         count = 0
@@ -222,31 +223,39 @@ contains
             call add_split(panels, count, kind_apse_root, 0.0_qp, 1.0_qp, b, &
                            sqrt(a%lambda_r/b), a)
             lo = b
+            ! where the integrated region starts (the apse unless its weight is 0)
+            origin = merge(0.0_qp, a%lambda_r, a%weight_below > 0.0_qp)
+            decay_rate = pi/model%sigma_apse
             do while (lo < meet)
-                hi = min(4.0_qp*lo, meet)
-                if (hi > 0.75_qp*meet) hi = meet
+                ! past exp(-300) of the integrands at the origin: nothing more to add
+                if (decay_rate*(lo - origin) > 300.0_qp) exit
+                ! growth 4, length at most 4 sigma: the integrands decay like
+                ! exp(-pi lambda/sigma_apse), which grows as fast off the real axis
+                hi = min(4.0_qp*lo, lo + 4.0_qp*model%sigma_apse, meet)
+                if (hi > 0.75_qp*meet .and. meet - lo <= 4.0_qp*model%sigma_apse) hi = meet
                 call add_split(panels, count, kind_apse, lo, hi, 1.0_qp, a%lambda_r, a)
                 lo = hi
             end do
             ! start side, in delta, from meet down to the start
             n_start = 0
+            if (decay_rate*(meet - origin) > 300.0_qp) return
             call add_split(start_side, n_start, kind_start_root, 0.0_qp, 1.0_qp, c, &
                            sqrt(a%delta_r/c), a)
             lo = c
             do while (lo < a%big_lambda - meet)
-                hi = min(4.0_qp*lo, a%big_lambda - meet)
-                if (hi > 0.75_qp*(a%big_lambda - meet)) hi = a%big_lambda - meet
+                hi = min(4.0_qp*lo, lo + 4.0_qp*model%sigma_start, a%big_lambda - meet)
+                if (hi > 0.75_qp*(a%big_lambda - meet) .and. &
+                    a%big_lambda - meet - lo <= 4.0_qp*model%sigma_start) &
+                    hi = a%big_lambda - meet
                 call add_split(start_side, n_start, kind_start, lo, hi, 1.0_qp, a%delta_r, a)
                 lo = hi
             end do
             do k = n_start, 1, -1
+                if (count >= max_panels) exit
                 count = count + 1
                 panels(count) = start_side(k)
             end do
         end if
-        do k = 1, count
-            panels(k)%log_rho = bernstein_log(model, a%big_lambda, panels(k))
-        end do
     end subroutine arch_panels
 
     !> Add the panel [lo, hi] of `kind`, split at `split` (in the panel's variable) into
@@ -293,7 +302,7 @@ contains
         real(qp), intent(in) :: big_lambda
         type(panel), intent(in) :: p
         real(real64) :: log_rho
-        complex(real64) :: zeta(6), point, image(4)
+        complex(real64) :: zeta(8), point, image(4)
         real(real64) :: lo, hi, big, sa, ss
         integer :: k, m
         lo = real(p%lo, real64)
@@ -302,15 +311,19 @@ contains
         sa = real(model%sigma_apse, real64)
         ss = real(model%sigma_start, real64)
         ! singular points as offsets from the panel's own end (apse or start)
+        ! (+-2i: not a singularity but the growth of the factors exp(-+lambda),
+        ! exp(-delta) off the real axis, which fewer nodes would not resolve)
         select case (p%kind)
         case (kind_apse_root, kind_apse, kind_both)
             zeta = [(0.0_real64, 0.0_real64), cmplx(0.0_real64, sa, real64), &
                     cmplx(0.0_real64, -sa, real64), cmplx(big, 0.0_real64, real64), &
-                    cmplx(big, ss, real64), cmplx(big, -ss, real64)]
+                    cmplx(big, ss, real64), cmplx(big, -ss, real64), &
+                    (0.0_real64, 2.0_real64), (0.0_real64, -2.0_real64)]
         case default
             zeta = [(0.0_real64, 0.0_real64), cmplx(0.0_real64, ss, real64), &
                     cmplx(0.0_real64, -ss, real64), cmplx(big, 0.0_real64, real64), &
-                    cmplx(big, sa, real64), cmplx(big, -sa, real64)]
+                    cmplx(big, sa, real64), cmplx(big, -sa, real64), &
+                    (0.0_real64, 2.0_real64), (0.0_real64, -2.0_real64)]
         end select
         log_rho = huge(1.0_real64)
         do k = 1, size(zeta)
@@ -346,20 +359,46 @@ contains
         end function bernstein
     end function bernstein_log
 
-    !> The rule (element of model%gauss) for `digits` digits on a panel.
-    pure function rule_for(log_rho, digits) result(j)
+    !> The rule (element of model%gauss) for `digits` digits on a panel. An n-point
+    !! rule errs by about M rho^(-2n) on the Bernstein ellipse rho (up to the nearest
+    !! singularity, log_rho); the integrands decay like exp(-kappa tau) along the panel,
+    !! so M grows like exp(kappa h ((rho + 1/rho)/2 - 1)) on an ellipse about a plain
+    !! panel of half-length h (growth = kappa h): the smallest n over a few rho <= the
+    !! singular one is taken.
+    pure function rule_for(log_rho, digits, growth) result(j)
         real(real64), intent(in) :: log_rho
         real(qp), intent(in) :: digits
-        integer :: j, n
-        real(real64) :: need
-        need = real(max(digits, 2.0_qp), real64)*log(10.0_real64)/(2.0_real64*0.85_real64*log_rho)
-        if (need > real(max_nodes, real64)) then
+        real(real64), intent(in) :: growth
+        integer :: j, n, k
+        real(real64) :: need, best, lr, target
+        real(real64), parameter :: fractions(8) = [1.0_real64, 0.7_real64, 0.5_real64, &
+            0.35_real64, 0.25_real64, 0.18_real64, 0.12_real64, 0.08_real64]
+        target = real(max(digits, 2.0_qp), real64)*log(10.0_real64)
+        best = huge(1.0_real64)
+        do k = 1, size(fractions)
+            lr = log_rho*fractions(k)
+            need = (target + growth*(cosh(lr) - 1.0_real64))/(2.0_real64*0.85_real64*lr)
+            best = min(best, need)
+        end do
+        if (best > real(max_nodes, real64)) then
             j = max_nodes/2
         else
-            n = ceiling(need) + 2
+            n = ceiling(best) + 2
             j = min(max_nodes/2, max(min_nodes/2, (n + 1)/2))
         end if
     end function rule_for
+
+    !> kappa h of a plain panel (0 for the root panels), kappa the decay rate.
+    pure function panel_growth(p, kappa) result(growth)
+        type(panel), intent(in) :: p
+        real(qp), intent(in) :: kappa
+        real(real64) :: growth
+        if (p%kind == kind_apse .or. p%kind == kind_start) then
+            growth = real(kappa*0.5_qp*(p%hi - p%lo), real64)
+        else
+            growth = 0.0_real64
+        end if
+    end function panel_growth
 
     !> lambda, delta and d lambda/dv at the panel variable v.
     elemental subroutine node_point(kind, scale, big_lambda, v, lambda, delta, jacobian)
@@ -409,6 +448,7 @@ contains
         sums = 0.0_qp
         last = 0.0_qp
         do p = 1, count
+            panels(p)%log_rho = bernstein_log(model, a%big_lambda, panels(p))
             associate (pan => panels(p))
             share = 1.0_qp
             if (p > 1) then
@@ -421,7 +461,8 @@ contains
                 end do
                 if (share < negligible) exit
             end if
-            j = rule_for(pan%log_rho, digits + min(0.0_qp, log10(max(share, 1.0e-60_qp))))
+            j = rule_for(pan%log_rho, digits + min(0.0_qp, log10(max(share, 1.0e-60_qp))), &
+                         panel_growth(pan, 2.0_qp*pi/model%sigma_apse))
             part = 0.0_qp
             do k = 1, model%gauss(j)%n
                 v = pan%lo + (pan%hi - pan%lo)*model%gauss(j)%offset(k)
@@ -476,6 +517,7 @@ contains
         last = 0.0_real64
         big = real(a%big_lambda, real64)
         do p = 1, count
+            panels(p)%log_rho = bernstein_log(model, a%big_lambda, panels(p))
             associate (pan => panels(p))
             share = 1.0_real64
             if (p > 1 .and. theta > 0.0_real64) then
@@ -483,7 +525,8 @@ contains
                 if (share < 1.0e-20_real64) exit
             end if
             j = rule_for(pan%log_rho, coarse_digits + &
-                         real(min(0.0_real64, log10(max(share, 1.0e-30_real64))), qp))
+                         real(min(0.0_real64, log10(max(share, 1.0e-30_real64))), qp), &
+                         panel_growth(pan, 2.0_qp*pi/model%sigma_apse))
             scale = real(pan%scale, real64)
             part = 0.0_real64
             do k = 1, model%gauss(j)%n
@@ -545,7 +588,9 @@ contains
             min(1.0_qp, sqrt(delta_hi/c)), c, sqrt(delta_lo/c), a)
         lo = c
         do while (lo < delta_hi .and. count < max_panels - 2)
-            hi = min(4.0_qp*lo, delta_hi)
+            ! x/v decays like exp(-(1 + pi/sigma_start) delta): stop at exp(-300)
+            if ((1.0_qp + pi/model%sigma_start)*(lo - delta_lo) > 300.0_qp) exit
+            hi = min(4.0_qp*lo, lo + 4.0_qp*model%sigma_start, delta_hi)
             if (hi > delta_lo) call add_split(panels, count, kind_start, lo, hi, 1.0_qp, &
                                               delta_lo, a)
             lo = hi
@@ -553,7 +598,7 @@ contains
         last = 0.0_qp
         do p = 1, count
             ! singularities: delta = 0 and +-i sigma_start (x = 0 is at infinity)
-            panels(p)%log_rho = bernstein_log(model, huge(1.0_qp)**0.25_qp, panels(p))
+            panels(p)%log_rho = bernstein_log(model, 1.0e30_qp, panels(p))
             associate (pan => panels(p))
             share = 1.0_qp
             if (p > 1 .and. total > 0.0_qp) then
@@ -561,7 +606,8 @@ contains
                 if (share < negligible) exit
             end if
             j = rule_for(pan%log_rho, fine_digits + &
-                         min(0.0_qp, log10(max(share, 1.0e-60_qp))))
+                         min(0.0_qp, log10(max(share, 1.0e-60_qp))), &
+                         panel_growth(pan, 1.0_qp + pi/model%sigma_start))
             part = 0.0_qp
             do k = 1, model%gauss(j)%n
                 v = pan%lo + (pan%hi - pan%lo)*model%gauss(j)%offset(k)
@@ -846,10 +892,42 @@ contains
         f = angle - prob%psi
     end subroutine evaluate_full
 
+    !> The solution when R-bar is below the smallest binary128 number: R-bar = 0 and the
+    !! limits s = (1 - rho) + 2 rho [second half-arch] and t = 2 t0(0) - t0(rho) (first
+    !! half-arch: s = 1 - rho, t = t0(rho)).
+    pure subroutine below_range(model, prob, solution)
+        type(central_force_model), intent(in) :: model
+        type(endpoint_problem), intent(in) :: prob
+        type(endpoint_solution), intent(inout) :: solution
+        real(qp) :: fall_rho, fall_0
+        integer :: status
+        call model%fall_time(prob%rho, fall_rho, status)
+        if (prob%second) then
+            call model%fall_time(0.0_qp, fall_0, status)
+            solution%arclength = prob%one_minus_rho + 2.0_qp*prob%rho
+            solution%time = 2.0_qp*fall_0 - fall_rho
+        else
+            solution%arclength = prob%one_minus_rho
+            solution%time = fall_rho
+        end if
+        solution%apse_radius = 0.0_qp
+        solution%apse_gap = prob%rho
+        solution%has_apse_radius = .true.
+        solution%has_arclength = .true.
+        solution%has_time = .true.
+        solution%status = status_ok
+    end subroutine below_range
+
     !> The two-point problem for this law: the brachistochrone from A = (1, 0) to
     !! B = (rho, psi) (see the module comment). psi >= 2 lim Theta(R,R) is the sector of
     !! inaccessibility; t is then its greatest lower bound 2 t0(0) - t0(rho), attained
     !! (arch 'radial', through O) where the law lets a particle pass the centre.
+    !! Statuses: status_ok; status_inaccessible; status_not_finite,
+    !! status_rho_out_of_range, status_psi_out_of_range (bad endpoint);
+    !! status_parameter_out_of_range (law outside its range, `speed_law%valid`);
+    !! status_no_convergence (not seen on accessible endpoints; reported, not hidden).
+    !! R-bar below the binary128 range (logarithmic law, psi within about 1e-4 of pi) is
+    !! returned as 0 with s and t at their limits (`below_range`).
     pure function general_solve(self, rho, psi) result(solution)
         class(central_force_model), intent(in) :: self
         real(qp), intent(in) :: rho   !! endpoint radius, 0 < rho <= 1
@@ -871,6 +949,10 @@ contains
             return
         else if (psi < 0.0_qp .or. psi > pi) then
             solution%status = status_psi_out_of_range
+            return
+        else if (.not. self%law%valid()) then
+            ! e.g. a power law beyond max_power_exponent
+            solution%status = status_parameter_out_of_range
             return
         end if
         limit = self%law%apse_angle_limit()
@@ -952,8 +1034,10 @@ contains
                 if (f_lo < 0.0_real64 .or. lo == lowest_log_r) exit
             end do
             if (.not. f_lo < 0.0_real64) then
-                ! R-bar is below the binary128 range
-                solution%status = status_outside_domain
+                ! R-bar is below the binary128 range (the logarithmic law next to psi = pi):
+                ! R-bar underflows to 0, and s, t equal their limits R -> 0 to far more
+                ! than 34 digits (they differ from them by O(R) < 1e-4900)
+                call below_range(self, prob, solution)
                 return
             end if
         else

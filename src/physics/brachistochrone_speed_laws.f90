@@ -29,6 +29,14 @@ module brachistochrone_speed_laws
     private
 
     public :: speed_law, inverse_square_law, power_law, logarithmic_law, harmonic_law
+    public :: max_power_exponent
+
+    !> Largest force exponent n of `power_law` the general engine accepts (checked against
+    !! mpmath at n = 1.5, 3, 10 and converging on a grid up to n = 32; from n of about 100
+    !! the integrands' exp(-(n+1) lambda/2) decay outgrows its panel layout next to the
+    !! edge of the accessible region). Any n > 1 is accepted below it, n = 1 + 2^-100
+    !! included (it agrees with the logarithmic law to O(n - 1)).
+    real(qp), parameter :: max_power_exponent = 32.0_qp
 
     !> A speed law: v^2 and its divided difference. Attractive laws here: v > 0 for
     !! 0 < r < 1, v(1) = 0.
@@ -38,6 +46,7 @@ module brachistochrone_speed_laws
         procedure(pair_law), deferred :: divided_difference !! (P(x) - P(y))/(x - y)
         procedure(limit_law), deferred :: apse_angle_limit !! lim Theta(R,R), R -> 0
         procedure :: passes_centre => no_centre_passage  !! v(0) finite
+        procedure :: valid => default_valid  !! parameters inside the supported range
         procedure :: apse_constants => default_apse_constants !! per-apse data for arch_terms
         procedure :: arch_terms => default_arch_terms     !! q, 1 - q, q/v at a node
         !> sqrt(q/(1 - q)) in double precision, for the solver's early phase
@@ -90,6 +99,7 @@ module brachistochrone_speed_laws
         procedure :: inverse_speed => power_inverse_speed
         procedure :: conserved => power_conserved
         procedure :: log_scales => power_log_scales
+        procedure :: valid => power_valid
     end type power_law
 
     !> Logarithmic potential (F = 1/r, the power law n = 1): v^2 = -2 log x.
@@ -124,6 +134,18 @@ contains
         class(speed_law), intent(in) :: self
         no_centre_passage = .false.
     end function no_centre_passage
+
+    !> Parameters inside the supported range (no parameters: always).
+    pure logical function default_valid(self)
+        class(speed_law), intent(in) :: self
+        default_valid = .true.
+    end function default_valid
+
+    !> 1 < n <= max_power_exponent.
+    pure logical function power_valid(self)
+        class(power_law), intent(in) :: self
+        power_valid = self%n > 1.0_qp .and. self%n <= max_power_exponent
+    end function power_valid
 
     pure logical function harmonic_passes_centre(self)
         class(harmonic_law), intent(in) :: self
