@@ -124,6 +124,11 @@ module brachistochrone_speed_laws
         procedure :: apse_angle_limit => harmonic_limit
         procedure :: passes_centre => harmonic_passes_centre
         procedure :: log_scales => harmonic_log_scales
+        procedure :: apse_constants => harmonic_apse_constants
+        procedure :: arch_terms => harmonic_arch_terms
+        procedure :: theta_ratio64 => harmonic_theta_ratio64
+        procedure :: inverse_speed => harmonic_inverse_speed
+        procedure :: conserved => harmonic_conserved
     end type harmonic_law
 
 contains
@@ -517,5 +522,53 @@ contains
             e = exp(y) - 1.0_real64
         end if
     end function expm1_64
+
+    !> Harmonic law: [Lambda, 1 - R^2, 0, 0, R, 0].
+    pure function harmonic_apse_constants(self, big_r, one_minus_big_r, big_lambda) &
+        result(c)
+        class(harmonic_law), intent(in) :: self
+        real(qp), intent(in) :: big_r, one_minus_big_r, big_lambda
+        real(qp) :: c(6)
+        c = [big_lambda, one_minus_big_r*(1.0_qp + big_r), 0.0_qp, 0.0_qp, big_r, 0.0_qp]
+    end function harmonic_apse_constants
+
+    !> P = 1 - x^2: q = exp(-2 lambda) (1 - x^2)/(1 - R^2), 1 - q = (1 - exp(-2 lambda))/
+    !! (1 - R^2), q/v = q/sqrt(1 - x^2).
+    pure subroutine harmonic_arch_terms(self, c, lambda, delta, q, one_minus_q, q_over_v, &
+                                        x_over_r)
+        class(harmonic_law), intent(in) :: self
+        real(qp), intent(in) :: c(6), lambda, delta
+        real(qp), intent(out) :: q, one_minus_q, q_over_v, x_over_r
+        real(qp) :: e1, om2, p_x
+        call exp_pair(lambda, delta, c(5), e1, om2)
+        p_x = -fast_expm1(-2.0_qp*delta)
+        q = e1*e1*p_x/c(2)
+        one_minus_q = om2/c(2)
+        q_over_v = q/sqrt(p_x)
+        x_over_r = 1.0_qp/e1
+    end subroutine harmonic_arch_terms
+
+    pure function harmonic_theta_ratio64(self, c, lambda, delta) result(g)
+        class(harmonic_law), intent(in) :: self
+        real(qp), intent(in) :: c(6)
+        real(real64), intent(in) :: lambda, delta
+        real(real64) :: g
+        g = sqrt(exp(-2.0_real64*lambda)*(-expm1_64(-2.0_real64*delta)) &
+                 /(-expm1_64(-2.0_real64*lambda)))
+    end function harmonic_theta_ratio64
+
+    pure function harmonic_inverse_speed(self, delta) result(w)
+        class(harmonic_law), intent(in) :: self
+        real(qp), intent(in) :: delta
+        real(qp) :: w
+        w = 1.0_qp/sqrt(-fast_expm1(-2.0_qp*delta))
+    end function harmonic_inverse_speed
+
+    pure function harmonic_conserved(self, c) result(k)
+        class(harmonic_law), intent(in) :: self
+        real(qp), intent(in) :: c(6)
+        real(qp) :: k
+        k = c(5)/sqrt(c(2))
+    end function harmonic_conserved
 
 end module brachistochrone_speed_laws
