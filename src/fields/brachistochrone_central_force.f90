@@ -56,7 +56,7 @@ module brachistochrone_central_force
     !> Fewest and most Gauss nodes on one panel (even counts only).
     integer, parameter :: min_nodes = 4, max_nodes = 80
     !> Digits aimed at by the full and the double-precision rules.
-    real(qp), parameter :: fine_digits = 37.0_qp, coarse_digits = 17.0_qp
+    real(qp), parameter :: fine_digits = 36.0_qp, coarse_digits = 17.0_qp
     !> A panel whose bound is below this share of the running sum is skipped.
     real(qp), parameter :: negligible = 1.0e-40_qp
     !> Panel kinds: lambda = b s^2 (from the apse), lambda, delta, delta = c s^2 (from
@@ -377,7 +377,7 @@ contains
         best = huge(1.0_real64)
         do k = 1, size(fractions)
             lr = log_rho*fractions(k)
-            need = (target + growth*(cosh(lr) - 1.0_real64))/(2.0_real64*0.85_real64*lr)
+            need = (target + growth*(cosh(lr) - 1.0_real64))/(2.0_real64*0.95_real64*lr)
             best = min(best, need)
         end do
         if (best > real(max_nodes, real64)) then
