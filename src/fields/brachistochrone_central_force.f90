@@ -15,15 +15,18 @@
 !!
 !! Quadrature: fixed Gauss-Legendre rules on panels chosen once per R. The integrands
 !! have square-root end singularities at the apse (lambda = 0) and at the start
-!! (delta = 0), removed by lambda = b s^2, delta = c s^2 on the end panels (or
-!! lambda = Lambda sin^2(mu/2) on one panel when Lambda is small), and complex
-!! singularities at distance sigma_apse, sigma_start from the ends (`log_scales`); the
-!! point x = 0 is at lambda = -infinity. Between the end panels the panels grow
-!! geometrically (ratio 4) away from both ends, so the count is O(log log(1/R)), and the
+!! (delta = 0), removed by lambda = b s^2, delta = c s^2 on the end panels (two such
+!! panels meeting in between when Lambda is small), and complex singularities at
+!! distance sigma_apse, sigma_start from the ends (`log_scales`); the point x = 0 is at
+!! lambda = -infinity. Between the end panels the panels grow geometrically (ratio 4,
+!! length at most 4 sigma) away from both ends, so the count is O(log log(1/R)), and the
 !! node count of each panel comes from the Bernstein ellipse through the nearest
-!! singularity (as on the inverse-square fast path). Away from the apse the integrands
-!! decay like exp(-(n+1) lambda/2) or faster: each panel is asked only for the digits
-!! its share of the running sum needs, and panels below 1e-40 of it are skipped.
+!! singularity (as on the inverse-square fast path) and the growth of the integrands off
+!! the real axis (`rule_for`). Away from the apse the integrands decay like
+!! exp(-(n+1) lambda/2) or faster: each panel is asked only for the digits its share of
+!! the running sum needs, and panels below 1e-40 of it are skipped. Transcendentals:
+!! two fast exp/expm1 per node (`brachistochrone_fast_exp`), square roots by a double
+!! seed and Newton steps.
 !!
 !! Two-point problem: the root R-bar of Upsilon(R) = psi, in the unknown u = sqrt(rho - R)
 !! for R in [rho/2, rho] (R-bar and rho - R-bar exact next to the apse) or y = log R
@@ -37,7 +40,7 @@ module brachistochrone_central_force
     use brachistochrone_kinds, only: qp, pi, eps_qp
     use brachistochrone_status, only: status_ok, status_inaccessible, &
                                       status_rho_out_of_range, status_psi_out_of_range, &
-                                      status_not_finite, status_outside_domain, &
+                                      status_not_finite, &
                                       status_no_convergence, argument_status, &
                                       status_parameter_out_of_range
     use brachistochrone_quad_math, only: log1p
@@ -60,9 +63,9 @@ module brachistochrone_central_force
     !> A panel whose bound is below this share of the running sum is skipped.
     real(qp), parameter :: negligible = 1.0e-40_qp
     !> Panel kinds: lambda = b s^2 (from the apse), lambda, delta, delta = c s^2 (from
-    !! the start), lambda = Lambda sin^2(mu/2) (both ends).
+    !! the start).
     integer, parameter :: kind_apse_root = 1, kind_apse = 2, kind_start = 3, &
-                          kind_start_root = 4, kind_both = 5
+                          kind_start_root = 4
     !> Most panels for one integral.
     integer, parameter :: max_panels = 160
     !> Lowest log R searched (R above the smallest normal binary128 number).
@@ -314,7 +317,7 @@ contains
         ! (+-2i: not a singularity but the growth of the factors exp(-+lambda),
         ! exp(-delta) off the real axis, which fewer nodes would not resolve)
         select case (p%kind)
-        case (kind_apse_root, kind_apse, kind_both)
+        case (kind_apse_root, kind_apse)
             zeta = [(0.0_real64, 0.0_real64), cmplx(0.0_real64, sa, real64), &
                     cmplx(0.0_real64, -sa, real64), cmplx(big, 0.0_real64, real64), &
                     cmplx(big, ss, real64), cmplx(big, -ss, real64), &
@@ -327,23 +330,13 @@ contains
         end select
         log_rho = huge(1.0_real64)
         do k = 1, size(zeta)
-            select case (p%kind)
-            case (kind_apse, kind_start)
-                if (k == 1 .or. k == 4) then
-                    image = zeta(k)
-                else
-                    image = zeta(k)
-                end if
-            case (kind_apse_root, kind_start_root)
+            if (p%kind == kind_apse .or. p%kind == kind_start) then
+                image = zeta(k)
+            else
                 if (k == 1) cycle    ! removed by the substitution
                 point = sqrt(zeta(k)/real(p%scale, real64))
                 image = [point, -point, point, -point]
-            case default
-                if (k == 1 .or. k == 4) cycle
-                point = 2.0_real64*asin(sqrt(zeta(k)/big))
-                image = [point, -point, 2.0_real64*acos(-1.0_real64) - point, &
-                         -2.0_real64*acos(-1.0_real64) + point]
-            end select
+            end if
             do m = 1, 4
                 log_rho = min(log_rho, log(bernstein((2.0_real64*image(m) - (lo + hi)) &
                                                      /(hi - lo))))
@@ -405,7 +398,6 @@ contains
         integer, intent(in) :: kind
         real(qp), intent(in) :: scale, big_lambda, v
         real(qp), intent(out) :: lambda, delta, jacobian
-        real(qp) :: sh, ch
         select case (kind)
         case (kind_apse_root)
             lambda = scale*v*v
@@ -419,16 +411,10 @@ contains
             delta = v
             lambda = big_lambda - v
             jacobian = 1.0_qp
-        case (kind_start_root)
+        case default
             delta = scale*v*v
             lambda = big_lambda - delta
             jacobian = 2.0_qp*scale*v
-        case default
-            sh = sin(0.5_qp*v)
-            ch = cos(0.5_qp*v)
-            lambda = scale*sh*sh
-            delta = scale*ch*ch
-            jacobian = scale*sh*ch
         end select
     end subroutine node_point
 
@@ -497,8 +483,6 @@ contains
         select case (p%kind)
         case (kind_apse_root, kind_start_root)
             length = p%scale*(p%hi**2 - p%lo**2)
-        case (kind_both)
-            length = p%scale
         case default
             length = p%hi - p%lo
         end select
@@ -510,7 +494,7 @@ contains
         type(arch_setup), intent(in) :: a
         real(real64) :: theta
         type(panel) :: panels(max_panels)
-        real(real64) :: part, last, v, lambda, delta, jacobian, sh, ch, g, big, scale, share
+        real(real64) :: part, last, v, lambda, delta, jacobian, g, big, scale, share
         integer :: count, p, k, j
         call arch_panels(model, a, panels, count)
         theta = 0.0_real64
@@ -545,16 +529,10 @@ contains
                     delta = v
                     lambda = big - v
                     jacobian = 1.0_real64
-                case (kind_start_root)
+                case default
                     delta = scale*v*v
                     lambda = big - delta
                     jacobian = 2.0_real64*scale*v
-                case default
-                    sh = sin(0.5_real64*v)
-                    ch = cos(0.5_real64*v)
-                    lambda = scale*sh*sh
-                    delta = scale*ch*ch
-                    jacobian = scale*sh*ch
                 end select
                 g = model%law%theta_ratio64(a%c, lambda, delta)
                 part = part + model%gauss(j)%weight64(k)*g*jacobian
