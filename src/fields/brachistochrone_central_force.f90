@@ -45,6 +45,7 @@ module brachistochrone_central_force
                                       status_parameter_out_of_range
     use brachistochrone_quad_math, only: log1p
     use brachistochrone_fast_math, only: inverse_sqrt
+    use brachistochrone_fast_exp, only: fast_exp
     use brachistochrone_quadrature, only: gauss_legendre_rule, gauss_legendre
     use brachistochrone_speed_laws, only: speed_law
     use brachistochrone_two_point, only: endpoint_solution, arch_first, arch_second, &
@@ -590,7 +591,7 @@ contains
             do k = 1, model%gauss(j)%n
                 v = pan%lo + (pan%hi - pan%lo)*model%gauss(j)%offset(k)
                 call node_point(pan%kind, pan%scale, 0.0_qp, v, lambda, delta, jacobian)
-                g = model%law%inverse_speed(delta)*exp(-delta)
+                g = model%law%inverse_speed(delta)*fast_exp(-delta)
                 part = part + model%gauss(j)%weight(k)*g*jacobian
                 if (k == model%gauss(j)%n) last = g
             end do

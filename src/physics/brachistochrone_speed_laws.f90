@@ -412,7 +412,7 @@ contains
         real(qp), intent(in) :: delta
         real(qp) :: w, a
         a = self%n - 1.0_qp
-        w = sqrt(0.5_qp*a/decay(a, delta))*exp(-0.5_qp*a*delta)
+        w = sqrt(0.5_qp*a/decay(a, delta))*fast_exp(-0.5_qp*a*delta)
     end function power_inverse_speed
 
     pure function power_conserved(self, c) result(k)
