@@ -489,11 +489,14 @@ contains
         end select
     end function panel_length
 
-    !> Theta (weighted as in `a`) in double precision, 17-digit rules.
-    pure function theta64(model, a) result(theta)
+    !> Theta (weighted as in `a`) in double precision, 17-digit rules, as
+    !! theta exp(-shift): the integrand is scaled by exp(kappa lambda_0) at the start
+    !! lambda_0 of the weighted region (kappa = pi/sigma_apse, its decay rate), so that
+    !! Theta ~ R^((n+1)/2) stays in range for every R-bar of binary128.
+    pure subroutine theta64(model, a, theta, shift)
         type(central_force_model), intent(in) :: model
         type(arch_setup), intent(in) :: a
-        real(real64) :: theta
+        real(real64), intent(out) :: theta, shift
         type(panel) :: panels(max_panels)
         real(real64) :: part, last, v, lambda, delta, jacobian, g, big, scale, share
         integer :: count, p, k, j
@@ -501,6 +504,8 @@ contains
         theta = 0.0_real64
         last = 0.0_real64
         big = real(a%big_lambda, real64)
+        shift = 0.0_real64
+        if (a%weight_below == 0.0_qp) shift = real(pi/model%sigma_apse*a%lambda_r, real64)
         do p = 1, count
             panels(p)%log_rho = bernstein_log(model, a%big_lambda, panels(p))
             associate (pan => panels(p))
@@ -535,7 +540,7 @@ contains
                     lambda = big - delta
                     jacobian = 2.0_real64*scale*v
                 end select
-                g = model%law%theta_ratio64(a%c, lambda, delta)
+                g = model%law%theta_ratio64(a%c, lambda, delta, shift)
                 part = part + model%gauss(j)%weight64(k)*g*jacobian
                 if (k == merge(1, model%gauss(j)%n, pan%kind >= kind_start .and. &
                                pan%kind <= kind_start_root)) last = g
@@ -543,7 +548,7 @@ contains
             theta = theta + real(pan%weight, real64)*real(pan%hi - pan%lo, real64)*part
             end associate
         end do
-    end function theta64
+    end subroutine theta64
 
     !> A piece of the radial fall time, int x/v(x) d delta over [delta_lo, delta_hi]
     !! (x = exp(-delta)): t0(r) = piece(0, -log r), t0(R) - t0(r) = piece(-log r, Lambda).
@@ -715,13 +720,15 @@ contains
         type(central_force_model), intent(in) :: model
         type(endpoint_problem), intent(in) :: prob
         real(qp), intent(in) :: x
-        real(real64) :: f, upsilon, psi, limit
-        upsilon = theta64(model, setup_at(model, prob, x))
+        real(real64) :: f, upsilon, psi, limit, scaled, shift
+        call theta64(model, setup_at(model, prob, x), scaled, shift)
+        upsilon = scaled*exp(-shift)
         psi = real(prob%psi, real64)
         limit = real(prob%limit, real64)
         select case (prob%form)
         case (1)
-            f = log(max(upsilon, tiny(1.0_real64))/psi)
+            ! log(Upsilon/psi) without forming Upsilon or psi (both may underflow double)
+            f = log(max(scaled, tiny(1.0_real64))) - shift - real(log(prob%psi), real64)
         case (2)
             f = log(max(limit - upsilon, tiny(1.0_real64))/(limit - psi))
         case default
@@ -915,7 +922,7 @@ contains
         type(endpoint_problem) :: prob
         type(arch_setup) :: a
         real(qp) :: limit, apse_angle_rho, half, x, lo, hi, sums(3), fall_rho, fall_0
-        real(real64) :: f_half, f_lo, f_hi, slope, theta_half
+        real(real64) :: f_half, f_lo, f_hi, slope, theta_half, scaled, shift
         integer :: status, probe
 
         solution%rho = rho
@@ -970,7 +977,8 @@ contains
         if (rho < 1.0_qp) then
             a = setup_arch(self, rho, prob%one_minus_rho, 0.0_qp, prob%delta_rho, &
                            .false., .true.)
-            apse_angle_rho = real(theta64(self, a), qp)
+            call theta64(self, a, scaled, shift)
+            apse_angle_rho = real(scaled, qp)*exp(-real(shift, qp))
             if (abs(apse_angle_rho - psi) <= 1.0e-12_qp*psi) then
                 sums = arch_integrals(self, a, fine_digits, .false.)
                 apse_angle_rho = sums(1)
@@ -996,7 +1004,8 @@ contains
         ! which part of (0, rho] holds the root: Upsilon at R = rho/2
         half = 0.5_qp*rho
         prob%use_u = .true.
-        theta_half = theta64(self, setup_at(self, prob, sqrt(rho - half)))
+        call theta64(self, setup_at(self, prob, sqrt(rho - half)), scaled, shift)
+        theta_half = scaled*exp(-shift)
         f_half = theta_half - real(psi, real64)
         solution%steps = 1
         if ((f_half >= 0.0_real64) .neqv. prob%second) then

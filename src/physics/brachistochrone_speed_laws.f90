@@ -49,7 +49,7 @@ module brachistochrone_speed_laws
         procedure :: valid => default_valid  !! parameters inside the supported range
         procedure :: apse_constants => default_apse_constants !! per-apse data for arch_terms
         procedure :: arch_terms => default_arch_terms     !! q, 1 - q, q/v at a node
-        !> sqrt(q/(1 - q)) in double precision, for the solver's early phase
+        !> sqrt(q/(1 - q)) exp(shift) in double precision, for the solver's early phase
         procedure :: theta_ratio64 => default_theta_ratio64
         procedure :: inverse_speed => default_inverse_speed !! 1/v(x) at x = exp(-delta)
         procedure :: conserved => default_conserved       !! K = R/v(R) (eq. 25)
@@ -358,7 +358,7 @@ contains
         e = -fast_expm1(-a*y)
     end function decay
 
-    !> Power law: [Lambda, E(Lambda), a, exp(-a Lambda), R, 0].
+    !> Power law: [Lambda, E(Lambda), a, R^a = exp(-a Lambda), R, 1/E(Lambda)].
     pure function power_apse_constants(self, big_r, one_minus_big_r, big_lambda) result(c)
         class(power_law), intent(in) :: self
         real(qp), intent(in) :: big_r, one_minus_big_r, big_lambda
@@ -367,6 +367,7 @@ contains
         ! R^a (powq) rather than exp(-a Lambda): Lambda's rounding would cost a Lambda eps
         c = [big_lambda, decay(a, big_lambda), a, big_r**a, big_r, 0.0_qp]
         if (a*big_lambda > 0.5_qp) c(2) = 1.0_qp - c(4)
+        c(6) = 1.0_qp/c(2)
     end function power_apse_constants
 
     !> Two expm1 per node (three where a delta < 1/4): exp(-lambda) = 1 + expm1(-lambda),
@@ -400,9 +401,9 @@ contains
             e_delta = decay(a, delta)
             exp_delta = 1.0_qp - e_delta
         end if
-        q = e2*ea*e_delta/c(2)
-        one_minus_q = om2 + e2*(-eam1)/c(2)
-        q_over_v = sqrt(0.5_qp*a*e_delta*exp_delta)/c(2)*(e2*ea)
+        q = e2*ea*e_delta*c(6)
+        one_minus_q = om2 + e2*(-eam1)*c(6)
+        q_over_v = sqrt(0.5_qp*a*e_delta*exp_delta)*c(6)*(e2*ea)
         x_over_r = 1.0_qp/e1
     end subroutine power_arch_terms
 
@@ -475,39 +476,42 @@ contains
         sigma = [acos(-1.0_qp), 1.0e3_qp]
     end function logarithmic_log_scales
 
-    !> Double precision sqrt(q/(1 - q)) (here through the quad-precision terms).
-    pure function default_theta_ratio64(self, c, lambda, delta) result(g)
+    !> Double precision sqrt(q/(1 - q)) exp(shift) (here through the quad-precision
+    !! terms). The shift keeps the values in range: q ~ R^(n+1) underflows double
+    !! precision long before binary128 (the early phase of tiny R-bar).
+    pure function default_theta_ratio64(self, c, lambda, delta, shift) result(g)
         class(speed_law), intent(in) :: self
         real(qp), intent(in) :: c(6)                 !! from apse_constants
         real(real64), intent(in) :: lambda, delta    !! offsets from the apse and the start
+        real(real64), intent(in) :: shift            !! log of the scale factor
         real(real64) :: g
         real(qp) :: q, one_minus_q, q_over_v, x_over_r
         call self%arch_terms(c, real(lambda, qp), real(delta, qp), q, one_minus_q, &
                              q_over_v, x_over_r)
-        g = real(sqrt(q/one_minus_q), real64)
+        g = real(sqrt(q/one_minus_q)*exp(real(shift, qp)), real64)
     end function default_theta_ratio64
 
-    pure function power_theta_ratio64(self, c, lambda, delta) result(g)
+    pure function power_theta_ratio64(self, c, lambda, delta, shift) result(g)
         class(power_law), intent(in) :: self
         real(qp), intent(in) :: c(6)
-        real(real64), intent(in) :: lambda, delta
-        real(real64) :: g, a, e2, ea, e_big
+        real(real64), intent(in) :: lambda, delta, shift
+        real(real64) :: g, a, e2, e_big
         a = real(c(3), real64)
         e_big = real(c(2), real64)
         e2 = exp(-2.0_real64*lambda)
-        ea = exp(-a*lambda)
-        g = sqrt(e2*ea*(-expm1_64(-a*delta))/(-expm1_64(-2.0_real64*lambda)*e_big &
-                                               + e2*(-expm1_64(-a*lambda))))
+        g = sqrt((-expm1_64(-a*delta))/(-expm1_64(-2.0_real64*lambda)*e_big &
+                                         + e2*(-expm1_64(-a*lambda)))) &
+            *exp(shift - 0.5_real64*(a + 2.0_real64)*lambda)
     end function power_theta_ratio64
 
-    pure function logarithmic_theta_ratio64(self, c, lambda, delta) result(g)
+    pure function logarithmic_theta_ratio64(self, c, lambda, delta, shift) result(g)
         class(logarithmic_law), intent(in) :: self
         real(qp), intent(in) :: c(6)
-        real(real64), intent(in) :: lambda, delta
+        real(real64), intent(in) :: lambda, delta, shift
         real(real64) :: g, e2, big
         big = real(c(1), real64)
         e2 = exp(-2.0_real64*lambda)
-        g = sqrt(e2*delta/(-expm1_64(-2.0_real64*lambda)*big + e2*lambda))
+        g = sqrt(delta/(-expm1_64(-2.0_real64*lambda)*big + e2*lambda))*exp(shift - lambda)
     end function logarithmic_theta_ratio64
 
     !> expm1 in double precision (a series below 1e-5, where exp(y) - 1 cancels).
@@ -548,13 +552,13 @@ contains
         x_over_r = 1.0_qp/e1
     end subroutine harmonic_arch_terms
 
-    pure function harmonic_theta_ratio64(self, c, lambda, delta) result(g)
+    pure function harmonic_theta_ratio64(self, c, lambda, delta, shift) result(g)
         class(harmonic_law), intent(in) :: self
         real(qp), intent(in) :: c(6)
-        real(real64), intent(in) :: lambda, delta
+        real(real64), intent(in) :: lambda, delta, shift
         real(real64) :: g
-        g = sqrt(exp(-2.0_real64*lambda)*(-expm1_64(-2.0_real64*delta)) &
-                 /(-expm1_64(-2.0_real64*lambda)))
+        g = sqrt((-expm1_64(-2.0_real64*delta))/(-expm1_64(-2.0_real64*lambda))) &
+            *exp(shift - lambda)
     end function harmonic_theta_ratio64
 
     pure function harmonic_inverse_speed(self, delta) result(w)
