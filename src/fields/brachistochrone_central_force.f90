@@ -306,9 +306,9 @@ contains
         real(qp), intent(in) :: big_lambda
         type(panel), intent(in) :: p
         real(real64) :: log_rho
-        complex(real64) :: zeta(8), point, image(4)
-        real(real64) :: lo, hi, big, sa, ss
-        integer :: k, m
+        complex(real64) :: zeta(8), point, image(2)
+        real(real64) :: lo, hi, big, sa, ss, rho_min
+        integer :: k, m, images
         lo = real(p%lo, real64)
         hi = real(p%hi, real64)
         big = real(big_lambda, real64)
@@ -329,21 +329,22 @@ contains
                     cmplx(big, sa, real64), cmplx(big, -sa, real64), &
                     (0.0_real64, 2.0_real64), (0.0_real64, -2.0_real64)]
         end select
-        log_rho = huge(1.0_real64)
+        rho_min = huge(1.0_real64)
         do k = 1, size(zeta)
             if (p%kind == kind_apse .or. p%kind == kind_start) then
-                image = zeta(k)
+                images = 1
+                image(1) = zeta(k)
             else
                 if (k == 1) cycle    ! removed by the substitution
                 point = sqrt(zeta(k)/real(p%scale, real64))
-                image = [point, -point, point, -point]
+                images = 2
+                image(1:2) = [point, -point]
             end if
-            do m = 1, 4
-                log_rho = min(log_rho, log(bernstein((2.0_real64*image(m) - (lo + hi)) &
-                                                     /(hi - lo))))
+            do m = 1, images
+                rho_min = min(rho_min, bernstein((2.0_real64*image(m) - (lo + hi))/(hi - lo)))
             end do
         end do
-        log_rho = max(log_rho, 1.0e-3_real64)
+        log_rho = max(log(rho_min), 1.0e-3_real64)
     contains
         pure real(real64) function bernstein(x)
             complex(real64), intent(in) :: x
