@@ -1,34 +1,46 @@
 !> brachistochrone: solve a table of endpoints read from a namelist file.
 !!
 !!     brachistochrone [options] FILE.nml      (see --help and the README)
+!!     brachistochrone family ...              (complete arches, apsidal locus; family.f90)
+!!     brachistochrone tunnel ...              (tunnels through a planet; tunnel.f90)
 !!
+!! The first argument `family` or `tunnel` selects a subcommand (an input file of that
+!! name is `./family`).
 !! Exit codes: 0 every endpoint solved; 1 usage or input error (nothing written);
 !! 2 some endpoints have no solution (files written, their status says why);
-!! 3 I/O error.
+!! 3 I/O error (no output file written); 128 + N killed by signal N (no output file
+!! written; see brachistochrone_safe_file).
 program main
     use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
     !$ use omp_lib, only: omp_set_num_threads
-    use brachistochrone, only: inverse_square_model, new_inverse_square_model, &
-                               endpoint_solution
+    use brachistochrone, only: brachistochrone_field, new_field, endpoint_solution, &
+                               status_ok, status_message
     use brachistochrone_version, only: program_name, program_version
     use brachistochrone_endpoint_input, only: endpoint_table, message
     use brachistochrone_command_line, only: run_options, parse_command_line, write_usage, exit_ok, &
                             exit_input
-    use brachistochrone_batch_run, only: prepare_run, print_report, solve_rows, deliver_results
+    use brachistochrone_batch_run, only: prepare_run, print_report, solve_rows, deliver_results, &
+                                         abandon_outputs
+    use brachistochrone_strings, only: integer_text
+    use brachistochrone_app_family, only: run_family
+    use brachistochrone_app_tunnel, only: run_tunnel
     implicit none
 
     type(run_options) :: options
     type(endpoint_table) :: table
-    type(inverse_square_model) :: model
+    class(brachistochrone_field), allocatable :: field
     type(endpoint_solution), allocatable :: solutions(:)
     type(message), allocatable :: report(:)
     character(len=:), allocatable :: problem
-    integer :: status, first, last, code
+    integer :: status, first, last, code, stat
     logical :: finished
 
+    call run_subcommand()
     call parse_command_line(options, status, problem)
     if (options%help) then
         call write_usage(output_unit, program_name)
+        write (output_unit, '(a)') 'Subcommands: '//program_name//' family --help, '// &
+            program_name//' tunnel --help'
         stop exit_ok, quiet=.true.
     else if (options%version) then
         write (output_unit, '(a)') program_name//' '//program_version
@@ -44,14 +56,36 @@ program main
         stop code, quiet=.true.
     end if
 
-    model = new_inverse_square_model()
-    allocate (solutions(first:last))
-    call solve_rows(model, table, first, last, solutions, .not. options%quiet)
+    call new_field(table%force, table%exponent, field, status)
+    if (status /= status_ok) then
+        call abandon_outputs()
+        call fail(exit_input, table%path//': '//status_message(status))
+    end if
+    allocate (solutions(first:last), stat=stat)
+    if (stat /= 0) then
+        call abandon_outputs()
+        call fail(exit_input, 'out of memory for the solutions of '// &
+                  integer_text(last - first + 1)//' endpoints; solve fewer rows at a time '// &
+                  'with --first/--last')
+    end if
+    call solve_rows(field, table, first, last, solutions, .not. options%quiet)
 
-    call deliver_results(options, model, table, first, last, solutions, code)
+    call deliver_results(options, field, table, first, last, solutions, code)
     stop code, quiet=.true.
 
 contains
+
+    !> `brachistochrone family ...` and `brachistochrone tunnel ...` run the subcommand
+    !! (which stops); any other first argument returns to the batch program.
+    subroutine run_subcommand()
+        character(len=8) :: first
+        if (command_argument_count() < 1) return
+        call get_command_argument(1, first)
+        select case (first)
+        case ('family');  call run_family(2)
+        case ('tunnel');  call run_tunnel(2)
+        end select
+    end subroutine run_subcommand
 
     subroutine fail(code, text)
         integer, intent(in) :: code

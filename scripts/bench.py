@@ -9,13 +9,16 @@ Usage::
 1. Generates N random accessible endpoints (rho uniform in [0.01, 1], psi uniform in
    (0, 2 pi/3)) into bench-out/bench.nml.
 2. Times the Fortran default solver on all of them with `brachistochrone-bench`
-   (release build, one thread, median of REPEATS passes over the table).
+   (fpm example `example/bench`; release build, one thread and two, median of REPEATS
+   passes over the table).
 3. Times SciPy in double precision (QUADPACK on the paper's transformed integrals
    (65), (77), (81), brentq on the bracket (0, rho]) on the first K endpoints, and
    mpmath at 34 digits (mp.quad on the same integrals, findroot with a bracket) on
    the first M.
 4. Prints time per endpoint, endpoints per second and the ratios, plus the digits
-   to which SciPy and mpmath agree with the Fortran results on their samples.
+   to which SciPy and mpmath agree with the Fortran results on their samples, the
+   solver's floor (one full-precision evaluation per endpoint) and the time to format
+   a value (`format_quad` against formatted `write`), from the same bench run.
 The machine is shared: compare ratios measured in the same run, not absolute times.
 """
 import argparse
@@ -45,8 +48,9 @@ def write_nml(path, rows):
         len(rows), ",\n  ".join(r for r, _ in rows), ",\n  ".join(p for _, p in rows)))
 
 
-def fpm_exe(name):
-    out = subprocess.run([FPM, "run", "--profile", "release", "--runner", "echo", name],
+def fpm_exe(name, example=False):
+    kind = ["--example"] if example else []
+    out = subprocess.run([FPM, "run", "--profile", "release", *kind, "--runner", "echo", name],
                          cwd=ROOT, check=True, capture_output=True, text=True).stdout
     return str(ROOT / out.strip().splitlines()[-1])
 
@@ -153,7 +157,8 @@ def main(argv=None):
     subprocess.run([FPM, "build", "--profile", "release"], cwd=ROOT, check=True,
                    capture_output=True)
     def fortran(threads):
-        bench = subprocess.run([fpm_exe("brachistochrone-bench"), str(out_dir / "bench.nml"),
+        bench = subprocess.run([fpm_exe("brachistochrone-bench", example=True),
+                                str(out_dir / "bench.nml"),
                                 str(args.repeats), str(threads)], check=True,
                                capture_output=True, text=True)
         return dict(line.split(" = ") for line in bench.stdout.splitlines())
@@ -185,6 +190,14 @@ def main(argv=None):
     print("ratio = time per endpoint / Fortran's on one thread; digits = fewest significant "
           "digits of R, s, t agreeing with the Fortran results on that sample")
     print(f"2-thread throughput: {fortran_us / fortran_2_us:.2f} x one thread")
+    floor_us, cpu_us = (float(report[k]) for k in ("floor_us_per_endpoint",
+                                                   "median_cpu_us_per_endpoint"))
+    print(f"CPU time: solver {cpu_us:.1f} us per endpoint, floor (its one full-precision "
+          f"evaluation with s, t) {floor_us:.1f} us; solver / floor = {cpu_us / floor_us:.2f}")
+    fast_ns, write_ns = (float(report[k]) for k in ("format_ns_per_value",
+                                                     "format_write_ns_per_value"))
+    print(f"formatting a value to 36 digits: {fast_ns:.0f} ns (formatted write "
+          f"{write_ns:.0f} ns, {write_ns / fast_ns:.1f} x slower)")
     return 0
 
 

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Independent high-precision reference table for brachistochrones through two points.
 
-Physics (G. J. Tee 1998, sections 4-5, with the corrections of shared/ERRATA.md).
+Physics (G. J. Tee 1998, sections 4-5, with the corrections of docs/ERRATA.md).
 A particle starts from rest at A = (radius 1, angle 0) under the attractive
 inverse-square force.  The brachistochrone through A with apse (minimum) radius
 R in (0, 1) has, on its first half-arch (radius decreasing from 1 to R), the
@@ -497,7 +497,7 @@ def sig(x, digits):
 
 
 def table1_endpoints():
-    """Table 1 of Tee (1998), with rows 1-2 corrected per shared/ERRATA.md."""
+    """Table 1 of Tee (1998), with rows 1-2 corrected per docs/ERRATA.md."""
     return [('0.2', '1.2'), ('0.5', '0.1'), ('0.7', '1.8'), ('0.9', '0.4'), ('1.0', '2.0')]
 
 

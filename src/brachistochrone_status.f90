@@ -15,7 +15,8 @@ module brachistochrone_status
               status_latitude_out_of_range, status_bad_planet, &
               status_above_start, status_parameter_out_of_range, &
               status_rho_below_start
-    public :: status_word, status_message, argument_status
+    public :: status_unknown_field, status_bad_exponent, status_not_supported
+    public :: status_word, status_message, argument_status, keep_first, first_failure
 
     !> Success.
     integer, parameter :: status_ok = 0
@@ -47,8 +48,37 @@ module brachistochrone_status
     integer, parameter :: status_parameter_out_of_range = 12
     !> Repulsive field: endpoint radius below the start (rho < 1), never reached.
     integer, parameter :: status_rho_below_start = 13
+    !> The field name is not one of the fields the library knows (`field_names`).
+    integer, parameter :: status_unknown_field = 14
+    !> Power law: the exponent n of F = mu/r^n is outside the supported range.
+    integer, parameter :: status_bad_exponent = 15
+    !> The field does not support the operation asked for (for example sampling its
+    !! curves, or the paper's secant method from initial estimates).
+    integer, parameter :: status_not_supported = 16
 
 contains
+
+    !> Keep the first failure: `status` becomes `next` only while it is still status_ok,
+    !! so a routine reports what went wrong first, never a `max` of unrelated codes.
+    elemental subroutine keep_first(status, next)
+        integer, intent(inout) :: status !! the status so far
+        integer, intent(in) :: next      !! the status of the next step
+        if (status == status_ok) status = next
+    end subroutine keep_first
+
+    !> The first code of `statuses` that is not status_ok (status_ok if none is).
+    pure function first_failure(statuses) result(status)
+        integer, intent(in) :: statuses(:) !! statuses of steps, in the order they ran
+        integer :: status
+        integer :: k
+        status = status_ok
+        do k = 1, size(statuses)
+            if (statuses(k) /= status_ok) then
+                status = statuses(k)
+                return
+            end if
+        end do
+    end function first_failure
 
     !> The status of a routine's real arguments: status_not_finite if any is NaN or
     !! infinite (checked first, since comparisons with NaN are all false), otherwise
@@ -85,6 +115,9 @@ contains
         case (status_above_start);      word = 'above_start'
         case (status_parameter_out_of_range); word = 'parameter_out_of_range'
         case (status_rho_below_start);  word = 'rho_below_start'
+        case (status_unknown_field);    word = 'unknown_field'
+        case (status_bad_exponent);     word = 'bad_exponent'
+        case (status_not_supported);    word = 'not_supported'
         case default;                   word = 'unknown_status'
         end select
     end function status_word
@@ -97,8 +130,9 @@ contains
         case (status_ok)
             message = 'solved'
         case (status_inaccessible)
-            message = 'endpoint lies in the sector of inaccessibility (psi >= 2*pi/3): no '// &
-                      'brachistochrone exists; t is the greatest lower bound kappa(rho)'
+            message = 'endpoint lies in the field''s sector of inaccessibility (inverse '// &
+                      'square: psi >= 2*pi/3; power law n: psi >= 2*pi/(n+1)): no '// &
+                      'brachistochrone reaches it; t is the greatest lower bound of the time'
         case (status_rho_out_of_range)
             message = 'rho must satisfy 0 < rho <= 1 (the start A is at radius 1)'
         case (status_psi_out_of_range)
@@ -111,7 +145,8 @@ contains
             message = 'the secant iteration stepped outside 0 < R <= rho; give other r0, r1 '// &
                       'or leave them out to use the bracketing solver'
         case (status_invalid_argument)
-            message = 'arguments outside the domain 0 < R <= r <= 1, R < 1'
+            message = 'an argument is outside the domain the routine documents (for the '// &
+                      'arch integrals: 0 < R <= r <= 1, R < 1)'
         case (status_bad_estimates)
             message = 'initial estimates r0, r1 must differ and lie in 0 < R <= rho'
         case (status_latitude_out_of_range)
@@ -127,6 +162,14 @@ contains
         case (status_rho_below_start)
             message = 'repulsive field: rho must satisfy rho >= 1 (the start A is at radius '// &
                       '1 and every path moves outward)'
+        case (status_unknown_field)
+            message = 'unknown field: give one of ''inverse_square'', ''power'', '// &
+                      '''logarithmic'', ''harmonic'', ''repulsive'''
+        case (status_bad_exponent)
+            message = 'the power-law exponent n of F = mu/r^n must be finite and n > 1'
+        case (status_not_supported)
+            message = 'this field does not support the operation (curve sampling, or the '// &
+                      'secant method from estimates r0, r1, is inverse-square only)'
         case default
             message = 'unknown status'
         end select

@@ -11,8 +11,9 @@ module test_central_force
             logarithmic_law, harmonic_law, max_power_exponent
     use brachistochrone_central_force, only: central_force_model, new_central_force_model
     use brachistochrone_inverse_square, only: inverse_square_model, new_inverse_square_model
-    use brachistochrone_two_point, only: endpoint_solution, solve_endpoint, &
-                                         arch_inaccessible, arch_second
+    use brachistochrone_two_point, only: solve_endpoint
+    use brachistochrone_solution, only: endpoint_solution
+    use brachistochrone_arches, only: arch_inaccessible, arch_second
     use testing, only: check, check_close, check_digits, section, digits_of_agreement
     use reference_tables, only: csv_table, read_reference
     implicit none

@@ -15,8 +15,9 @@ module test_curves
                                       status_invalid_argument, status_not_finite
     use brachistochrone_closed_forms, only: radial_time, inaccessible_angle, apse_angle_limit
     use brachistochrone_inverse_square, only: inverse_square_model, new_inverse_square_model
-    use brachistochrone_two_point, only: endpoint_solution, solve_endpoint, solve_endpoint_secant, &
-                         arch_first, arch_second, arch_complete, arch_radial
+    use brachistochrone_two_point, only: solve_endpoint, solve_endpoint_secant
+    use brachistochrone_solution, only: endpoint_solution
+    use brachistochrone_arches, only: arch_first, arch_second, arch_complete, arch_radial
     use brachistochrone_curve, only: curve_samples, sample_endpoint_curve, sample_complete_arch, &
                      apsidal_locus
     use testing, only: check, check_close, section

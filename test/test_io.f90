@@ -2,9 +2,12 @@
 module test_io
     use brachistochrone_kinds, only: qp, pi
     use brachistochrone_status, only: status_inaccessible
-    use brachistochrone_two_point, only: endpoint_solution, arch_inaccessible
+    use brachistochrone_solution, only: endpoint_solution
+    use brachistochrone_arches, only: arch_inaccessible
     use brachistochrone_endpoint_input, only: endpoint_table, read_endpoint_file
     use brachistochrone_result_output, only: format_real, csv_row, write_results_namelist
+    use brachistochrone_safe_file, only: safe_file, open_output, finish_output, &
+                                         commit_outputs, safe_ok
     use testing, only: check, section
     implicit none
     private
@@ -23,7 +26,8 @@ contains
     subroutine namelist_round_trip()
         type(endpoint_solution) :: written(4)
         integer :: unit, ios, k
-        character(len=256) :: io_message
+        type(safe_file) :: out(1)
+        character(len=:), allocatable :: problem
         integer :: n, steps(4)
         real(qp) :: rho(4), psi(4), r(4), s(4), t(4)
         character(len=16) :: arch(4)
@@ -41,10 +45,11 @@ contains
             written(k)%has_arclength = .true.
             written(k)%has_time = .true.
         end do
-        open (newunit=unit, file='build/test_results.nml', status='replace', action='write')
-        call write_results_namelist(unit, written, ios, io_message)
-        close (unit)
-        call check(ios == 0, 'results namelist written')
+        call open_output(out(1), 'build/test_results.nml', .true., ios, problem)
+        if (ios == safe_ok) call write_results_namelist(out(1), written)
+        if (ios == safe_ok) call finish_output(out(1), ios, problem)
+        if (ios == safe_ok) call commit_outputs(out, ios, problem)
+        call check(ios == safe_ok, 'results namelist written: '//problem)
         open (newunit=unit, file='build/test_results.nml', status='old', action='read')
         read (unit, nml=results, iostat=ios)
         close (unit)

@@ -4,21 +4,33 @@ program test_main
     use test_numerics, only: run_numerics_tests
     use test_physics, only: run_physics_tests
     use test_io, only: run_io_tests
+    use test_namelist, only: run_namelist_tests
+    use test_format, only: run_format_tests
+    use test_hardware_level, only: run_hardware_level_tests
     use test_central_force, only: run_central_force_tests
     use test_curves, only: run_curve_tests
     use test_harmonic, only: run_harmonic_tests
     use test_uniform_gravity, only: run_uniform_gravity_tests
     use test_repulsive, only: run_repulsive_tests
+    use test_fields, only: run_field_tests
+    use test_sha256, only: run_sha256_tests
+    use test_c_api, only: run_c_api_tests
     implicit none
     integer :: code
     call run_numerics_tests()
     call run_io_tests()
+    call run_namelist_tests()
+    call run_format_tests()
+    call run_hardware_level_tests()
     call run_physics_tests()
     call run_central_force_tests()
     call run_curve_tests()
     call run_harmonic_tests()
     call run_uniform_gravity_tests()
     call run_repulsive_tests()
+    call run_field_tests()
+    call run_sha256_tests()
+    call run_c_api_tests()
     code = summary()
     if (code /= 0) error stop 1
 end program test_main

@@ -12,10 +12,12 @@ module test_physics
                             apse_angle_limit, inaccessible_angle, radial_fall_time
     use brachistochrone_quadrature, only: univariate_integrand, gauss_legendre, integrate_adaptive
     use brachistochrone_inverse_square, only: inverse_square_model, new_inverse_square_model, &
+            evaluate_arch, &
             arch_values, level_fine
-    use brachistochrone_two_point, only: endpoint_solution, solve_endpoint, solve_endpoint_secant, &
-                         arch_first, arch_second, arch_complete, arch_radial, &
-                         arch_inaccessible, arch_word
+    use brachistochrone_two_point, only: solve_endpoint, solve_endpoint_secant
+    use brachistochrone_solution, only: endpoint_solution
+    use brachistochrone_arches, only: arch_first, arch_second, arch_complete, arch_radial, &
+                                      arch_inaccessible, arch_word
     use reference_tables, only: csv_table, read_reference
     use testing, only: check, check_close, check_digits, section, digits_of_agreement
     implicit none
@@ -106,11 +108,11 @@ contains
                     big_r = fraction(j)*rho(i)
                     d = rho(i) - big_r
                     h = 1.0e-9_qp*min(big_r, d)
-                    values = model%evaluate_arch(level_fine, second, rho(i), big_r, d, &
+                    values = evaluate_arch(model, level_fine, second, rho(i), big_r, d, &
                                                  .true., .true.)
-                    plus = model%evaluate_arch(level_fine, second, rho(i), big_r + h, d - h, &
+                    plus = evaluate_arch(model, level_fine, second, rho(i), big_r + h, d - h, &
                                                .false., .true.)
-                    minus = model%evaluate_arch(level_fine, second, rho(i), big_r - h, &
+                    minus = evaluate_arch(model, level_fine, second, rho(i), big_r - h, &
                                                 d + h, .false., .true.)
                     analytic = values%arclength_dr_smooth &
                                + values%boundary_sign*values%arclength_boundary/sqrt(d)
@@ -146,7 +148,7 @@ contains
         integer :: k, status
         call section('physics: radial fall t(r) (46) and kappa(rho) (75)')
         call check_close(radial_time(0.0_qp), pi/sqrt(8.0_qp), 4.0_qp, 't(0) = pi/sqrt(8)')
-        ! (47) prints 1.1107207345385916: a misprint in the 12th digit (README "Errata")
+        ! (47) prints 1.1107207345385916: a misprint in the 12th digit (docs/ERRATA.md)
         call check_digits(fall_to_centre_time, 1.1107207345395916_qp, 16.0_qp, &
                           't(0) = 1.1107207345395916 (16 digits)')
         call check(abs(fall_to_centre_time - 1.1107207345385916_qp) > 5.0e-13_qp, &
@@ -255,7 +257,7 @@ contains
 
     subroutine table1_tests(model)
         type(inverse_square_model), intent(in) :: model
-        ! Tee (1998) Table 1 as printed, rho of rows 1-2 swapped back (ERRATA.md)
+        ! Tee (1998) Table 1 as printed, rho of rows 1-2 swapped back (docs/ERRATA.md)
         real(qp), parameter :: rho(5) = [0.2_qp, 0.5_qp, 0.7_qp, 0.9_qp, 1.0_qp]
         real(qp), parameter :: psi(5) = [1.2_qp, 0.1_qp, 1.8_qp, 0.4_qp, 2.0_qp]
         real(qp), parameter :: r0(5) = [0.2_qp, 0.4_qp, 0.6_qp, 0.8_qp, 0.2_qp]
@@ -283,7 +285,7 @@ contains
             call check(fixed15(b%arclength) == printed_s(i), trim(row)//': s printed digits')
             call check(fixed15(b%time) == printed_t(i), trim(row)//': t printed digits')
         end do
-        ! the rows as misprinted have other answers (ERRATA.md)
+        ! the rows as misprinted have other answers (docs/ERRATA.md)
         b = solve_endpoint(model, 0.5_qp, 1.2_qp)
         call check_digits(b%apse_radius, 0.38719841090429114_qp, 16.0_qp, &
                           'misprinted row 1 (0.5, 1.2) has R-bar = 0.38719841090429114')

@@ -13,8 +13,8 @@ module test_repulsive
     use brachistochrone_repulsive, only: repulsive_curve, repulsive_solution, curve_from_k2, &
                          curve_from_gap, curve_from_apse, curve_from_apse_gap, &
                          repulsive_values, critical_values, repulsive_radial_time, &
-                         solve_repulsive, arch_unbounded, arch_first_half, &
-                         arch_second_half, critical_k2
+                         solve_repulsive, critical_k2
+    use brachistochrone_arches, only: arch_unbounded, arch_first, arch_second
     use testing, only: check, check_close, check_digits, section, digits_of_agreement
     implicit none
     private
@@ -272,7 +272,7 @@ contains
         type(repulsive_solution), allocatable :: sol(:)
         real(qp) :: worst, residual, apse(3)
         type(repulsive_curve) :: curve
-        integer :: i, j, k, best, status, arches(0:2)
+        integer :: i, j, k, best, status, arches(0:6)
         logical :: ordered, all_ok
         call section('repulsive: two-point problem, windings m = 0..2, both senses')
         worst = 0.0_qp
@@ -309,9 +309,10 @@ contains
         write (output_unit, '(a,f8.2)') '   worst |theta(rho) - target|/max(target,1) in eps: ', &
             worst
         write (output_unit, '(a,3i4)') '   solutions unbounded, first, second half-arch: ', &
-            arches
+            arches([arch_unbounded, arch_first, arch_second])
         call check(worst <= 16.0_qp, 'two-point: endpoint angle reproduced to 16 eps')
-        call check(all(arches > 0), 'two-point: every kind of branch exercised')
+        call check(all(arches([arch_unbounded, arch_first, arch_second]) > 0), &
+                   'two-point: every kind of branch exercised')
         ! B at the apse of the curve with R = rho: psi = Theta(rho, rho), top of the branch
         call curve_from_apse(1.25_qp, curve, status)
         call repulsive_values(curve, 1.25_qp, .false., apse(1), apse(2), apse(3), status)
@@ -341,13 +342,13 @@ contains
         call check_digits(sol(3)%time, 14.11614078964469775439951871173613963026_qp, &
                           33.0_qp, 'rho = 2, psi = 1, m = 1: t')
         call solve_repulsive(1.25_qp, 0.4_qp, 0, sol, best, status)
-        call check(sol(1)%arch == arch_first_half, 'rho = 5/4, psi = 0.4: first half-arch')
+        call check(sol(1)%arch == arch_first, 'rho = 5/4, psi = 0.4: first half-arch')
         call check_digits(sol(1)%curve%apse, 1.260982129463187324371251899279339797443_qp, &
                           33.0_qp, 'rho = 5/4, psi = 0.4: R')
         call check_digits(sol(1)%time, 1.302101069487037272664073805610511465792_qp, &
                           33.0_qp, 'rho = 5/4, psi = 0.4: t')
         call solve_repulsive(1.25_qp, 1.0_qp, 0, sol, best, status)
-        call check(sol(1)%arch == arch_second_half, 'rho = 5/4, psi = 1: second half-arch')
+        call check(sol(1)%arch == arch_second, 'rho = 5/4, psi = 1: second half-arch')
         call check_digits(sol(1)%curve%apse, 1.301727301114516485665968712614332589964_qp, &
                           33.0_qp, 'rho = 5/4, psi = 1: R')
         call check_digits(sol(1)%time, 2.472898487362827611486440077335108505319_qp, &

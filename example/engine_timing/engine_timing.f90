@@ -15,7 +15,8 @@ program engine_timing
     use brachistochrone_speed_laws, only: speed_law, power_law, logarithmic_law, harmonic_law
     use brachistochrone_central_force, only: central_force_model, new_central_force_model
     use brachistochrone_inverse_square, only: inverse_square_model, new_inverse_square_model
-    use brachistochrone_two_point, only: endpoint_solution, solve_endpoint
+    use brachistochrone_two_point, only: solve_endpoint
+    use brachistochrone_solution, only: endpoint_solution
     use brachistochrone_status, only: status_ok
     implicit none
     integer, parameter :: n_rho = 5, n_psi = 6

@@ -11,20 +11,21 @@ program main
     use, intrinsic :: iso_fortran_env, only: error_unit, output_unit, int8
     use mpi_f08, only: mpi_init, mpi_finalize, mpi_comm_world, mpi_comm_rank, &
                        mpi_comm_size, mpi_gatherv, mpi_bcast, mpi_byte, mpi_integer, &
-                       mpi_abort
+                       mpi_abort, mpi_logical
     !$ use omp_lib, only: omp_set_num_threads
-    use brachistochrone, only: inverse_square_model, new_inverse_square_model, &
-                               endpoint_solution
+    use brachistochrone, only: brachistochrone_field, new_field, endpoint_solution, &
+                               status_ok, status_message
     use brachistochrone_version, only: program_name, program_version
     use brachistochrone_endpoint_input, only: endpoint_table, message
     use brachistochrone_command_line, only: run_options, parse_command_line, write_usage, exit_ok, &
                             exit_input
-    use brachistochrone_batch_run, only: prepare_run, print_report, solve_rows, deliver_results
+    use brachistochrone_batch_run, only: prepare_run, print_report, solve_rows, deliver_results, &
+                                         abandon_outputs
     implicit none
 
     type(run_options) :: options
     type(endpoint_table) :: table
-    type(inverse_square_model) :: model
+    class(brachistochrone_field), allocatable :: field
     type(endpoint_solution), allocatable :: block(:), solutions(:)
     type(endpoint_solution) :: prototype
     type(message), allocatable :: report(:)
@@ -50,7 +51,11 @@ program main
     end if
     !$ if (options%threads > 0) call omp_set_num_threads(options%threads)
 
-    call prepare_run(options, table, first, last, report, code, finished)
+    ! only rank 0 writes files (and creates their temporary files before the work)
+    call prepare_run(options, table, first, last, report, code, finished, &
+                     writes_files=rank == 0)
+    call mpi_bcast(code, 1, mpi_integer, 0, mpi_comm_world)
+    call mpi_bcast(finished, 1, mpi_logical, 0, mpi_comm_world)
     if (finished) then
         if (rank == 0) call print_report(report, code)
         call finish(code)
@@ -60,9 +65,13 @@ program main
     rows = last - first + 1
     my_first = first + (rank*rows)/ranks
     my_last = first + ((rank + 1)*rows)/ranks - 1
-    model = new_inverse_square_model()
+    call new_field(table%force, table%exponent, field, status)
+    if (status /= status_ok) then
+        if (rank == 0) call abandon_outputs()
+        call fail(exit_input, table%path//': '//status_message(status))
+    end if
     allocate (block(my_first:my_last))
-    if (my_last >= my_first) call solve_rows(model, table, my_first, my_last, block, &
+    if (my_last >= my_first) call solve_rows(field, table, my_first, my_last, block, &
                                              .not. options%quiet .and. rank == 0)
 
     ! gather the solutions on rank 0 as bytes
@@ -82,7 +91,7 @@ program main
         allocate (solutions(first:last))
         solutions = transfer(received, prototype, rows)
         ! files, curves (with rank 0's OpenMP threads) and table: as the serial program
-        call deliver_results(options, model, table, first, last, solutions, code)
+        call deliver_results(options, field, table, first, last, solutions, code)
     end if
     call mpi_bcast(code, 1, mpi_integer, 0, mpi_comm_world)
     call finish(code)

@@ -48,8 +48,9 @@ module brachistochrone_central_force
     use brachistochrone_fast_exp, only: fast_exp
     use brachistochrone_quadrature, only: gauss_legendre_rule, gauss_legendre
     use brachistochrone_speed_laws, only: speed_law
-    use brachistochrone_two_point, only: endpoint_solution, arch_first, arch_second, &
-            arch_complete, arch_radial, arch_inaccessible
+    use brachistochrone_solution, only: endpoint_solution, endpoint_status, region_inside
+    use brachistochrone_arches, only: arch_first, arch_second, arch_complete, arch_radial, &
+                                      arch_inaccessible
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     use, intrinsic :: iso_fortran_env, only: real64
     implicit none
@@ -928,16 +929,9 @@ contains
 
         solution%rho = rho
         solution%psi = psi
-        if (.not. (ieee_is_finite(rho) .and. ieee_is_finite(psi))) then
-            solution%status = status_not_finite
-            return
-        else if (rho <= 0.0_qp .or. rho > 1.0_qp) then
-            solution%status = status_rho_out_of_range
-            return
-        else if (psi < 0.0_qp .or. psi > pi) then
-            solution%status = status_psi_out_of_range
-            return
-        else if (.not. self%law%valid()) then
+        solution%status = endpoint_status(rho, psi, region_inside)
+        if (solution%status /= status_ok) return
+        if (.not. self%law%valid()) then
             ! e.g. a power law beyond max_power_exponent
             solution%status = status_parameter_out_of_range
             return

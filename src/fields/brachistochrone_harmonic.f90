@@ -84,6 +84,7 @@ module brachistochrone_harmonic
                                       status_rho_out_of_range, status_psi_out_of_range, &
                                       status_latitude_out_of_range, &
                                       status_bad_planet
+    use brachistochrone_solution, only: endpoint_status, region_inside
     use brachistochrone_arches, only: arch_none, arch_first, arch_second, arch_complete, arch_radial
     use brachistochrone_roots, only: root_function, newton_bracketed
     use brachistochrone_quadrature, only: univariate_integrand, gauss_legendre, integrate_adaptive
@@ -464,14 +465,8 @@ contains
 
         tunnel%radius = radius
         tunnel%angle = angle
-        if (.not. (ieee_is_finite(radius) .and. ieee_is_finite(angle))) then
-            tunnel%status = status_not_finite
-            return
-        else if (radius <= 0.0_qp .or. radius > 1.0_qp) then
-            tunnel%status = status_rho_out_of_range
-            return
-        else if (angle < 0.0_qp .or. angle > pi) then
-            tunnel%status = status_psi_out_of_range
+        tunnel%status = endpoint_status(radius, angle, region_inside)
+        if (tunnel%status /= status_ok) then
             return
         else if (radius == 1.0_qp) then
             tunnel = surface_to_surface(angle)

@@ -43,7 +43,8 @@ module brachistochrone_inverse_square
     private
 
     public :: inverse_square_model, new_inverse_square_model
-    public :: arch_values, level_fine, level_coarse, level_rough, level_digits
+    public :: evaluate_arch, arch_values, level_fine, level_coarse, level_rough, level_digits
+    public :: level_hardware, level_final, hardware_epsilon
 
     !> Rule set selector: full quad precision.
     integer, parameter :: level_fine = 1
@@ -51,6 +52,26 @@ module brachistochrone_inverse_square
     integer, parameter :: level_coarse = 2
     !> Rule set selector: about 9 digits, for the first steps of a root finder.
     integer, parameter :: level_rough = 3
+    !> Rule set selector: the level_coarse rules in the widest hardware precision
+    !! (`xp`: angle and d(angle)/dR only), for a root finder's first steps at a small
+    !! fraction of the cost of software quad; falls back to level_coarse where `xp`
+    !! could underflow.
+    integer, parameter :: level_hardware = 4
+    !> The widest hardware real kind below quad: x87 extended on x86-64 (64-bit
+    !! significand, epsilon 1.1e-19, enough for the 17-digit rules), double elsewhere.
+    integer, parameter :: xp_candidate = selected_real_kind(18, 4931)
+    integer, parameter :: xp = merge(xp_candidate, real64, &
+                                     xp_candidate > 0 .and. xp_candidate /= qp)
+    !> Rule set selector: the full rules, the values (angle, s, t) in binary128 and the
+    !! d/dR pieces of the integrals in hardware precision (`xp`, relative error about
+    !! 1e-18): for a last Newton step whose size is already below 1e-17, where the
+    !! slopes' error is negligible, at about two thirds of the cost of level_fine.
+    integer, parameter :: level_final = 5
+    !> Relative rounding of `xp` (the level_hardware evaluations are about 100 times
+    !! less accurate).
+    real(qp), parameter :: hardware_epsilon = real(epsilon(1.0_xp), qp)
+    !> Below this, R, r - R or 1 - r are too small for level_hardware.
+    real(qp), parameter :: hardware_floor = 1.0e-250_qp
 
     !> Most Gauss nodes on one panel: the worst panel (R -> 0, a whole half-arch in the
     !! eta variable) needs 46 for Theta, 48 for s and t (8e-36 there).
@@ -59,6 +80,7 @@ module brachistochrone_inverse_square
     integer, parameter :: min_nodes = 6
     !> Digits aimed at by the node choice: fine (with a margin over 34) and coarse.
     real(qp), parameter :: fine_digits = 36.0_qp, coarse_digits = 17.0_qp, &
+                           hardware_digits = 19.0_qp, &
                            rough_digits = 9.0_qp
     !> Pieces of [0, 1] and points per piece of the whole-half-arch tables: the slowest
     !! piece, next to R = 1 (Bernstein radius 18 from the singularity at 3/2), reaches
@@ -70,7 +92,17 @@ module brachistochrone_inverse_square
         integer :: n = 0                          !! number of nodes
         real(qp), allocatable :: offset(:)        !! (1 + x_k)/2 for the nodes x_k
         real(qp), allocatable :: double_weight(:) !! 2 w_k for the weights w_k
+        real(xp), allocatable :: offset_xp(:)        !! offset in hardware precision
+        real(xp), allocatable :: double_weight_xp(:) !! double_weight in hardware precision
     end type gauss_nodes
+
+    !> A piecewise polynomial of a `chebyshev_table` in hardware precision (level_hardware).
+    type :: power_series_xp
+        real(xp) :: lower = 0.0_xp, width = 1.0_xp !! first piece, piece width
+        integer :: pieces = 0                      !! number of equal pieces
+        real(xp), allocatable :: power(:, :)  !! power(j, piece), j = 0 .. terms-1
+        integer, allocatable :: used(:)           !! terms for the level's accuracy
+    end type power_series_xp
 
     !> The inverse-square evaluator: quadrature rules built once, then used read-only
     !! (so one model can be shared by all threads).
@@ -83,13 +115,14 @@ module brachistochrone_inverse_square
         !! S and T corrections over lambda in [0, pi/2] without their factors (1-R) and
         !! sqrt(1-R) (see `whole_half_arch`)
         type(chebyshev_table) :: whole(3)
+        !> Theta(R,R)/(1-R) of `whole` in hardware precision, for level_hardware
+        type(power_series_xp) :: whole_xp
     contains
         procedure :: half_arch      !! Theta, S, T on the first or second half-arch
         procedure :: theta          !! Theta(r,R), eq. (55)
         procedure :: arclength      !! S(r,R), eq. (56)
         procedure :: travel_time    !! T(r,R), eq. (57)
         procedure :: apse_angle     !! Theta(R,R), eq. (66)
-        procedure :: evaluate_arch  !! the solver's kernel: values and d/dR pieces
     end type inverse_square_model
 
     !> Angle, arclength and time at radius r of the brachistochrone with apse R, on one
@@ -106,6 +139,10 @@ module brachistochrone_inverse_square
         !! / sqrt(r - R) (with both the derivative and arclength requested)
         real(qp) :: arclength_dr_smooth = 0.0_qp
         real(qp) :: arclength_boundary = 0.0_qp  !! its 1/sqrt(r - R) coefficient, >= 0
+        !> Bounds on the absolute errors of angle_dr_smooth and arclength_dr_smooth from
+        !! their hardware-precision sums (level_final; 0 on the other levels)
+        real(qp) :: angle_dr_error = 0.0_qp
+        real(qp) :: arclength_dr_error = 0.0_qp
     end type arch_values
 
 contains
@@ -117,6 +154,8 @@ contains
         select case (level)
         case (level_coarse);  digits = coarse_digits
         case (level_rough);   digits = rough_digits
+        case (level_hardware); digits = hardware_digits
+        case (level_final);    digits = fine_digits
         case default;         digits = fine_digits
         end select
     end function level_digits
@@ -133,8 +172,11 @@ contains
             model%gauss(j)%n = 2*j
             model%gauss(j)%offset = 0.5_qp*(1.0_qp + rule%node)
             model%gauss(j)%double_weight = 2.0_qp*rule%weight
+            model%gauss(j)%offset_xp = real(model%gauss(j)%offset, xp)
+            model%gauss(j)%double_weight_xp = real(model%gauss(j)%double_weight, xp)
         end do
         call build_whole_tables(model)
+        model%whole_xp = series_xp(model%whole(1), 0.1_qp*10.0_qp**(-hardware_digits))
         ! d Theta(R,R)/dR at R = 0 (Theta(R,R) = pi/3 - 0.8095502 R + ...), with
         ! Theta(R,R) = (1 - R) A(R): A'(0) - A(0)
         call model%whole(1)%evaluate(0.0_qp, angle, slope)
@@ -258,7 +300,7 @@ contains
     !! precision. Preconditions (not checked): 0 < R < 1, 0 <= d, R + d = r <= 1.
     pure function evaluate_arch(self, level, second, r, big_r, d, want_derivative, &
                                 want_length_time) result(values)
-        class(inverse_square_model), intent(in) :: self
+        type(inverse_square_model), intent(in) :: self
         integer, intent(in) :: level            !! level_fine or level_coarse
         logical, intent(in) :: second           !! second half-arch (after the apse)
         real(qp), intent(in) :: r               !! radius of the point
@@ -268,9 +310,141 @@ contains
         logical, intent(in) :: want_length_time !! compute arclength and time
         type(arch_values) :: values
 
-        values = arch_with_rules(self, level, second, r, big_r, d, want_derivative, &
-                                 want_length_time)
+        if (level == level_hardware .and. .not. want_length_time .and. &
+            min(big_r, 1.0_qp - r) > hardware_floor .and. (d == 0.0_qp .or. d > hardware_floor)) &
+            then
+            values = arch_hardware(self, second, r, big_r, d)
+        else
+            values = arch_with_rules(self, merge(level_coarse, level, level == level_hardware), &
+                                     second, r, big_r, d, want_derivative, want_length_time)
+        end if
     end function evaluate_arch
+
+    !> A `chebyshev_table`'s powers in hardware precision (`xp`), cut at an absolute
+    !! tolerance.
+    pure function series_xp(table, tolerance) result(series)
+        type(chebyshev_table), intent(in) :: table
+        real(qp), intent(in) :: tolerance
+        type(power_series_xp) :: series
+        integer :: piece
+        series%lower = real(table%lower, xp)
+        series%width = real((table%upper - table%lower)/real(table%pieces, qp), xp)
+        series%pieces = table%pieces
+        allocate (series%power(lbound(table%power, 1):ubound(table%power, 1), &
+                               lbound(table%power, 2):ubound(table%power, 2)))
+        series%power = real(table%power, xp)
+        allocate (series%used(table%pieces))
+        do piece = 1, table%pieces
+            series%used(piece) = table%terms_for(piece, tolerance)
+        end do
+    end function series_xp
+
+    !> `evaluate_arch` at level_hardware: angle and d(angle)/dR in hardware precision
+    !! (`xp`) on the level_coarse rules (1 - r and d come from quad: the apse keeps its
+    !! digits).
+    pure function arch_hardware(model, second, r, big_r, d) result(values)
+        type(inverse_square_model), intent(in) :: model
+        logical, intent(in) :: second
+        real(qp), intent(in) :: r, big_r, d
+        type(arch_values) :: values
+        real(xp) :: rr, br, dd, one_minus_r, one_minus_big_r, cos_l, sin_l, z_l, q_l
+        real(xp) :: upper_apse, upper_start, part(2), whole, whole_slope, whole_factor
+        integer :: rule_apse, rule_start
+
+        rr = real(r, xp)
+        br = real(big_r, xp)
+        dd = real(d, xp)
+        one_minus_r = real(1.0_qp - r, xp)
+        one_minus_big_r = one_minus_r + dd
+        cos_l = sqrt(br*one_minus_r/(rr*one_minus_big_r))
+        sin_l = sqrt(dd/(rr*one_minus_big_r))
+        upper_apse = sin_l/(1.0_xp + cos_l)
+        upper_start = cos_l/(1.0_xp + sin_l)
+        rule_start = rule_index(big_r, real(upper_start, qp), .false., hardware_digits, .false.)
+        whole_factor = 0.0_xp
+        whole = 0.0_xp
+        whole_slope = 0.0_xp
+        values%boundary_sign = 1.0_qp
+        if (second) then
+            call evaluate_xp(model%whole_xp, br, whole, whole_slope)
+            rule_apse = rule_index(big_r, real(upper_apse, qp), .true., hardware_digits, .false.)
+            values%boundary_sign = -1.0_qp
+            if (rule_apse <= rule_start) then
+                part = sweep_hardware(model, rule_apse, br, one_minus_big_r, upper_apse, .true.)
+                whole_factor = 1.0_xp
+            else
+                part = -sweep_hardware(model, rule_start, br, one_minus_big_r, upper_start, &
+                                     .false.)
+                whole_factor = 2.0_xp
+            end if
+        else
+            part = sweep_hardware(model, rule_start, br, one_minus_big_r, upper_start, .false.)
+        end if
+        values%angle = real(whole_factor*one_minus_big_r*whole + part(1), qp)
+        values%angle_dr_smooth = real(whole_factor*(one_minus_big_r*whole_slope - whole) &
+                                      + part(2), qp)
+        z_l = br/rr
+        q_l = z_l*z_l + one_minus_big_r*(1.0_xp + z_l)
+        values%boundary = real(sqrt(br)*one_minus_r*sqrt(one_minus_r) &
+                               /(rr*one_minus_big_r*sqrt(q_l)), qp)
+    end function arch_hardware
+
+    !> Value and slope of a `power_series_xp` at x (Horner).
+    pure subroutine evaluate_xp(series, x, value, slope)
+        type(power_series_xp), intent(in) :: series
+        real(xp), intent(in) :: x
+        real(xp), intent(out) :: value, slope
+        real(xp) :: position, t, derivative
+        integer :: piece, j
+        position = (x - series%lower)/series%width
+        piece = min(series%pieces, max(1, int(position) + 1))
+        t = 2.0_xp*(position - real(piece - 1, xp)) - 1.0_xp
+        value = series%power(series%used(piece) - 1, piece)
+        derivative = 0.0_xp
+        do j = series%used(piece) - 2, 0, -1
+            derivative = derivative*t + value
+            value = value*t + series%power(j, piece)
+        end do
+        slope = derivative*(2.0_xp/series%width)
+    end subroutine evaluate_xp
+
+    !> `sweep` in hardware precision (`xp`), angle and d(angle)/dR only.
+    pure function sweep_hardware(model, j, big_r, one_minus_big_r, upper, from_apse) &
+        result(sums)
+        type(inverse_square_model), intent(in) :: model
+        integer, intent(in) :: j
+        real(xp), intent(in) :: big_r, one_minus_big_r, upper
+        logical, intent(in) :: from_apse
+        real(xp) :: sums(2)
+        real(xp) :: v, v2, jacobian, c, s, c2, z, q, theta_term, inverse
+        integer :: k
+        sums = 0.0_xp
+        if (upper <= 0.0_xp) return
+        associate (rule => model%gauss(j))
+        do k = 1, rule%n
+            v = upper*rule%offset_xp(k)
+            v2 = v*v
+            jacobian = 1.0_xp/(1.0_xp + v2)
+            if (from_apse) then
+                c = (1.0_xp - v2)*jacobian
+                s = (v + v)*jacobian
+            else
+                c = (v + v)*jacobian
+                s = (1.0_xp - v2)*jacobian
+            end if
+            c2 = c*c
+            z = big_r + one_minus_big_r*c2
+            q = z*(z + one_minus_big_r) + one_minus_big_r
+            inverse = 1.0_xp/sqrt(q)
+            theta_term = rule%double_weight_xp(k)*jacobian*c2*inverse
+            sums(1) = sums(1) + theta_term
+            sums(2) = sums(2) - theta_term*(inverse*inverse)*(z*(z + z) + &
+                      one_minus_big_r*(z + 1.0_xp + (z + z + one_minus_big_r)*(s*s)))
+        end do
+        end associate
+        sums(1) = sums(1)*upper*one_minus_big_r
+        sums(2) = sums(2)*0.5_xp*upper
+    end function sweep_hardware
 
     !> `evaluate_arch` for one precision level.
     pure function arch_with_rules(model, level, second, r, big_r, d, want_derivative, &
@@ -306,18 +480,18 @@ contains
             rule_apse = rule_index(big_r, upper_apse, .true., digits, want_length_time)
             if (rule_apse <= rule_start) then
                 call sweep(model, rule_apse, big_r, one_minus_big_r, upper_apse, .true., &
-                           want_derivative, want_length_time, part)
+                           want_derivative, want_length_time, level == level_final, part)
                 whole_factor = 1.0_qp
             else
                 call sweep(model, rule_start, big_r, one_minus_big_r, upper_start, .false., &
-                           want_derivative, want_length_time, part)
+                           want_derivative, want_length_time, level == level_final, part)
                 whole_factor = 2.0_qp
                 part = -part
             end if
             values%boundary_sign = -1.0_qp
         else
             call sweep(model, rule_start, big_r, one_minus_big_r, upper_start, .false., &
-                       want_derivative, want_length_time, part)
+                       want_derivative, want_length_time, level == level_final, part)
             whole_factor = 0.0_qp
             whole = 0.0_qp
             whole_slope = 0.0_qp
@@ -326,6 +500,11 @@ contains
         values%angle = whole_factor*one_minus_big_r*whole(1) + part(1)
         values%angle_dr_smooth = whole_factor*(one_minus_big_r*whole_slope(1) - whole(1)) &
                                  + part(2)
+        if (level == level_final) then
+            ! sums of terms of one sign, each within a few roundings of xp
+            values%angle_dr_error = 100.0_qp*hardware_epsilon*abs(part(2))
+            values%arclength_dr_error = 100.0_qp*hardware_epsilon*big_r*abs(part(5))
+        end if
 
         if (want_derivative) then
             z_l = big_r/r
@@ -376,7 +555,7 @@ contains
         ! the tables' values are about 1: an absolute tolerance a tenth of the level's
         tolerance = 0.1_qp*10.0_qp**(-level_digits(level))
         ! (the T correction's slope is not needed: see two_point's Hamilton-Jacobi step)
-        if (level == level_fine) then
+        if (level == level_fine .or. level == level_final) then
             call model%whole(1)%evaluate(big_r, whole(1), slope(1))
             if (want_length_time) then
                 call model%whole(2)%evaluate(big_r, whole(2), slope(2))
@@ -407,17 +586,25 @@ contains
     !! v = tau from the apse or v = eta from the start, both with
     !! d lambda = 2 dv/(1 + v^2). The last entry is filled only with both flags set.
     pure subroutine sweep(model, j, big_r, one_minus_big_r, upper, from_apse, &
-                          want_derivative, want_length_time, sums)
+                          want_derivative, want_length_time, hardware_slopes, sums)
         type(inverse_square_model), intent(in) :: model
         integer, intent(in) :: j  !! the rule: model%gauss(j), from `rule_index`
         real(qp), intent(in) :: big_r, one_minus_big_r, upper
         logical, intent(in) :: from_apse, want_derivative, want_length_time
+        logical, intent(in) :: hardware_slopes !! the d/dR sums in `xp` (level_final)
         real(qp), intent(out) :: sums(5)
         real(qp) :: v, v2, jacobian, c, s, c2, z, q, theta_term, lengths, inverse
         real(qp) :: s_big_q, inverse_d, length_term, two_z_plus
+        real(xp) :: slopes(2)
+        logical :: quad_slopes
         integer :: k
 
         sums = 0.0_qp
+        slopes = 0.0_xp
+        s_big_q = 0.0_qp
+        inverse_d = 0.0_qp
+        length_term = 0.0_qp
+        quad_slopes = want_derivative .and. .not. hardware_slopes
         if (upper <= 0.0_qp) return
         associate (rule => model%gauss(j))
         do k = 1, rule%n
@@ -433,12 +620,12 @@ contains
             end if
             c2 = c*c
             z = big_r + one_minus_big_r*c2
-            two_z_plus = z + z + one_minus_big_r
+            if (quad_slopes) two_z_plus = z + z + one_minus_big_r
             q = z*(z + one_minus_big_r) + one_minus_big_r
             inverse = inverse_sqrt(q)
             theta_term = rule%double_weight(k)*jacobian*c2*inverse
             sums(1) = sums(1) + theta_term
-            if (want_derivative) then
+            if (quad_slopes) then
                 sums(2) = sums(2) - theta_term*(inverse*inverse)*(z*(z + z) + &
                           one_minus_big_r*(z + 1.0_qp + two_z_plus*(s*s)))
             end if
@@ -449,15 +636,22 @@ contains
                 length_term = lengths*c
                 sums(3) = sums(3) + length_term
                 sums(4) = sums(4) + lengths
-                if (want_derivative) then
+                if (quad_slopes) then
                     ! dq/dR = (2z + 1 - R) s^2 - (1 + z); d(1/(QD))/dR = -(1/(QD)) dq/dR
                     ! (D + sQ)/(2 Q^2 D)
                     sums(5) = sums(5) + length_term*(two_z_plus*(s*s) - (1.0_qp + z)) &
                               *(1.0_qp + s_big_q + s_big_q)*(inverse*inverse)*inverse_d
                 end if
             end if
+            if (want_derivative .and. hardware_slopes) then
+                call add_slopes_xp(real(z, xp), real(s, xp), real(inverse, xp), &
+                                   real(theta_term, xp), real(one_minus_big_r, xp), &
+                                   want_length_time, real(length_term, xp), &
+                                   real(s_big_q, xp), real(inverse_d, xp), slopes)
+            end if
         end do
         end associate
+        if (hardware_slopes) sums([2, 5]) = real(slopes, qp)
         ! common factors: Theta 2(1-R) c^2/Q; S 2(1-R) c^3/(QD); T 2 sqrt(1-R) c^2/(QD);
         ! d/dR of the S integrand: -2 c^3/(QD) - (1-R) c^3 q_R (D + sQ)/(Q^3 D^2)
         sums(1) = sums(1)*upper*one_minus_big_r
@@ -466,6 +660,23 @@ contains
         sums(3) = sums(3)*upper*one_minus_big_r
         sums(4) = sums(4)*upper*sqrt(one_minus_big_r)
     end subroutine sweep
+
+    !> The d/dR integrands of `sweep` at one node, added in hardware precision.
+    pure subroutine add_slopes_xp(z, s, inverse, theta_term, one_minus_big_r, &
+                                  want_length_time, length_term, s_big_q, inverse_d, slopes)
+        real(xp), intent(in) :: z, s, inverse, theta_term, one_minus_big_r
+        logical, intent(in) :: want_length_time
+        real(xp), intent(in) :: length_term, s_big_q, inverse_d
+        real(xp), intent(inout) :: slopes(2)
+        real(xp) :: two_z_plus
+        two_z_plus = z + z + one_minus_big_r
+        slopes(1) = slopes(1) - theta_term*(inverse*inverse)*(z*(z + z) + &
+                    one_minus_big_r*(z + 1.0_xp + two_z_plus*(s*s)))
+        if (want_length_time) then
+            slopes(2) = slopes(2) + length_term*(two_z_plus*(s*s) - (1.0_xp + z)) &
+                        *(1.0_xp + s_big_q + s_big_q)*(inverse*inverse)*inverse_d
+        end if
+    end subroutine add_slopes_xp
 
     !> Check 0 < R < 1, R <= r <= 1, all finite.
     pure function check_radii(r, big_r) result(status)
@@ -493,7 +704,7 @@ contains
         time = 0.0_qp
         status = check_radii(r, big_r)
         if (status /= status_ok) return
-        values = self%evaluate_arch(level_fine, second, r, big_r, r - big_r, .false., .true.)
+        values = evaluate_arch(self, level_fine, second, r, big_r, r - big_r, .false., .true.)
         angle = values%angle
         arclength = values%arclength
         time = values%time
@@ -510,7 +721,7 @@ contains
         value = 0.0_qp
         status = check_radii(r, big_r)
         if (status /= status_ok) return
-        values = self%evaluate_arch(level_fine, .false., r, big_r, r - big_r, .false., .false.)
+        values = evaluate_arch(self, level_fine, .false., r, big_r, r - big_r, .false., .false.)
         value = values%angle
     end subroutine theta
 

@@ -64,11 +64,14 @@ module brachistochrone_repulsive
     use brachistochrone_kinds, only: qp, pi, eps_qp
     use brachistochrone_status, only: status_ok, status_psi_out_of_range, &
                                       status_not_finite, status_invalid_argument, &
-                                      status_no_convergence, status_rho_below_start
+                                      status_no_convergence, status_rho_below_start, &
+                                      keep_first, first_failure
     use brachistochrone_quadrature, only: univariate_integrand, gauss_legendre_rule, &
             gauss_legendre, integrate_adaptive
     use brachistochrone_roots, only: root_function, bracketed_secant
     use brachistochrone_quad_math, only: expm1
+    use brachistochrone_solution, only: endpoint_status, region_outside
+    use brachistochrone_arches, only: arch_unbounded, arch_first, arch_second
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan, ieee_value, &
                                              ieee_positive_inf
     implicit none
@@ -78,15 +81,13 @@ module brachistochrone_repulsive
     public :: curve_from_k2, curve_from_gap, curve_from_apse, curve_from_apse_gap
     public :: repulsive_values, critical_values, repulsive_radial_time
     public :: solve_repulsive
-    public :: arch_unbounded, arch_first_half, arch_second_half, critical_k2, critical_floor
+    public :: critical_k2, critical_floor
 
     !> K^2 of the critical brachistochrone.
     real(qp), parameter :: critical_k2 = 27.0_qp/8.0_qp
     !> Smallest |g| (and 3 - 2R) used by the solver: about eps^1.75 ~ 1e-59, where
     !! sqrt(beta) ~ 1e-30 is still far above the rounding of a = (3 - g)/2.
     real(qp), parameter :: critical_floor = eps_qp**1.75_qp
-    !> Values of `repulsive_solution%arch`.
-    integer, parameter :: arch_unbounded = 0, arch_first_half = 1, arch_second_half = 2
 
     real(qp), parameter :: sqrt2 = sqrt(2.0_qp), sqrt3 = sqrt(3.0_qp)
     !> Relative accuracy asked of each integral piece.
@@ -121,7 +122,7 @@ module brachistochrone_repulsive
         real(qp) :: target = 0.0_qp     !! swept angle: psi + 2 pi m or 2 pi (m+1) - psi
         integer :: winding = 0          !! m
         logical :: clockwise = .false.  !! mirror image (reaches B turning clockwise)
-        integer :: arch = arch_unbounded !! arch_unbounded, arch_first_half, arch_second_half
+        integer :: arch = arch_unbounded !! arch_unbounded, arch_first or arch_second
         type(repulsive_curve) :: curve  !! K, g and (bounded) R
         real(qp) :: angle = 0.0_qp      !! theta(rho) recomputed on the solution
         real(qp) :: arclength = 0.0_qp  !! s
@@ -389,7 +390,7 @@ contains
         call integrate_adaptive(f, lower, upper, rule, integral_tolerance, 0.0_qp, value, &
                                 error, stat)
         total = total + value
-        status = max(status, stat)
+        call keep_first(status, stat)
     end subroutine add_piece
 
     !> One integral (kind) from radius 1 to r along the first (half-)arch.
@@ -526,7 +527,7 @@ contains
             length = 2.0_qp*apse(2) - length
             time = 2.0_qp*apse(3) - time
         end if
-        status = maxval(stat)
+        status = first_failure(stat)
     end subroutine repulsive_values
 
     !> The critical brachistochrone K^2 = 27/8, Q = (x - 3/2)^2 (x + 3), in closed form
@@ -599,10 +600,10 @@ contains
         df = 0.0_qp
         call curve_of_lambda(self%arch, x, curve)
         call first_integral(curve, want_angle, self%rho, self%rule, angle, status)
-        if (self%arch == arch_second_half) then
+        if (self%arch == arch_second) then
             call first_integral(curve, want_angle, curve%apse, self%rule, apse, stat)
             angle = 2.0_qp*apse - angle
-            status = max(status, stat)
+            call keep_first(status, stat)
         end if
         f = angle - self%target
     end subroutine mismatch_evaluate
@@ -657,7 +658,7 @@ contains
         end do
         solution%steps = steps + walks
         call curve_of_lambda(arch, x, solution%curve)
-        call repulsive_values(solution%curve, rho, arch == arch_second_half, &
+        call repulsive_values(solution%curve, rho, arch == arch_second, &
                               solution%angle, solution%arclength, solution%time, status)
         solution%status = status
     end subroutine solve_branch
@@ -683,14 +684,8 @@ contains
         logical :: mirror_distinct
         best = 0
         allocate (solutions(0))
-        if (.not. (ieee_is_finite(rho) .and. ieee_is_finite(psi))) then
-            status = status_not_finite
-            return
-        else if (rho < 1.0_qp) then
-            status = status_rho_below_start
-            return
-        else if (psi < 0.0_qp .or. psi > pi) then
-            status = status_psi_out_of_range
+        status = endpoint_status(rho, psi, region_outside)
+        if (status /= status_ok) then
             return
         else if (max_windings < 0) then
             status = status_invalid_argument
@@ -745,15 +740,15 @@ contains
                 solution%status = stat_values
             else if (rho == 1.0_qp) then
                 ! complete arches: lambda = log(3 - 2R) up to 0 (R -> 1, angle -> 0)
-                call solve_branch(rho, target, arch_second_half, 0.0_qp, -target, solution)
+                call solve_branch(rho, target, arch_second, 0.0_qp, -target, solution)
             else if (rho >= 1.5_qp .or. target < angle_critical) then
                 call solve_branch(rho, target, arch_unbounded, log(3.0_qp), -target, &
                                   solution)
             else if (target <= angle_apse) then
-                call solve_branch(rho, target, arch_first_half, log(3.0_qp - 2.0_qp*rho), &
+                call solve_branch(rho, target, arch_first, log(3.0_qp - 2.0_qp*rho), &
                                   angle_apse - target, solution)
             else
-                call solve_branch(rho, target, arch_second_half, &
+                call solve_branch(rho, target, arch_second, &
                                   log(3.0_qp - 2.0_qp*rho), angle_apse - target, solution)
             end if
         end subroutine solve_target

@@ -3,7 +3,7 @@
 !! Tee 1998, sec. 5: the brachistochrone through B is found from its apse radius R-bar,
 !! the root in (0, rho] of Upsilon(R) = psi, where Upsilon(R) = Theta(rho,R) if B is on
 !! the first half-arch (psi <= Theta(rho,rho)) and 2 Theta(R,R) - Theta(rho,R) on the
-!! second. The half-arch is decided once, from the endpoint (see ERRATA.md).
+!! second. The half-arch is decided once, from the endpoint (see docs/ERRATA.md).
 !!
 !! Two solvers:
 !! - `solve_endpoint` (default, no guesses): (0, rho] brackets the root. It is split at
@@ -12,59 +12,59 @@
 !!   u^2 keep full precision for endpoints next to the apse. In the lower part the unknown
 !!   is R itself (second half-arch: Upsilon = 2 pi/3 - 1.619 R + O(R^(3/2))) or log R
 !!   (first half-arch: Theta(rho,R) ~ C R^(3/2)), so tiny R-bar keeps its relative
-!!   precision. Safeguarded Newton on 17-digit rules, then one step on full
-!!   quad-precision rules that also yields s and t (`final_step`); the derivative is
+!!   precision. Safeguarded Newton on 19-digit rules evaluated in hardware precision
+!!   (x87 extended, `level_hardware`: about a microsecond each), then one step on full
+!!   quad-precision rules that also yields s and t (`final_step`), the one
+!!   software-binary128 evaluation per endpoint in the usual case; the derivative is
 !!   differentiated under the integral sign (eq. 67-71) plus the boundary term of the
 !!   moving limit L(R).
 !! - `solve_endpoint_secant`: the paper's secant method from R0, R1 with its stopping
 !!   rule |R_n - R_(n-1)| < tol and a step count, which reproduces Table 1.
 module brachistochrone_two_point
     use brachistochrone_kinds, only: qp, pi, eps_qp
-    use brachistochrone_status, only: status_ok, status_inaccessible, &
-                                      status_rho_out_of_range, status_psi_out_of_range, &
-                                      status_not_finite, status_outside_domain
+    use brachistochrone_status, only: status_ok, status_inaccessible, status_outside_domain, &
+                                      status_no_convergence
+    use brachistochrone_solution, only: endpoint_solution, endpoint_status, region_inside
     use brachistochrone_closed_forms, only: radial_time, kappa_time, inaccessible_angle
-    use brachistochrone_inverse_square, only: inverse_square_model, arch_values, level_fine, &
-            level_coarse, level_rough, level_digits
+    use brachistochrone_inverse_square, only: inverse_square_model, evaluate_arch, arch_values, &
+            level_fine, level_hardware, level_final, hardware_epsilon
     use brachistochrone_roots, only: root_function, newton_bracketed, secant
-    use brachistochrone_arches, only: arch_none, arch_first, arch_second, arch_complete, &
-                                      arch_radial, arch_inaccessible, arch_word
+    use brachistochrone_arches, only: arch_first, arch_second, arch_complete, arch_radial, &
+                                      arch_inaccessible
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     implicit none
     private
 
-    public :: endpoint_solution, solve_endpoint, solve_endpoint_secant
-    public :: arch_none, arch_first, arch_second, arch_complete, arch_radial, &
-              arch_inaccessible, arch_word
+    public :: solve_endpoint, solve_endpoint_secant
 
     !> Limit on root-finder evaluations per phase.
     integer, parameter :: max_steps = 200
-    !> Relative tolerance of the 17-digit phase: near its noise, so that one
-    !! full-precision Newton step is short enough for `final_step`.
-    real(qp), parameter :: coarse_tolerance = 1.0e-16_qp
+    !> Steps down in log R (by 4 each) looking for the lower end of the bracket.
+    integer, parameter :: max_probes = 100
+    !> The phase before the full-precision step runs in hardware precision
+    !! (level_hardware, 19-digit rules): its relative tolerance and the accuracy of its
+    !! evaluations, from the rounding of the hardware kind (x87 extended: 1.1e-17 and
+    !! 1.1e-18, so that the full-precision Newton step is below 1e-17 of the bracket and
+    !! `final_step` accepts it; where the widest hardware kind is double, 2.2e-14 and
+    !! 2.2e-15, and the full-precision phase takes more steps).
+    real(qp), parameter :: hardware_tolerance = 100.0_qp*hardware_epsilon
+    real(qp), parameter :: hardware_accuracy = max(1.0e-19_qp, 10.0_qp*hardware_epsilon)
 
     !> Unknowns of the default solver.
     integer, parameter :: unknown_u = 1, unknown_r = 2, unknown_log_r = 3
 
-    !> Everything known about one endpoint after solving.
-    type :: endpoint_solution
-        real(qp) :: rho = 0.0_qp          !! endpoint radius
-        real(qp) :: psi = 0.0_qp          !! endpoint angle (radians)
-        integer :: arch = arch_none       !! arch_first, arch_second, ...
-        real(qp) :: apse_radius = 0.0_qp  !! R-bar (0 for radial fall)
-        !> rho - R-bar as the solver carried it (exact near the apse, where rho - R-bar
-        !! computed from the rounded R-bar would lose digits); 0 when there is no R-bar
-        real(qp) :: apse_gap = 0.0_qp
-        real(qp) :: arclength = 0.0_qp    !! s, arclength from A to B
-        real(qp) :: time = 0.0_qp         !! t, time from A to B (kappa when inaccessible)
-        integer :: steps = 0              !! root-finder evaluations (secant steps)
-        integer :: status = status_ok     !! status code
-        logical :: has_apse_radius = .false. !! R-bar exists
-        logical :: has_arclength = .false.   !! s exists
-        logical :: has_time = .false.        !! t exists
-    end type endpoint_solution
-
     !> Upsilon(R) - psi in one of the unknowns, for the root finders.
+    !> The bracket of the root in the solver's unknown: its ends, the signs of Upsilon -
+    !! psi there, a start, the curvature measured so far, and Upsilon - psi at rho/2.
+    type :: root_bracket
+        real(qp) :: lo = 0.0_qp, hi = 0.0_qp      !! the ends
+        real(qp) :: f_lo = 0.0_qp, f_hi = 0.0_qp  !! Upsilon - psi there (signs)
+        real(qp) :: x0 = 0.0_qp                   !! start, then the early phase's root
+        real(qp) :: curvature = 0.0_qp            !! |f''/2f'| measured (0: unknown)
+        real(qp) :: half = 0.0_qp                 !! rho/2
+        real(qp) :: f_half = 0.0_qp               !! Upsilon - psi at R = rho/2
+    end type root_bracket
+
     type, extends(root_function) :: upsilon_function
         type(inverse_square_model) :: model
         integer :: level = level_fine
@@ -94,12 +94,9 @@ contains
         solution%psi = psi
         apse_angle_rho = 0.0_qp
         done = .true.
-        if (.not. (ieee_is_finite(rho) .and. ieee_is_finite(psi))) then
-            solution%status = status_not_finite
-        else if (rho <= 0.0_qp .or. rho > 1.0_qp) then
-            solution%status = status_rho_out_of_range
-        else if (psi < 0.0_qp .or. psi > pi) then
-            solution%status = status_psi_out_of_range
+        solution%status = endpoint_status(rho, psi, region_inside)
+        if (solution%status /= status_ok) then
+            return
         else if (psi >= inaccessible_angle) then
             solution%arch = arch_inaccessible
             solution%status = status_inaccessible
@@ -187,7 +184,7 @@ contains
             return
         end if
         status = status_ok
-        values = self%model%evaluate_arch(self%level, self%second, self%rho, big_r, d, &
+        values = evaluate_arch(self%model, self%level, self%second, self%rho, big_r, d, &
                                           .true., .false.)
         df = self%slope_in_unknown(x, big_r, d, values%angle_dr_smooth, &
                                    values%boundary_sign*values%boundary)
@@ -208,124 +205,182 @@ contains
         real(qp), intent(in) :: psi                     !! endpoint angle
         type(endpoint_solution) :: solution
         type(upsilon_function) :: fun
-        type(arch_values) :: values
-        real(qp) :: apse_angle_rho, half, f_half, f_end, lo, hi, f_lo, f_hi, x, x0
-        real(qp) :: big_r, d, log_lo, theta_half, slope, slope_lo, curvature
-        integer :: steps, status, probe
-        logical :: done, low_region, inside
+        type(root_bracket) :: b
+        real(qp) :: apse_angle_rho, x, big_r, d
+        integer :: steps, status
+        logical :: done, inside
 
         call classify(model, rho, psi, solution, apse_angle_rho, done)
         if (done) return
         fun = upsilon_function(model=model, level=level_fine, &
                                second=solution%arch /= arch_first, rho=rho, psi=psi)
-
         if (psi == apse_angle_rho) then
             ! B is the apse itself
-            big_r = rho
-            d = 0.0_qp
-        else
-            ! Which half of (0, rho] holds the root: Upsilon at R = rho/2, on the rough
-            ! rules unless the sign is in doubt
-            half = 0.5_qp*rho
-            values = model%evaluate_arch(level_rough, fun%second, rho, half, rho - half, &
-                                         .true., .false.)
-            if (abs(values%angle - psi) < 1.0e-6_qp*psi) then
-                values = model%evaluate_arch(level_fine, fun%second, rho, half, &
-                                             rho - half, .true., .false.)
-            end if
-            f_half = values%angle - psi
-            theta_half = values%angle
-            if (fun%second) then
-                low_region = f_half <= 0.0_qp
-            else
-                low_region = f_half >= 0.0_qp
-            end if
-            solution%steps = 1
-            curvature = 0.0_qp
-            if (.not. low_region) then
-                ! unknown u = sqrt(rho - R) in [0, sqrt(rho/2)]; at u = 0 (the apse)
-                ! Upsilon = Theta(rho,rho) and dUpsilon/du = -+ 2 B(rho,rho), with
-                ! B(rho,rho) = sqrt((1-rho)/(rho (3 - 2 rho))) in closed form
-                fun%unknown = unknown_u
-                lo = 0.0_qp
-                hi = sqrt(rho - half)
-                f_lo = apse_angle_rho - psi
-                slope_lo = -2.0_qp*merge(-1.0_qp, 1.0_qp, fun%second) &
-                           *sqrt((1.0_qp - rho)/(rho*(3.0_qp - 2.0_qp*rho)))
-                f_hi = f_half
-                slope = -2.0_qp*hi*values%angle_dr_smooth &
-                        - 2.0_qp*values%boundary_sign*values%boundary
-                x0 = hermite_start(f_lo, slope_lo, hi, f_hi, slope)
-            else if (fun%second) then
-                ! unknown R in [0, rho/2]; at R -> 0, Upsilon = 2 pi/3 + 2 Theta_R(0) R
-                fun%unknown = unknown_r
-                lo = 0.0_qp
-                hi = half
-                f_lo = inaccessible_angle - psi
-                slope_lo = 2.0_qp*model%apse_slope_at_zero
-                f_hi = f_half
-                slope = values%angle_dr_smooth &
-                        + values%boundary_sign*values%boundary/sqrt(rho - half)
-                x0 = hermite_start(f_lo, slope_lo, hi, f_hi, slope)
-            else
-                ! first half-arch, small R: Theta(rho,R) ~ C R^(3/2); unknown log R first
-                fun%unknown = unknown_log_r
-                fun%level = level_coarse
-                hi = log(half)
-                x0 = hi + (2.0_qp/3.0_qp)*log(psi/theta_half)
-                log_lo = x0 - 2.0_qp
-                do probe = 1, 100
-                    call fun%evaluate(log_lo, f_lo, f_end, status)
-                    solution%steps = solution%steps + 1
-                    if (status == status_ok .and. f_lo < 0.0_qp) exit
-                    log_lo = log_lo - 4.0_qp
-                end do
-                call newton_bracketed(fun, log_lo, f_lo, hi, 1.0_qp, x0, coarse_tolerance, &
-                                      0.0_qp, max_steps, x, steps, status, curvature, &
-                                      10.0_qp**(-level_digits(level_coarse)))
-                solution%steps = solution%steps + steps
-                ! then R itself at full precision, on the same bracket; with f(R) = g(log R)
-                ! the curvature |f''/2f'| = |g'' - g'|/(2 |g'| R) <= (2 |g''/2g'| + 1)/(2R)
-                fun%unknown = unknown_r
-                lo = exp(log_lo)
-                hi = half
-                f_lo = -1.0_qp
-                f_hi = f_half
-                x0 = exp(x)
-                if (curvature > 0.0_qp) curvature = (2.0_qp*curvature + 1.0_qp)/(2.0_qp*x0)
-            end if
-            if (fun%unknown /= unknown_r .or. fun%second) then
-                ! 17-digit phase, which also measures the curvature of Upsilon - psi:
-                ! the full-precision phase then usually needs one step
-                x = x0
-                fun%level = level_coarse
-                call newton_bracketed(fun, lo, f_lo, hi, f_hi, x, coarse_tolerance, 0.0_qp, &
-                                      max_steps, x0, steps, status, curvature, &
-                                      10.0_qp**(-level_digits(level_coarse)))
-                solution%steps = solution%steps + steps
-            end if
-            ! full-precision phase
-            fun%level = level_fine
-            call final_step(fun, lo, hi, x0, curvature, solution, done)
-            if (done) return
-            ! otherwise iterate on, from the Newton step final_step took when in the bracket
-            call newton_bracketed(fun, lo, f_lo, hi, f_hi, x0, 4.0_qp*eps_qp, &
-                                  tiny(1.0_qp), max_steps, x, steps, status, curvature)
-            solution%steps = solution%steps + steps
-            if (status /= status_ok) then
-                solution%status = status
-                return
-            end if
-            call fun%radius_of(x, big_r, d, inside)
+            call finish(model, solution, fun%second, rho, 0.0_qp)
+            return
         end if
+        call open_bracket(fun, apse_angle_rho, b, solution%steps)
+        if (fun%unknown == unknown_log_r) then
+            call log_phase(fun, b, solution%steps, status)
+        else
+            call hardware_phase(fun, b, solution%steps, status)
+        end if
+        if (status /= status_ok) then
+            solution%status = status
+            return
+        end if
+        ! full-precision phase: usually one step, certified by the measured curvature
+        fun%level = level_fine
+        call final_step(fun, b%lo, b%hi, b%x0, b%curvature, solution, done)
+        if (done) return
+        ! otherwise iterate on, from the Newton step final_step took when in the bracket
+        call newton_bracketed(fun, b%lo, b%f_lo, b%hi, b%f_hi, b%x0, 4.0_qp*eps_qp, &
+                              tiny(1.0_qp), max_steps, x, steps, status, b%curvature)
+        solution%steps = solution%steps + steps
+        if (status /= status_ok) then
+            solution%status = status
+            return
+        end if
+        call fun%radius_of(x, big_r, d, inside)
         call finish(model, solution, fun%second, big_r, d)
     end function solve_endpoint
 
+    !> The unknown and its bracket: Upsilon at R = rho/2 (in hardware precision unless
+    !! the sign is in doubt) says which half of (0, rho] holds the root. Near the apse the
+    !! unknown is u = sqrt(rho - R), below rho/2 it is R (second half-arch) or log R
+    !! (first half-arch). One evaluation, counted in `steps`.
+    pure subroutine open_bracket(fun, apse_angle_rho, b, steps)
+        type(upsilon_function), intent(inout) :: fun !! sets its unknown
+        real(qp), intent(in) :: apse_angle_rho       !! Theta(rho, rho)
+        type(root_bracket), intent(out) :: b         !! bracket, end signs, start
+        integer, intent(out) :: steps                !! evaluations made
+        type(arch_values) :: values
+        real(qp) :: rho, psi, slope, slope_lo
+        logical :: low_region
+        rho = fun%rho
+        psi = fun%psi
+        b%half = 0.5_qp*rho
+        values = evaluate_arch(fun%model, level_hardware, fun%second, rho, b%half, &
+                               rho - b%half, .true., .false.)
+        if (abs(values%angle - psi) < 1.0e-6_qp*psi) then
+            values = evaluate_arch(fun%model, level_fine, fun%second, rho, b%half, &
+                                   rho - b%half, .true., .false.)
+        end if
+        b%f_half = values%angle - psi
+        low_region = merge(b%f_half <= 0.0_qp, b%f_half >= 0.0_qp, fun%second)
+        steps = 1
+        b%f_hi = b%f_half
+        if (.not. low_region) then
+            ! unknown u = sqrt(rho - R) in [0, sqrt(rho/2)]; at u = 0 (the apse)
+            ! Upsilon = Theta(rho,rho) and dUpsilon/du = -+ 2 B(rho,rho), with
+            ! B(rho,rho) = sqrt((1-rho)/(rho (3 - 2 rho))) in closed form
+            fun%unknown = unknown_u
+            b%hi = sqrt(rho - b%half)
+            b%f_lo = apse_angle_rho - psi
+            slope_lo = -2.0_qp*merge(-1.0_qp, 1.0_qp, fun%second) &
+                       *sqrt((1.0_qp - rho)/(rho*(3.0_qp - 2.0_qp*rho)))
+            slope = -2.0_qp*b%hi*values%angle_dr_smooth &
+                    - 2.0_qp*values%boundary_sign*values%boundary
+            b%x0 = hermite_start(b%f_lo, slope_lo, b%hi, b%f_hi, slope)
+        else if (fun%second) then
+            ! unknown R in [0, rho/2]; at R -> 0, Upsilon = 2 pi/3 + 2 Theta_R(0) R
+            fun%unknown = unknown_r
+            b%hi = b%half
+            b%f_lo = inaccessible_angle - psi
+            slope_lo = 2.0_qp*fun%model%apse_slope_at_zero
+            slope = values%angle_dr_smooth &
+                    + values%boundary_sign*values%boundary/sqrt(rho - b%half)
+            b%x0 = hermite_start(b%f_lo, slope_lo, b%hi, b%f_hi, slope)
+        else
+            ! first half-arch, small R: Theta(rho,R) ~ C R^(3/2); unknown log R first
+            fun%unknown = unknown_log_r
+            b%hi = log(b%half)
+            b%x0 = b%hi + (2.0_qp/3.0_qp)*log(psi/values%angle)
+        end if
+    end subroutine open_bracket
+
+    !> First half-arch below rho/2: Newton in log R on the hardware rules (the lower
+    !! end of the bracket found by stepping down), then the bracket and start in R for
+    !! the full-precision phase. status: status_ok, status_no_convergence when no lower
+    !! end is found, or an evaluation's status.
+    pure subroutine log_phase(fun, b, steps, status)
+        type(upsilon_function), intent(inout) :: fun !! unknown log R, then R
+        type(root_bracket), intent(inout) :: b       !! the bracket, in log R then in R
+        integer, intent(inout) :: steps              !! evaluations made
+        integer, intent(out) :: status               !! the phase's status
+        real(qp) :: log_lo, f_lo, f_end, x
+        integer :: probe, used
+        fun%level = level_hardware
+        log_lo = b%x0 - 2.0_qp
+        do probe = 1, max_probes
+            call fun%evaluate(log_lo, f_lo, f_end, status)
+            steps = steps + 1
+            if (status == status_ok .and. f_lo < 0.0_qp) exit
+            log_lo = log_lo - 4.0_qp
+        end do
+        if (status /= status_ok) return
+        if (.not. f_lo < 0.0_qp) then
+            status = status_no_convergence
+            return
+        end if
+        call newton_bracketed(fun, log_lo, f_lo, b%hi, 1.0_qp, b%x0, hardware_tolerance, &
+                              0.0_qp, max_steps, x, used, status, b%curvature, &
+                              hardware_accuracy)
+        steps = steps + used
+        call accept_phase(status, b%curvature)
+        if (status /= status_ok) return
+        ! then R itself at full precision, on the same bracket; with f(R) = g(log R)
+        ! the curvature |f''/2f'| = |g'' - g'|/(2 |g'| R) <= (2 |g''/2g'| + 1)/(2R)
+        fun%unknown = unknown_r
+        b%lo = exp(log_lo)
+        b%hi = b%half
+        b%f_lo = -1.0_qp
+        b%f_hi = b%f_half
+        b%x0 = exp(x)
+        if (b%curvature > 0.0_qp) b%curvature = (2.0_qp*b%curvature + 1.0_qp)/(2.0_qp*b%x0)
+    end subroutine log_phase
+
+    !> Newton on the hardware rules to about 1e-17, which also measures the curvature of
+    !! Upsilon - psi: the full-precision phase then usually needs one step. status:
+    !! status_ok or an evaluation's status.
+    pure subroutine hardware_phase(fun, b, steps, status)
+        type(upsilon_function), intent(inout) :: fun !! the function
+        type(root_bracket), intent(inout) :: b       !! bracket; x0 becomes the root
+        integer, intent(inout) :: steps              !! evaluations made
+        integer, intent(out) :: status               !! the phase's status
+        real(qp) :: x
+        integer :: used
+        x = b%x0
+        fun%level = level_hardware
+        call newton_bracketed(fun, b%lo, b%f_lo, b%hi, b%f_hi, x, hardware_tolerance, &
+                              0.0_qp, max_steps, b%x0, used, status, b%curvature, &
+                              hardware_accuracy)
+        steps = steps + used
+        call accept_phase(status, b%curvature)
+    end subroutine hardware_phase
+
+    !> The verdict on an early phase: its root is only a start for the full-precision
+    !! phase, so a phase that ran out of steps (status_no_convergence, its last iterate
+    !! still inside the bracket) is accepted without its curvature (final_step then
+    !! certifies nothing and Newton goes on); an evaluation's failure stays a failure.
+    pure subroutine accept_phase(status, curvature)
+        integer, intent(inout) :: status      !! the phase's status
+        real(qp), intent(inout) :: curvature  !! its measured curvature
+        if (status == status_no_convergence) then
+            status = status_ok
+            curvature = 0.0_qp
+        end if
+    end subroutine accept_phase
+
     !> The full-precision step, when one suffices: one evaluation at x0 on the full rules,
     !! with s and t there and the slopes of Upsilon and s. The Newton step dx from x0 is
-    !! accepted when it stays in the bracket, the curvature measured on the 17-digit
+    !! accepted when it stays in the bracket, the curvature measured on the 19-digit
     !! phase certifies it (error about K dx^2 below the tolerance), and it is so short
     !! (|dx| <= 1e-17 of the bracket) that s is linear over it to far below rounding.
+    !! The slopes of Upsilon and s enter only through dx, so they are summed in hardware
+    !! precision (level_final, about a third less binary128 work); their error bounds
+    !! are part of the certification (the step error |dx| err(f')/|f'| and err(s') |dx|
+    !! must stay below the tolerance and a rounding of s).
     !! Then the root and s, t there need no further evaluation:
     !! - s(x0 + dx) = s(x0) + s'(x0) dx;
     !! - t by Hamilton-Jacobi: along the extremals from A at fixed rho, dt/dpsi = K, the
@@ -341,14 +396,16 @@ contains
         logical, intent(out) :: done
         type(arch_values) :: values
         real(qp) :: big_r, d, f, df, ds, dx, x, start, tolerance, mid_r, mid_d, conserved
+        real(qp) :: slope_error
         logical :: inside
 
         done = .false.
         start = x0
         call fun%radius_of(start, big_r, d, inside)
         if (.not. inside) return
-        values = fun%model%evaluate_arch(level_fine, fun%second, fun%rho, big_r, d, &
-                                         .true., .true.)
+        ! full rules; the slopes (used only for a step below 1e-17) in hardware precision
+        values = evaluate_arch(fun%model, level_final, fun%second, fun%rho, big_r, d, &
+                               .true., .true.)
         solution%steps = solution%steps + 1
         f = values%angle - fun%psi
         df = fun%slope_in_unknown(start, big_r, d, values%angle_dr_smooth, &
@@ -359,11 +416,17 @@ contains
         if (.not. (ieee_is_finite(x) .and. x > lo .and. x < hi)) return
         x0 = x
         if (abs(dx) > 1.0e-17_qp*(hi - lo)) return
-        ! certified: below the tolerance, or a known curvature K with K dx^2 below it
-        if (abs(dx) > tolerance .and. &
-            (curvature <= 0.0_qp .or. 4.0_qp*curvature*dx*dx > tolerance)) return
+        ! certified: below the tolerance, or a known curvature K with K dx^2, plus the
+        ! part of dx that the slope's error bound moves, below it
+        slope_error = abs(dx*fun%slope_in_unknown(start, big_r, d, values%angle_dr_error, &
+                                                   0.0_qp)/df)
+        if (abs(dx) > tolerance .and. (curvature <= 0.0_qp .or. &
+            4.0_qp*curvature*dx*dx + slope_error > tolerance)) return
         ds = fun%slope_in_unknown(start, big_r, d, values%arclength_dr_smooth, &
                                   values%boundary_sign*values%arclength_boundary)
+        ! s(x0) + s'(x0) dx: the error of s' moves s by below a rounding
+        if (abs(dx*fun%slope_in_unknown(start, big_r, d, values%arclength_dr_error, &
+                                        0.0_qp)) > eps_qp*abs(values%arclength)) return
         call fun%radius_of(start + 0.5_qp*dx, mid_r, mid_d, inside)
         conserved = sqrt(mid_r**3/(2.0_qp*((1.0_qp - fun%rho) + mid_d)))
         call fun%radius_of(x, big_r, d, inside)
@@ -417,7 +480,7 @@ contains
         logical, intent(in) :: second
         real(qp), intent(in) :: big_r, d
         type(arch_values) :: values
-        values = model%evaluate_arch(level_fine, second, solution%rho, big_r, d, &
+        values = evaluate_arch(model, level_fine, second, solution%rho, big_r, d, &
                                      .false., .true.)
         solution%apse_radius = big_r
         solution%apse_gap = d

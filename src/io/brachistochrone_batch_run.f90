@@ -4,44 +4,52 @@
 !! drivers (which only parse, decide and exit), so the serial/OpenMP program and the MPI
 !! program solve rows and write files with the same code and give the same bytes.
 module brachistochrone_batch_run
-    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
+    use, intrinsic :: iso_fortran_env, only: error_unit
     use brachistochrone_kinds, only: qp
-    use brachistochrone_inverse_square, only: inverse_square_model
-    use brachistochrone_two_point, only: endpoint_solution, solve_endpoint, solve_endpoint_secant
-    use brachistochrone_central_force, only: central_force_model, new_central_force_model
-    use brachistochrone_speed_laws, only: power_law, logarithmic_law, harmonic_law
-    use brachistochrone_repulsive, only: repulsive_solution, solve_repulsive, &
-            repulsive_arch_unbounded => arch_unbounded, repulsive_arch_first => arch_first_half
-    use brachistochrone_arches, only: arch_first, arch_second, arch_complete, arch_radial, &
-                                      arch_unbounded
+    use brachistochrone_solution, only: endpoint_solution
+    use brachistochrone_field_interface, only: brachistochrone_field
     use brachistochrone_status, only: status_ok, status_no_convergence
     use brachistochrone_endpoint_input, only: endpoint_table, message, read_endpoint_file, &
             max_curve_points
     use brachistochrone_result_output, only: output_request, write_outputs, write_table_header, &
                              write_table_row
     use brachistochrone_curve_output, only: write_curves
+    use brachistochrone_safe_file, only: safe_file, open_output, finish_output, &
+            commit_outputs, discard_outputs, same_file, same_name, standard_output, safe_ok, &
+            safe_refused
     use brachistochrone_version, only: program_name
     use brachistochrone_command_line, only: run_options, exit_ok, exit_input, exit_unsolved, exit_io
     use brachistochrone_run_support, only: progress_type, timestamp
-    use brachistochrone_strings, only: integer_text
+    use brachistochrone_strings, only: integer_text, escape_text
     implicit none
     private
 
     public :: prepare_run, print_report, solve_rows, deliver_results, check_slice, &
-              check_targets
+              check_targets, abandon_outputs
+
+    !> The outputs of this run (CSV, namelist, table, curves, and the table on standard
+    !! output), opened by `prepare_run` before any endpoint is solved, so that a missing
+    !! or read-only directory or an output in the way is found before the work.
+    type(safe_file), save :: outputs(5)
+    integer, parameter :: csv_file = 1, nml_file = 2, table_file = 3, curves_file = 4, &
+                          table_on_stdout = 5
 
 contains
 
     !> Everything before solving: read and check the input file, the slice and the
-    !! output targets. When `finished` is set the driver prints `report` (to stdout when
-    !! code = exit_ok, as for --check; to stderr otherwise) and exits with `code`.
-    subroutine prepare_run(options, table, first, last, report, code, finished)
+    !! output targets, and create the outputs' temporary files (`check_targets`; only
+    !! where `writes_files`, default true: rank 0 of the MPI driver). When `finished` is
+    !! set the driver prints `report` (to stdout when code = exit_ok, as for --check; to
+    !! stderr otherwise) and exits with `code` (exit_input, or exit_io when an output
+    !! cannot be created).
+    subroutine prepare_run(options, table, first, last, report, code, finished, writes_files)
         type(run_options), intent(in) :: options       !! the command line
         type(endpoint_table), intent(out) :: table     !! the input
         integer, intent(out) :: first, last           !! the rows to solve
         type(message), allocatable, intent(out) :: report(:) !! lines for the user
         integer, intent(out) :: code                   !! exit code when finished
         logical, intent(out) :: finished               !! the driver should exit now
+        logical, intent(in), optional :: writes_files  !! open the outputs (default true)
         character(len=:), allocatable :: text
         logical :: ok
         integer :: i
@@ -52,8 +60,8 @@ contains
         if (size(table%errors) > 0) then
             report = [(message(program_name//': '//table%errors(i)%text), &
                        i = 1, size(table%errors))]
-            report = [report, message(program_name//': '//integer_text(size(table%errors)) &
-                      //' problem(s) in '//options%input_path// &
+            report = [report, message(program_name//': '//integer_text(table%problems) &
+                      //' problem(s) in '//escape_text(options%input_path)// &
                       '; nothing was computed or written')]
             code = exit_input
             finished = .true.
@@ -64,76 +72,106 @@ contains
         call check_slice(table, first, last, ok, text)
         if (ok .and. len(options%request%curves_path) > 0 .and. table%curve_points == 0) then
             ok = .false.
-            text = '--curves '//options%request%curves_path//' needs the number of points '// &
-                   'per curve: set curve_points = N (2 <= N <= '// &
+            text = '--curves '//escape_text(options%request%curves_path)//' needs the '// &
+                   'number of points per curve: set curve_points = N (2 <= N <= '// &
                    integer_text(max_curve_points)//') in the group &endpoints of '// &
-                   options%input_path
+                   escape_text(options%input_path)
         end if
-        if (ok .and. .not. options%check_only) call check_targets(options%request, ok, text)
+        if (ok .and. .not. options%check_only) then
+            if (.not. present(writes_files)) then
+                call check_targets(options, code, text)
+            else if (writes_files) then
+                call check_targets(options, code, text)
+            end if
+            ok = code == exit_ok
+        end if
         if (.not. ok) then
             report = [message(program_name//': '//text)]
-            code = exit_input
+            if (code == exit_ok) code = exit_input
             finished = .true.
         else if (options%check_only) then
-            report = [message(options%input_path//': '//integer_text(table%n)// &
+            report = [message(escape_text(options%input_path)//': '//integer_text(table%n)// &
                               ' endpoints, valid')]
             finished = .true.
         end if
     end subroutine prepare_run
 
-    !> Print `prepare_run`'s report: stdout for a verdict, stderr for problems.
+    !> Print `prepare_run`'s report: stdout (checked: a failure is exit_io) for a verdict,
+    !! stderr for problems.
     subroutine print_report(report, code)
         type(message), intent(in) :: report(:) !! the lines
-        integer, intent(in) :: code            !! exit_ok: stdout; otherwise stderr
-        integer :: i
-        do i = 1, size(report)
-            if (code == exit_ok) then
-                write (output_unit, '(a)') report(i)%text
-            else
+        integer, intent(inout) :: code         !! exit_ok: stdout; otherwise stderr;
+                                               !! set to exit_io when stdout fails
+        type(safe_file) :: stdout
+        character(len=:), allocatable :: problem
+        integer :: i, status
+        if (code /= exit_ok) then
+            do i = 1, size(report)
                 write (error_unit, '(a)') report(i)%text
-            end if
+            end do
+            return
+        end if
+        call open_output(stdout, standard_output, .false., status, problem)
+        do i = 1, size(report)
+            call stdout%put(report(i)%text)
         end do
+        call finish_output(stdout, status, problem)
+        if (status /= safe_ok) then
+            write (error_unit, '(a)') program_name//': '//problem
+            code = exit_io
+        end if
     end subroutine print_report
 
     !> Everything after solving rows first..last: the result files, the curves and the
-    !! table on stdout (as requested), with problems explained on stderr. Returns the
-    !! exit code: exit_ok; exit_unsolved when an endpoint has no solution or a solved one
-    !! has no curve; exit_input or exit_io when a file could not be written.
-    subroutine deliver_results(options, model, table, first, last, solutions, code)
+    !! table on stdout (as requested, into the outputs opened by `prepare_run`), then all
+    !! files committed together, with problems explained on stderr. Returns the exit
+    !! code: exit_ok; exit_unsolved when an endpoint has no solution or a solved one has
+    !! no curve; exit_input when a target appeared during the run or memory ran out;
+    !! exit_io when an output could not be written (then no file of the run is left).
+    subroutine deliver_results(options, field, table, first, last, solutions, code)
         type(run_options), intent(in) :: options       !! the command line
-        type(inverse_square_model), intent(in) :: model !! the evaluator (for curves)
+        class(brachistochrone_field), intent(in) :: field !! the field solved
         type(endpoint_table), intent(in) :: table      !! the input
         integer, intent(in) :: first, last             !! the rows solved
         type(endpoint_solution), intent(in) :: solutions(first:) !! their solutions
         integer, intent(out) :: code                   !! the exit code
         character(len=:), allocatable :: problem, date
         integer :: status, missing, unsolved, i
+        logical :: ok
 
         date = timestamp()
-        missing = 0
-        call write_outputs(options%request, table, first, last, solutions, date, status, &
-                           problem)
-        if (status == 0) call write_curves(options%request%curves_path, &
-                                           options%request%force, model, table, first, &
-                                           last, solutions, date, .not. options%quiet, &
-                                           status, problem, missing)
-        if (status /= 0) then
-            write (error_unit, '(a)') program_name//': '//problem
-            code = merge(exit_input, exit_io, status == 1)
+        call write_outputs(outputs(csv_file), outputs(nml_file), outputs(table_file), field, &
+                           table, first, last, solutions, date)
+        call write_curves(outputs(curves_file), field, table, first, last, solutions, date, &
+                          .not. options%quiet, missing, ok, problem)
+        if (.not. ok) then
+            call give_up(exit_input, problem)
             return
         end if
-        if (options%show_table) then
-            call write_table_header(output_unit)
+        if (outputs(table_on_stdout)%is_open()) then
+            call write_table_header(outputs(table_on_stdout), field)
             do i = first, last
-                call write_table_row(output_unit, i, solutions(i))
+                call write_table_row(outputs(table_on_stdout), field, i, solutions(i))
             end do
+        end if
+        do i = 1, size(outputs)
+            call finish_output(outputs(i), status, problem)
+            if (status /= safe_ok) then
+                call give_up(exit_io, problem)
+                return
+            end if
+        end do
+        call commit_outputs(outputs, status, problem)
+        if (status /= safe_ok) then
+            call give_up(merge(exit_input, exit_io, status == safe_refused), problem)
+            return
         end if
         code = exit_ok
         unsolved = count(solutions(first:last)%status /= status_ok)
         if (missing > unsolved) then
             write (error_unit, '(a)') program_name//': '//integer_text(missing - unsolved)// &
                 ' solved endpoints have no curve; see the comments in '// &
-                options%request%curves_path
+                escape_text(options%request%curves_path)
             code = exit_unsolved
         end if
         if (unsolved > 0) then
@@ -141,90 +179,57 @@ contains
                 integer_text(last - first + 1)//' endpoints have no solution; see their status'
             code = exit_unsolved
         end if
+
+    contains
+
+        subroutine give_up(exit_code, text)
+            integer, intent(in) :: exit_code
+            character(len=*), intent(in) :: text
+            if (any(outputs(:table_on_stdout - 1)%fd >= 0)) then
+                write (error_unit, '(a)') program_name//': '//text//'; no output file of '// &
+                    'this run was kept'
+            else
+                write (error_unit, '(a)') program_name//': '//text
+            end if
+            call abandon_outputs()
+            code = exit_code
+        end subroutine give_up
+
     end subroutine deliver_results
 
-    !> Solve rows first..last of the table, in parallel over OpenMP threads (dynamic
-    !! schedule; each row is independent and `pure`, so the results do not depend on the
-    !! number of threads), with a progress report on stderr when `report` is set.
-    !! The field is the table's `force`: 'inverse_square' takes the fast path, the others
-    !! the general engine.
-    subroutine solve_rows(model, table, first, last, solutions, report)
-        type(inverse_square_model), intent(in) :: model        !! the evaluator
+
+    !> Remove the temporary files of this run's outputs (the driver gives up).
+    subroutine abandon_outputs()
+        call discard_outputs(outputs)
+    end subroutine abandon_outputs
+
+    !> Solve rows first..last of the table in `field`, in parallel over OpenMP threads
+    !! (dynamic schedule; each row is independent and `pure`, so the results do not
+    !! depend on the number of threads), with a progress report on stderr when `report`
+    !! is set. Rows with estimates r0, r1 use the field's secant method.
+    subroutine solve_rows(field, table, first, last, solutions, report)
+        class(brachistochrone_field), intent(in) :: field      !! the force field
         type(endpoint_table), intent(in) :: table              !! the input
         integer, intent(in) :: first, last                     !! rows to solve
         type(endpoint_solution), intent(out) :: solutions(first:) !! their solutions
         logical, intent(in) :: report                          !! progress on stderr
         type(progress_type) :: progress
-        type(central_force_model) :: general
-        logical :: fast
         integer :: i
-        fast = table%force == 'inverse_square'
-        select case (table%force)
-        case ('power');       general = new_central_force_model(power_law(n=table%exponent))
-        case ('logarithmic'); general = new_central_force_model(logarithmic_law())
-        case ('harmonic');    general = new_central_force_model(harmonic_law())
-        end select
         call progress%start(last - first + 1, report)
         !$omp parallel do schedule(dynamic, 16) default(shared) private(i)
         do i = first, last
-            if (table%force == 'repulsive') then
-                solutions(i) = least_time_repulsive(table%rho(i), table%psi(i))
-            else if (.not. fast) then
-                solutions(i) = general%solve(table%rho(i), table%psi(i))
-            else if (table%has_estimates(i)) then
-                solutions(i) = solve_endpoint_secant(model, table%rho(i), table%psi(i), &
-                                                     table%r0(i), table%r1(i), &
-                                                     table%secant_tolerance)
+            if (table%has_estimates(i)) then
+                solutions(i) = field%solve_from_estimates(table%rho(i), table%psi(i), &
+                                                          table%r0(i), table%r1(i), &
+                                                          table%secant_tolerance)
             else
-                solutions(i) = solve_endpoint(model, table%rho(i), table%psi(i))
+                solutions(i) = field%solve(table%rho(i), table%psi(i))
             end if
             call progress%step()
         end do
         !$omp end parallel do
         call progress%finish()
     end subroutine solve_rows
-
-    !> The least-time brachistochrone through B under repulsive force (Tee sec. 6): every
-    !! target angle has exactly one curve and time grows with the angle swept, so it is
-    !! the one sweeping psi itself (`repulsive` derives this; the library API lists the
-    !! curves with more windings). R-bar exists for bounded curves only.
-    pure function least_time_repulsive(rho, psi) result(solution)
-        real(qp), intent(in) :: rho, psi
-        type(endpoint_solution) :: solution
-        type(repulsive_solution), allocatable :: found(:)
-        integer :: best, status
-        solution%rho = rho
-        solution%psi = psi
-        call solve_repulsive(rho, psi, 0, found, best, status)
-        if (status /= status_ok) then
-            solution%status = status
-            return
-        else if (best == 0) then
-            solution%status = status_no_convergence
-            if (size(found) > 0) solution%status = found(1)%status
-            return
-        end if
-        associate (b => found(best))
-            solution%status = b%status
-            if (b%status /= status_ok) return
-            if (b%curve%k2 == 0.0_qp) then
-                solution%arch = arch_radial
-            else if (b%arch == repulsive_arch_unbounded) then
-                solution%arch = arch_unbounded
-            else if (rho == 1.0_qp) then
-                solution%arch = arch_complete
-            else
-                solution%arch = merge(arch_first, arch_second, b%arch == repulsive_arch_first)
-            end if
-            solution%has_apse_radius = b%curve%bounded
-            if (b%curve%bounded) solution%apse_radius = b%curve%apse
-            solution%arclength = b%arclength
-            solution%time = b%time
-            solution%steps = b%steps
-            solution%has_arclength = .true.
-            solution%has_time = .true.
-        end associate
-    end function least_time_repulsive
 
     !> Resolve the slice (-1 means the table's first or last row) and check it.
     subroutine check_slice(table, first, last, ok, message)
@@ -241,29 +246,69 @@ contains
             ' rows of '//table%path//' (need 1 <= first <= last <= n)'
     end subroutine check_slice
 
-    !> Before any work: refuse output files that exist unless `force` is set.
-    subroutine check_targets(request, ok, message)
-        type(output_request), intent(in) :: request  !! files to write
-        logical, intent(out) :: ok                   !! none is in the way
-        character(len=:), allocatable, intent(out) :: message !! which one is
-        ok = .true.
+    !> Before any work: refuse outputs that are the same file as another output or as the
+    !! input, or that exist (unless --force; with --force a directory, device, FIFO or
+    !! socket), then create every output's temporary file, so that a missing or
+    !! read-only directory is found now. code: exit_ok; exit_input (a conflict; nothing
+    !! was created); exit_io (an output cannot be created; nothing is left).
+    subroutine check_targets(options, code, message)
+        type(run_options), intent(in) :: options     !! the command line
+        integer, intent(out) :: code                 !! exit_ok, exit_input or exit_io
+        character(len=:), allocatable, intent(out) :: message !! what is wrong
+        character(len=*), parameter :: names(4) = [character(len=8) :: '--csv', '--nml', &
+                                                   '--table', '--curves']
+        character(len=:), allocatable :: path
+        integer :: k, j, status
+
+        code = exit_ok
+        status = safe_ok
         message = ''
-        if (request%force) return
-        call one(request%csv_path)
-        call one(request%nml_path)
-        call one(request%table_path)
-        call one(request%curves_path)
-    contains
-        subroutine one(path)
-            character(len=*), intent(in) :: path
-            logical :: exists
-            if (.not. ok .or. len(path) == 0) return
-            inquire (file=path, exist=exists)
-            if (exists) then
-                ok = .false.
-                message = path//' exists; use --force to replace it, or choose another name'
+        do k = 1, size(names)
+            path = output_path(options%request, k)
+            if (len(path) == 0 .or. path == standard_output) cycle
+            if (same_name(path, options%input_path) .or. &
+                same_file(path, options%input_path)) then
+                code = exit_input
+                message = trim(names(k))//' '//escape_text(path)//' is the input file '// &
+                          escape_text(options%input_path)//'; choose another name'
+                return
             end if
-        end subroutine one
+            do j = 1, k - 1
+                if (.not. same_name(path, output_path(options%request, j))) cycle
+                code = exit_input
+                message = trim(names(j))//' '//escape_text(output_path(options%request, j))// &
+                          ' and '//trim(names(k))//' '//escape_text(path)//' are the same '// &
+                          'file; '// &
+                          'give each output its own name'
+                return
+            end do
+        end do
+        do k = 1, size(names)
+            if (len(output_path(options%request, k)) == 0) cycle
+            call open_output(outputs(k), output_path(options%request, k), &
+                             options%request%force, status, message)
+            if (status /= safe_ok) exit
+        end do
+        if (status == safe_ok .and. options%show_table) &
+            call open_output(outputs(table_on_stdout), standard_output, .false., status, &
+                             message)
+        if (status /= safe_ok) then
+            call abandon_outputs()
+            code = merge(exit_input, exit_io, status == safe_refused)
+        end if
     end subroutine check_targets
+
+    !> The path of output k: 1 CSV, 2 namelist, 3 table, 4 curves ('' when not asked for).
+    pure function output_path(request, k) result(path)
+        type(output_request), intent(in) :: request
+        integer, intent(in) :: k
+        character(len=:), allocatable :: path
+        select case (k)
+        case (csv_file);    path = request%csv_path
+        case (nml_file);    path = request%nml_path
+        case (table_file);  path = request%table_path
+        case default;       path = request%curves_path
+        end select
+    end function output_path
 
 end module brachistochrone_batch_run

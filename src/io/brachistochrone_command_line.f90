@@ -1,15 +1,19 @@
 !> The command line shared by the batch drivers (serial/OpenMP and MPI).
 module brachistochrone_command_line
     use brachistochrone_version, only: program_version
+    use brachistochrone_fields, only: field_names
     use brachistochrone_result_output, only: output_request
+    use brachistochrone_strings, only: integer_text, escape_text
     implicit none
     private
 
     public :: run_options, parse_command_line, write_usage, get_argument
-    public :: exit_ok, exit_input, exit_unsolved, exit_io
+    public :: exit_ok, exit_input, exit_unsolved, exit_io, max_threads
 
     !> Exit codes of the drivers.
     integer, parameter :: exit_ok = 0, exit_input = 1, exit_unsolved = 2, exit_io = 3
+    !> Largest --threads accepted (beyond it the OpenMP runtime aborts or crashes).
+    integer, parameter :: max_threads = 1024
 
     !> Everything the command line says.
     type :: run_options
@@ -28,12 +32,17 @@ module brachistochrone_command_line
 contains
 
     !> Parse the arguments. status = exit_ok, or exit_input with `message` set.
+    !! Options take their value as the next argument or after `=` (`--csv=OUT.csv`); a
+    !! value never starts with `-` (so `--csv --force` is an error), except `-` itself,
+    !! standard output, for one of --csv, --nml, --table, --curves (the table is then not
+    !! printed). `--` ends the options.
     subroutine parse_command_line(options, status, message)
         type(run_options), intent(out) :: options         !! the options
         integer, intent(out) :: status                    !! exit_ok or exit_input
         character(len=:), allocatable, intent(out) :: message !! what is wrong
         integer :: k, count_arguments
         character(len=:), allocatable :: argument, value
+        logical :: has_value, options_ended
 
         options%input_path = ''
         options%request%csv_path = ''
@@ -43,11 +52,17 @@ contains
         options%request%force = .false.
         status = exit_ok
         message = ''
+        options_ended = .false.
         count_arguments = command_argument_count()
         k = 0
-        do while (k < count_arguments)
+        do while (k < count_arguments .and. status == exit_ok)
             k = k + 1
             argument = get_argument(k)
+            if (.not. is_option(argument)) then
+                call take_input(argument)
+                cycle
+            end if
+            call split_value(argument, value, has_value)
             select case (argument)
             case ('-h', '--help')
                 options%help = .true.
@@ -55,64 +70,132 @@ contains
             case ('--version')
                 options%version = .true.
                 return
+            case ('--')
+                options_ended = .true.
             case ('--csv', '--nml', '--table', '--curves', '--first', '--last', '--threads')
-                if (k == count_arguments) then
-                    call problem(argument//' needs a value')
-                    return
+                if (.not. has_value) then
+                    if (k == count_arguments) then
+                        call problem(argument//' needs a value')
+                        exit
+                    end if
+                    k = k + 1
+                    value = get_argument(k)
                 end if
-                k = k + 1
-                value = get_argument(k)
+                call take_value(argument, value)
+            case ('--force', '--quiet', '--no-table', '--check')
+                if (has_value) call problem(escape_text(argument)//' takes no value')
                 select case (argument)
-                case ('--csv');     options%request%csv_path = value
-                case ('--nml');     options%request%nml_path = value
-                case ('--table');   options%request%table_path = value
-                case ('--curves');  options%request%curves_path = value
-                case ('--first');   options%first = whole_number(value)
-                case ('--last');    options%last = whole_number(value)
-                case ('--threads')
-                    options%threads = whole_number(value)
-                    if (options%threads < 1) call problem('--threads needs a number >= 1')
+                case ('--force');    options%request%force = .true.
+                case ('--quiet');    options%quiet = .true.
+                case ('--no-table'); options%show_table = .false.
+                case default;        options%check_only = .true.
                 end select
-                if (status /= exit_ok) return
-            case ('--force')
-                options%request%force = .true.
-            case ('--quiet')
-                options%quiet = .true.
-            case ('--no-table')
-                options%show_table = .false.
-            case ('--check')
-                options%check_only = .true.
             case default
-                if (argument(1:1) == '-') then
-                    call problem('unknown option '//argument//' (see --help)')
-                    return
-                end if
-                if (len(options%input_path) > 0) then
-                    call problem('only one input file, got '//options%input_path//' and '// &
-                                 argument)
-                    return
-                end if
-                options%input_path = argument
+                call problem('unknown option '//escape_text(argument)//' (see --help)')
             end select
         end do
-        if (len(options%input_path) == 0) then
-            call problem('no input file given (see --help)')
-        end if
+        if (status == exit_ok) call check_outputs()
 
     contains
 
-        integer function whole_number(text)
+        !> An option: starts with -, is not - itself, and no `--` came before.
+        logical function is_option(text)
             character(len=*), intent(in) :: text
+            is_option = .false.
+            if (options_ended .or. len(text) < 2) return
+            is_option = text(1:1) == '-'
+        end function is_option
+
+        !> `--name=value` -> `--name`, `value`.
+        subroutine split_value(text, value, has_value)
+            character(len=:), allocatable, intent(inout) :: text
+            character(len=:), allocatable, intent(out) :: value
+            logical, intent(out) :: has_value
+            integer :: equals
+            equals = 0
+            if (len(text) > 2) then
+                if (text(1:2) == '--') equals = index(text, '=')
+            end if
+            has_value = equals > 0
+            value = ''
+            if (.not. has_value) return
+            value = text(equals + 1:)
+            text = text(:equals - 1)
+        end subroutine split_value
+
+        subroutine take_input(path)
+            character(len=*), intent(in) :: path
+            if (len(path) == 0) then
+                call problem('an empty argument is not a file name')
+            else if (len(options%input_path) > 0) then
+                call problem('only one input file, got '//escape_text(options%input_path)// &
+                             ' and '//escape_text(path))
+            else
+                options%input_path = path
+            end if
+        end subroutine take_input
+
+        subroutine take_value(option, text)
+            character(len=*), intent(in) :: option, text
+            if (len(text) == 0) then
+                call problem(option//' needs a value, got an empty one')
+                return
+            else if (text(1:1) == '-' .and. text /= '-') then
+                call problem(option//' needs a value, got the option "'//escape_text(text)// &
+                             '" (a file name starting with - can be written ./'// &
+                             escape_text(text)//')')
+                return
+            end if
+            select case (option)
+            case ('--csv');     options%request%csv_path = text
+            case ('--nml');     options%request%nml_path = text
+            case ('--table');   options%request%table_path = text
+            case ('--curves');  options%request%curves_path = text
+            case ('--first');   options%first = whole_number(option, text)
+            case ('--last');    options%last = whole_number(option, text)
+            case default
+                options%threads = whole_number(option, text)
+                if (status == exit_ok .and. (options%threads < 1 .or. &
+                    options%threads > max_threads)) call problem('--threads needs a number '// &
+                    'from 1 to '//integer_text(max_threads)//', got '//escape_text(text))
+            end select
+        end subroutine take_value
+
+        !> An input is needed; at most one output is standard output, and then the table
+        !! is not printed there.
+        subroutine check_outputs()
+            integer :: dashes
+            if (options%help .or. options%version) return
+            if (len(options%input_path) == 0) then
+                call problem('no input file given (see --help)')
+                return
+            end if
+            dashes = count([options%request%csv_path == '-', options%request%nml_path == '-', &
+                            options%request%table_path == '-', &
+                            options%request%curves_path == '-'])
+            if (dashes > 1) then
+                call problem('only one output can be standard output (-)')
+            else if (dashes == 1) then
+                options%show_table = .false.
+            end if
+        end subroutine check_outputs
+
+        integer function whole_number(option, text)
+            character(len=*), intent(in) :: option, text
             integer :: ios
             whole_number = 0
-            read (text, *, iostat=ios) whole_number
-            if (ios /= 0 .or. len(text) == 0 .or. verify(text, '0123456789') /= 0) then
-                call problem(argument//' needs a whole number, got "'//text//'"')
+            if (len(text) == 0 .or. len(text) > 9 .or. verify(text, '0123456789') /= 0) then
+                ios = 1
+            else
+                read (text, *, iostat=ios) whole_number
             end if
+            if (ios /= 0) call problem(option//' needs a whole number (at most 9 digits), '// &
+                                       'got "'//escape_text(text)//'"')
         end function whole_number
 
         subroutine problem(text)
             character(len=*), intent(in) :: text
+            if (status /= exit_ok) return
             status = exit_input
             message = text
         end subroutine problem
@@ -127,9 +210,14 @@ contains
         write (unit, '(a)') ''
         write (unit, '(a)') 'Solves the brachistochrone from A = (1, 0) to each endpoint '// &
             '(rho, psi) of the namelist'
-        write (unit, '(a)') 'group &endpoints in FILE.nml (attractive inverse-square '// &
-            'force, Tee 1998). Prints a table.'
-        write (unit, '(a)') '  --csv OUT.csv       write rho,psi,arch,R,s,t,steps,status'
+        write (unit, '(a)') 'group &endpoints in FILE.nml, in the field that its variable '// &
+            'force names (Tee 1998):'
+        write (unit, '(a)') '  '//field_names//';'
+        write (unit, '(a)') '  default ''inverse_square'' (attractive, F = mu/r^2); '// &
+            '''power'' needs exponent = n > 1.'
+        write (unit, '(a)') 'Prints a table; every output names the field it solved.'
+        write (unit, '(a)') '  --csv OUT.csv       write rho,psi,arch,R,s,t,steps,status '// &
+            '(OUT = - : stdout)'
         write (unit, '(a)') '  --nml OUT.nml       write the results as namelist group '// &
             '&results (reads back bit for bit)'
         write (unit, '(a)') '  --table OUT.txt     write the readable table to a file'
@@ -140,16 +228,19 @@ contains
         write (unit, '(a)') '  --no-table          do not print the table on stdout'
         write (unit, '(a)') '  --first I --last J  solve rows I..J only (1-based, '// &
             'inclusive): one job of an array'
-        write (unit, '(a)') '  --threads N         OpenMP threads (default: '// &
-            'OMP_NUM_THREADS, or all cores)'
-        write (unit, '(a)') '  --force             replace output files that exist'
+        write (unit, '(a)') '  --threads N         OpenMP threads, 1..'// &
+            integer_text(max_threads)//' (default: OMP_NUM_THREADS, or all cores)'
+        write (unit, '(a)') '  --force             replace output files (regular files or '// &
+            'symlinks) that exist'
         write (unit, '(a)') '  --quiet             no progress report on stderr'
         write (unit, '(a)') '  --check             only validate FILE.nml'
         write (unit, '(a)') '  --version, --help'
         write (unit, '(a)') 'Exit codes: 0 all solved; 1 usage or input error (nothing '// &
             'written); 2 some endpoints'
         write (unit, '(a)') 'have no solution (files written, see their status); 3 I/O '// &
-            'error. Version '//program_version//'.'
+            'error (no file written);'
+        write (unit, '(a)') '128 + N killed by signal N (no file written; 141: stdout '// &
+            'closed). Version '//program_version//'.'
     end subroutine write_usage
 
     !> The k-th command-line argument, of its own length.

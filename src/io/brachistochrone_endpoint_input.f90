@@ -1,6 +1,7 @@
-!> Reading and validating an endpoint table from a namelist file.
+!> Reading and validating an endpoint table from a namelist file (or stdin).
 !!
-!! The file holds the group below (other groups may follow; they are ignored):
+!! The file holds the group below (other groups may come before or after it; they are
+!! skipped):
 !!
 !!     &endpoints
 !!       n   = 2                 ! number of endpoints, 1 <= n <= max_endpoints
@@ -11,43 +12,110 @@
 !!       secant_tolerance = 1e-16 ! optional: the secant stops at |R_n - R_(n-1)| < this
 !!       curve_points = 201       ! optional: points per curve for --curves (0: none)
 !!       force = 'inverse_square' ! optional: the field (see `force_names`)
-!!       exponent = 3.0           ! with force = 'power': F = mu/r^exponent, exponent > 1
+!!       exponent = 3.0           ! with force = 'power': F = mu/r^n, exponent > 1
 !!     /
 !!
-!! The file is checked in three passes and every problem is reported (file, line,
-!! group, variable, row, and what a valid value looks like): (1) `namelist_scan` finds
-!! the group, its end, every name and value token, so unknown names, values that are not
-!! numbers and a missing '/' are named precisely; (2) `n` sizes the arrays (n + 1, filled
-!! with a sentinel) and gfortran's `read(nml=)` assigns the values, straight into
-!! real(qp); (3) the arrays are checked for too few or too many values, NaN, Infinity,
-!! ranges and r0/r1 pairs. Memory is proportional to the table.
+!! `brachistochrone_namelist_scan` is the only reader of the group's text (there is no
+!! second parse by `read(nml=)` that could disagree): it records every assignment and
+!! value with its line. This module converts each value's text exactly once
+!! (`real_from_text`: correctly rounded to real(qp), the same bits as `read(text, *)`),
+!! checks it and stores it, so the solver gets exactly the values that were checked.
+!! Every problem of the file (syntax, names, values, counts, ranges, pairs) is found in
+!! one pass and reported with file:line, variable, row and what a valid value looks
+!! like; the first `max_problems` by line are listed and the rest counted. Memory is
+!! sized from the values present (a row array is allocated only up to the largest row
+!! a value sets, never from `n` alone); time is linear in the size of the file.
+!! Control characters of the path and of quoted input are escaped in every message.
+!!
+!! The variables are one table (`variables`: name, kind, one value per row or one in
+!! all, required, default, valid range or words, the rule as text for messages); a
+!! new variable is a row there, its name in `variable_names` and a field of
+!! `endpoint_table` set in `fill_table`. Checks between variables (r0 with r1, what
+!! goes with `force`, rho's range for 'repulsive') are in `check_counts`,
+!! `check_force` and `rule_of_rows`.
 module brachistochrone_endpoint_input
-    use brachistochrone_kinds, only: qp, pi
-    use brachistochrone_namelist_scan, only: group_scan, scan_group
-    use brachistochrone_strings, only: integer_text, lower
+    use, intrinsic :: iso_fortran_env, only: int64
+    use, intrinsic :: iso_c_binding, only: c_int, c_size_t, c_char
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+    use brachistochrone_fields, only: field_names
+    use brachistochrone_kinds, only: qp, pi
+    use brachistochrone_namelist_scan, only: group_scan, scan_group, problem_list
+    use brachistochrone_strings, only: integer_text, escape_text, real_from_text, &
+                                       integer_from_text, text_ok, text_out_of_range
     implicit none
     private
 
-    public :: endpoint_table, message, read_endpoint_file, max_endpoints, group_name
-    public :: variable_names, max_curve_points, force_names
+    public :: endpoint_table, message, read_endpoint_file, read_endpoint_text
+    public :: max_endpoints, group_name, variable_names, max_curve_points, force_names
+    public :: stdin_path
 
     !> Largest table accepted (memory grows linearly: about 100 bytes per endpoint).
     integer, parameter :: max_endpoints = 10000000
     !> The namelist group read.
     character(len=*), parameter :: group_name = 'endpoints'
-    !> Its variables.
+    !> Its variables (the names of `variables`, in messages).
     character(len=*), parameter :: variable_names = &
         'n, rho, psi, r0, r1, secant_tolerance, curve_points, force, exponent'
     !> The force fields `force` may name.
-    character(len=*), parameter :: force_names = &
-        "'inverse_square', 'power', 'logarithmic', 'harmonic', 'repulsive'"
+    character(len=*), parameter :: force_names = field_names
     !> Most points per curve (`curve_points`); the fewest is 2 (A and B).
     integer, parameter :: max_curve_points = 100000
-    !> Value no input can produce: marks an array element the namelist did not set.
-    real(qp), parameter :: unset = -huge(1.0_qp)
-    !> At most this many per-row messages are listed per variable; the rest are counted.
-    integer, parameter :: max_row_messages = 20
+    !> The input path that means standard input.
+    character(len=*), parameter :: stdin_path = '-'
+
+    integer, parameter :: kind_integer = 1, kind_real = 2, kind_word = 3
+
+    !> One variable of the group: its name, kind, shape, default and valid values.
+    type :: variable_rule
+        character(len=16) :: name       !! lowercase name
+        integer :: kind                 !! kind_integer, kind_real or kind_word
+        logical :: per_row              !! n values, one per endpoint (else one value)
+        logical :: required             !! must be given
+        character(len=32) :: example    !! a valid assignment, for messages
+        real(qp) :: low = -huge(1.0_qp) !! valid numbers: low <= x (low < x if low_open)
+        real(qp) :: high = huge(1.0_qp) !! and x <= high (x < high if high_open)
+        logical :: low_open = .false.
+        logical :: high_open = .false.
+        logical :: zero_allowed = .false. !! 0 is valid too (it means "none")
+        character(len=80) :: words = ''   !! kind_word: the valid words, quoted
+        real(qp) :: default = 0.0_qp      !! value when not given (numbers)
+        character(len=16) :: default_word = '' !! value when not given (kind_word)
+        character(len=120) :: rule = ''   !! the valid values, for messages
+    end type variable_rule
+
+    !> The variables of `&endpoints`: a new variable is a row here and a field of
+    !! `endpoint_table` (filled in `fill_table`); rows of rho, psi, r0, r1 are
+    !! `row_values`, the others one value each.
+    type(variable_rule), parameter :: variables(*) = [ &
+        variable_rule('n', kind_integer, .false., .true., 'n = 5', low=1.0_qp, &
+                      high=real(max_endpoints, qp), &
+                      rule='is out of range; it must be 1 <= n <= 10000000'), &
+        variable_rule('rho', kind_real, .true., .true., 'rho = 0.5, 0.9', low=0.0_qp, &
+                      low_open=.true., high=1.0_qp, &
+                      rule='must satisfy 0 < rho <= 1 (A is at radius 1)'), &
+        variable_rule('psi', kind_real, .true., .true., 'psi = 1.0, 0.4', low=0.0_qp, &
+                      high=pi, rule='must satisfy 0 <= psi <= pi radians (by symmetry '// &
+                      'use 2*pi - psi for an angle beyond pi)'), &
+        variable_rule('r0', kind_real, .true., .false., 'r0 = 0.2, 0.4'), &
+        variable_rule('r1', kind_real, .true., .false., 'r1 = 0.1, 0.2'), &
+        variable_rule('secant_tolerance', kind_real, .false., .false., &
+                      'secant_tolerance = 1e-16', low=0.0_qp, low_open=.true., &
+                      default=1.0e-16_qp, rule='must be a positive number, for example 1e-16'), &
+        variable_rule('curve_points', kind_integer, .false., .false., 'curve_points = 201', &
+                      low=2.0_qp, high=real(max_curve_points, qp), zero_allowed=.true., &
+                      rule='must be 0 (no curves) or 2 <= curve_points <= 100000 (points '// &
+                      'per curve, A and B included)'), &
+        variable_rule('force', kind_word, .false., .false., 'force = ''harmonic''', &
+                      words=force_names, default_word='inverse_square', &
+                      rule='unknown field; use one of '//force_names), &
+        variable_rule('exponent', kind_real, .false., .false., 'exponent = 3', low=1.0_qp, &
+                      low_open=.true., rule='must be a number > 1 (n = 1 is force = '// &
+                      '''logarithmic'')')]
+
+    !> rho's range with force = 'repulsive' (paths move outward).
+    type(variable_rule), parameter :: repulsive_rho = variable_rule('rho', kind_real, &
+        .true., .true., 'rho = 1.5, 2', low=1.0_qp, rule='must satisfy rho >= 1 (force = '// &
+        '''repulsive'': paths move outward from A at radius 1)')
 
     !> One message per problem found in the input.
     type :: message
@@ -56,7 +124,7 @@ module brachistochrone_endpoint_input
 
     !> The validated endpoint table.
     type :: endpoint_table
-        character(len=:), allocatable :: path  !! file it was read from
+        character(len=:), allocatable :: path  !! file it was read from ('-': stdin), raw
         integer :: n = 0                       !! number of endpoints
         real(qp), allocatable :: rho(:)        !! endpoint radii
         real(qp), allocatable :: psi(:)        !! endpoint angles (radians)
@@ -66,477 +134,694 @@ module brachistochrone_endpoint_input
         real(qp) :: secant_tolerance = 1.0e-16_qp !! the paper's stopping rule
         integer :: curve_points = 0               !! points per curve for --curves (0: none)
         !> The force field: 'inverse_square' (the fast path), 'power', 'logarithmic',
-        !! 'harmonic' (the general engine)
+        !! 'harmonic' (the general engine), 'repulsive'
         character(len=:), allocatable :: force
         real(qp) :: exponent = 0.0_qp             !! n of F = mu/r^n for force = 'power'
-        type(message), allocatable :: errors(:)   !! every problem found; empty if valid
+        !> The problems found, at most 100 and then one '... and N more' line; empty
+        !! if the table is valid
+        type(message), allocatable :: errors(:)
+        integer :: problems = 0                   !! number of problems found in all
     end type endpoint_table
+
+    !> The rows of one per-row variable as far as values set them.
+    type :: row_values
+        logical :: given = .false.           !! the variable is assigned
+        logical :: broken = .false.          !! an assignment has a syntax problem
+        integer :: line = 0                  !! line of its first assignment
+        integer(int64) :: count = 0          !! values given (repeats counted, no nulls)
+        integer :: rows = 0                  !! rows held below (0: none)
+        real(qp), allocatable :: x(:)        !! value of each row held
+        integer, allocatable :: at(:)        !! its line (0: not set)
+    end type row_values
+
+    !> The one-value variables while reading (indexed like `variables`).
+    type :: scalar_values
+        real(qp) :: value(size(variables)) = variables%default   !! numbers
+        character(len=16) :: word(size(variables)) = variables%default_word !! words
+        logical :: given(size(variables)) = .false.   !! a value was given
+        logical :: valid(size(variables)) = .true.    !! the last value given is valid
+        logical :: reported(size(variables)) = .false. !! a problem with a value
+        ! what the checks use, set by `read_scalars`
+        integer :: n = 0                     !! n (when have_n)
+        logical :: have_n = .false.          !! n given and valid
+        character(len=:), allocatable :: force !! the field
+        logical :: force_ok = .true.         !! force is a known field
+    end type scalar_values
 
 contains
 
-    !> Read `path` into `table`. On return `size(table%errors) == 0` when the table is
-    !! valid; otherwise each element is one complete message and the arrays are empty.
+    !> Read `path` (`-`: standard input, read whole) into `table`. On return
+    !! `size(table%errors) == 0` when the table is valid; otherwise the errors are
+    !! complete messages (the path and quoted input escaped) and the arrays are
+    !! unallocated. A file that cannot be read is one error ("cannot read").
     subroutine read_endpoint_file(path, table)
-        character(len=*), intent(in) :: path       !! namelist file
+        character(len=*), intent(in) :: path       !! namelist file, or '-'
         type(endpoint_table), intent(out) :: table !! the table and its problems
-        character(len=:), allocatable :: text
+        character(len=:), allocatable :: text, problem
+        if (path == stdin_path) then
+            call read_stdin(text, problem)
+        else
+            call read_text(path, text, problem)
+        end if
+        if (len(problem) > 0) then
+            table%path = path
+            table%problems = 1
+            table%errors = [message(shown_path(path)//': cannot read the file: '// &
+                                    escape_text(problem))]
+            return
+        end if
+        call read_endpoint_text(text, path, table)
+    end subroutine read_endpoint_file
+
+    !> Read the table from `text`, the contents of the file `path` (used in messages).
+    subroutine read_endpoint_text(text, path, table)
+        character(len=*), intent(in) :: text       !! the whole file
+        character(len=*), intent(in) :: path       !! its name, for messages
+        type(endpoint_table), intent(out) :: table !! the table and its problems
         type(group_scan) :: scan
-        integer :: unit, ios, n, a_rho, a_psi, a_r0, a_r1
-        character(len=512) :: io_message
-        real(qp), allocatable :: rho(:), psi(:), r0(:), r1(:)
-        real(qp) :: secant_tolerance
-        integer :: curve_points
-        character(len=32) :: force
-        real(qp) :: exponent
-        namelist /endpoints/ n, rho, psi, r0, r1, secant_tolerance, curve_points, force, &
-            exponent
+        type(problem_list) :: problems
+        type(scalar_values) :: s
+        type(row_values) :: rows(4)
+        integer, allocatable :: variable_of(:)
+        integer :: k
 
         table%path = path
-        allocate (table%errors(0))
-        call read_text(path, text, ios, io_message)
-        if (ios /= 0) then
-            call add(table, path//': cannot read the file: '//trim(io_message))
-            return
-        end if
-
-        ! pass 1: the group's syntax
-        scan = scan_group(text, group_name)
+        call scan_group(text, group_name, scan, problems)
         if (.not. scan%found) then
-            call add(table, path//': no namelist group &'//group_name//' found'// &
-                     trim(merge(' (the file is empty)', '                    ', &
-                                len_trim(text) == 0))// &
-                     '; the file must contain a group like  &'//group_name// &
-                     ' n = 2, rho = 0.5, 0.9, psi = 1.0, 0.4 /')
-            return
-        end if
-        if (len(scan%problem) > 0) then
-            call add(table, at(path, scan%problem_line)//'group &'//group_name//': '// &
-                     scan%problem)
-            return
-        end if
-        call check_tokens(table, text, scan, n)
-        if (size(table%errors) > 0) return
-
-        ! pass 2: gfortran assigns the values
-        allocate (rho(n + 1), psi(n + 1), r0(n + 1), r1(n + 1))
-        rho = unset
-        psi = unset
-        r0 = unset
-        r1 = unset
-        secant_tolerance = 1.0e-16_qp
-        curve_points = 0
-        force = 'inverse_square'
-        exponent = unset
-        open (newunit=unit, file=path, status='old', action='read', iostat=ios, &
-              iomsg=io_message)
-        if (ios == 0) read (unit, nml=endpoints, iostat=ios, iomsg=io_message)
-        close (unit)
-        if (ios /= 0) then
-            call add(table, at(path, scan%line)//'group &'//group_name// &
-                     ': the namelist read failed: '//trim(io_message))
-            return
-        end if
-
-        ! pass 3: counts, values, ranges
-        a_rho = assignment_of(scan, 'rho')
-        a_psi = assignment_of(scan, 'psi')
-        a_r0 = assignment_of(scan, 'r0')
-        a_r1 = assignment_of(scan, 'r1')
-        call check_array(table, text, scan, 'rho', a_rho, rho, n, .true.)
-        call check_array(table, text, scan, 'psi', a_psi, psi, n, .true.)
-        call check_array(table, text, scan, 'r0', a_r0, r0, n, .false.)
-        call check_array(table, text, scan, 'r1', a_r1, r1, n, .false.)
-        if (.not. ieee_is_finite(secant_tolerance) .or. secant_tolerance <= 0.0_qp) then
-            call add(table, at(path, line_of(scan, 'secant_tolerance'))//'group &'// &
-                     group_name//', variable secant_tolerance: must be a positive '// &
-                     'number, for example 1e-16')
-        end if
-        if (curve_points /= 0 .and. (curve_points < 2 .or. curve_points > max_curve_points)) &
-            then
-            call add(table, at(path, line_of(scan, 'curve_points'))//'group &'// &
-                     group_name//', variable curve_points = '//integer_text(curve_points)// &
-                     ': must be 0 (no curves) or 2 <= curve_points <= '// &
-                     integer_text(max_curve_points)//' (points per curve, A and B included)')
-        end if
-        if (trim(force) == 'repulsive') then
-            call check_rows(table, text, scan, 'rho', a_rho, rho, n, 'must satisfy rho >= 1'// &
-                            ' (force = ''repulsive'': paths move outward from A at radius 1)', &
-                            in_repulsive_rho_range)
+            call problems%add(0, 'no namelist group &'//group_name//' found'// &
+                              trim(merge(' (the file is empty)', '                    ', &
+                                         len_trim(text) == 0))// &
+                              '; the file must contain a group like  &'//group_name// &
+                              ' n = 2, rho = 0.5, 0.9, psi = 1.0, 0.4 /')
         else
-            call check_rows(table, text, scan, 'rho', a_rho, rho, n, &
-                            'must satisfy 0 < rho <= 1 (A is at radius 1)', in_rho_range)
+            allocate (variable_of(scan%count))
+            call name_variables(scan, problems, variable_of)
+            call read_scalars(text, scan, variable_of, problems, s)
+            do k = 1, size(rows)
+                call read_rows(text, scan, variable_of, k + 1, s, problems, rows(k))
+            end do
+            call check_counts(scan, s, rows, problems)
+            call check_force(scan, variable_of, s, rows(3), problems)
         end if
-        call check_rows(table, text, scan, 'psi', a_psi, psi, n, &
-                        'must satisfy 0 <= psi <= pi radians (by symmetry use '// &
-                        '2*pi - psi for an angle beyond pi)', in_psi_range)
-        call check_pairs(table, text, scan, r0, r1, n, a_r0, a_r1)
-        call check_force(table, scan, force, exponent, any(r0(1:n) /= unset), curve_points)
-        if (size(table%errors) > 0) return
+        call report(problems, shown_path(path), table)
+        if (table%problems == 0 .and. s%have_n) call fill_table(s, rows, table)
+    end subroutine read_endpoint_text
 
-        table%n = n
-        table%rho = rho(1:n)
-        table%psi = psi(1:n)
-        table%has_estimates = r0(1:n) /= unset
-        table%r0 = merge(r0(1:n), 0.0_qp, table%has_estimates)
-        table%r1 = merge(r1(1:n), 0.0_qp, table%has_estimates)
-        table%secant_tolerance = secant_tolerance
-        table%curve_points = curve_points
-        table%force = trim(force)
-        table%exponent = merge(exponent, 0.0_qp, exponent /= unset)
-    end subroutine read_endpoint_file
+    !> The variable of each assignment (0: unknown name, reported).
+    subroutine name_variables(scan, problems, variable_of)
+        type(group_scan), intent(in) :: scan
+        type(problem_list), intent(inout) :: problems
+        integer, intent(out) :: variable_of(:)
+        integer :: a, v
+        do a = 1, scan%count
+            variable_of(a) = 0
+            do v = 1, size(variables)
+                if (scan%name(a) == variables(v)%name) variable_of(a) = v
+            end do
+            if (variable_of(a) == 0) then
+                call problems%add(scan%name_line(a), 'group &'//group_name// &
+                                  ': unknown variable "'//trim(scan%name(a))// &
+                                  '"; the variables are '//variable_names)
+            else if (scan%indexed(a) .and. .not. variables(variable_of(a))%per_row) then
+                call problems%add(scan%name_line(a), 'group &'//group_name//', variable '// &
+                                  trim(scan%name(a))//': is not an array; write  '// &
+                                  trim(variables(variable_of(a))%example))
+                variable_of(a) = 0
+            end if
+        end do
+    end subroutine name_variables
+
+    !> The one-value variables: the last assignment of each wins, every one is checked.
+    subroutine read_scalars(text, scan, variable_of, problems, s)
+        character(len=*), intent(in) :: text
+        type(group_scan), intent(in) :: scan
+        integer, intent(in) :: variable_of(:)
+        type(problem_list), intent(inout) :: problems
+        type(scalar_values), intent(out) :: s
+        integer :: a, v, t
+        do a = 1, scan%count
+            v = variable_of(a)
+            if (v == 0) cycle
+            if (variables(v)%per_row .or. .not. scan%usable(a)) cycle
+            if (sum(int(scan%repeat(scan%first(a):scan%last(a)), int64)) > 1) then
+                call problems%add(scan%name_line(a), 'group &'//group_name//', variable '// &
+                                  trim(variables(v)%name)//': needs exactly one value, '// &
+                                  'for example  '//trim(variables(v)%example))
+                s%reported(v) = .true.
+                s%valid(v) = .false.
+                cycle
+            end if
+            if (scan%last(a) < scan%first(a)) cycle               ! `name =` : no value
+            t = scan%first(a)
+            if (scan%finish(t) < scan%start(t)) cycle             ! a null value
+            call check_scalar(text(scan%start(t):scan%finish(t)), scan%quoted(t), &
+                              scan%value_line(t), v, problems, s)
+        end do
+        s%have_n = s%given(1) .and. s%valid(1)
+        if (s%have_n) s%n = nint(s%value(1))
+        s%force = trim(s%word(index_of('force')))
+        s%force_ok = s%valid(index_of('force'))
+    end subroutine read_scalars
+
+    !> Convert the value `token` of the one-value variable v, check it against the
+    !! variable's rule and keep it in `s`.
+    subroutine check_scalar(token, quoted, line, v, problems, s)
+        character(len=*), intent(in) :: token
+        logical, intent(in) :: quoted
+        integer, intent(in) :: line, v
+        type(problem_list), intent(inout) :: problems
+        type(scalar_values), intent(inout) :: s
+        character(len=:), allocatable :: where, word
+        integer :: value, status
+        real(qp) :: x
+        where = 'group &'//group_name//', variable '//trim(variables(v)%name)
+        s%given(v) = .true.
+        s%valid(v) = .false.
+        s%reported(v) = .true.            ! until the value passes
+        select case (variables(v)%kind)
+        case (kind_integer)
+            call integer_from_text(token, value, status)
+            if (quoted .or. (status /= text_ok .and. status /= text_out_of_range)) then
+                call problems%add(line, where//': "'//escape_text(token)//'" is not a '// &
+                                  'valid value; write a whole number, for example  '// &
+                                  trim(variables(v)%example))
+                return
+            else if (status == text_out_of_range) then
+                if (index(variables(v)%rule, 'out of range') > 0) then
+                    call problems%add(line, where//' = '//escape_text(token)//': '// &
+                                      trim(variables(v)%rule))
+                else
+                    call problems%add(line, where//' = '//escape_text(token)//': is out '// &
+                                      'of range; '//trim(variables(v)%rule))
+                end if
+                return
+            end if
+            x = real(value, qp)
+        case (kind_real)
+            call real_from_text(token, x, status)
+            if (quoted .or. status /= text_ok) then
+                call problems%add(line, where//': "'//escape_text(token)//'" is not a '// &
+                                  'valid value; write a real number such as 0.25 or 1.5e-3')
+                return
+            end if
+        case (kind_word)
+            if (.not. quoted) then
+                call problems%add(line, where//': '//escape_text(token)//' must be '// &
+                                  'quoted, for example  '//trim(variables(v)%example))
+                return
+            end if
+            word = unquoted(token)
+            if (index(variables(v)%words, "'"//word//"'") == 0 .or. len(word) == 0 .or. &
+                index(word, "'") > 0 .or. len(word) > len(s%word)) then
+                call problems%add(line, where//' = '''//escape_text(word)//''': '// &
+                                  trim(variables(v)%rule))
+                return
+            end if
+            s%word(v) = word
+            s%valid(v) = .true.
+            s%reported(v) = .false.
+            return
+        end select
+        if (.not. in_range(variables(v), x)) then
+            call problems%add(line, where//' = '//escape_text(token)//': '// &
+                              trim(variables(v)%rule))
+            return
+        end if
+        s%value(v) = x
+        s%valid(v) = .true.
+        s%reported(v) = .false.
+    end subroutine check_scalar
+
+    !> Is x a valid number for variable `rule`? (NaN and Infinity never are.)
+    pure logical function in_range(rule, x)
+        type(variable_rule), intent(in) :: rule
+        real(qp), intent(in) :: x
+        in_range = ieee_is_finite(x)
+        if (.not. in_range) return
+        if (rule%zero_allowed .and. x == 0.0_qp) return
+        if (rule%low_open) then
+            in_range = x > rule%low
+        else
+            in_range = x >= rule%low
+        end if
+        if (rule%high_open) then
+            in_range = in_range .and. x < rule%high
+        else
+            in_range = in_range .and. x <= rule%high
+        end if
+    end function in_range
+
+    !> Position of a variable in `variables`.
+    pure integer function index_of(name)
+        character(len=*), intent(in) :: name
+        integer :: v
+        index_of = 0
+        do v = 1, size(variables)
+            if (variables(v)%name == name) index_of = v
+        end do
+    end function index_of
+
+    !> A string's text with each doubled quote made single (the quote is the one
+    !! before the text).
+    pure function unquoted(token) result(word)
+        character(len=*), intent(in) :: token
+        character(len=:), allocatable :: word
+        integer :: i
+        word = ''
+        i = 1
+        do while (i <= len(token))
+            word = word//token(i:i)
+            if (token(i:i) == '''' .or. token(i:i) == '"') i = i + 1
+            i = i + 1
+        end do
+        word = trim(adjustl(word))
+    end function unquoted
+
+    !> The per-row variable v: every value converted once, checked and kept for its
+    !! rows. Rows are held up to the largest row a value sets (at most n), and not at
+    !! all when that exceeds the number of values in the whole group (then the group
+    !! is invalid anyway: it cannot set n rows of both rho and psi).
+    subroutine read_rows(text, scan, variable_of, v, s, problems, r)
+        character(len=*), intent(in) :: text
+        type(group_scan), intent(in) :: scan
+        integer, intent(in) :: variable_of(:), v
+        type(scalar_values), intent(in) :: s
+        type(problem_list), intent(inout) :: problems
+        type(row_values), intent(out) :: r
+        integer(int64) :: largest, limit
+        integer :: a, status
+        character(len=:), allocatable :: where
+        type(variable_rule) :: rule
+        where = 'group &'//group_name//', variable '//trim(variables(v)%name)
+        rule = rule_of_rows(v, s)
+        limit = max_endpoints
+        if (s%have_n) limit = s%n
+        call size_rows(scan, variable_of, v, s, limit, where, problems, r, largest)
+        if (largest > 0 .and. largest <= max(scan%total, 1_int64)) then
+            allocate (r%x(largest), r%at(largest), stat=status)
+            if (status /= 0) then
+                call problems%add(r%line, where//': not enough memory for '// &
+                                  big_text(largest)//' rows')
+            else
+                r%rows = int(largest)
+                r%at = 0
+            end if
+        end if
+        do a = 1, scan%count
+            if (variable_of(a) == v) call read_assignment(text, scan, a, scan%usable(a), rule, &
+                                                        limit, where, problems, r)
+        end do
+    end subroutine read_rows
+
+    !> The assignments of per-row variable v: subscripts and counts checked; `largest`
+    !! is the largest row they set (at most `limit`).
+    subroutine size_rows(scan, variable_of, v, s, limit, where, problems, r, largest)
+        type(group_scan), intent(in) :: scan
+        integer, intent(in) :: variable_of(:), v
+        type(scalar_values), intent(in) :: s
+        integer(int64), intent(in) :: limit
+        character(len=*), intent(in) :: where
+        type(problem_list), intent(inout) :: problems
+        type(row_values), intent(inout) :: r
+        integer(int64), intent(out) :: largest
+        integer(int64) :: low, count_values
+        integer :: a
+        largest = 0
+        do a = 1, scan%count
+            if (variable_of(a) /= v) cycle
+            if (.not. r%given) r%line = scan%name_line(a)
+            r%given = .true.
+            r%broken = r%broken .or. .not. scan%usable(a)
+            if (.not. scan%usable(a)) cycle
+            low = scan%low(a)
+            count_values = sum(int(scan%repeat(scan%first(a):scan%last(a)), int64))
+            if (scan%indexed(a)) then
+                if (low < 1 .or. scan%high(a) < low .or. scan%high(a) > limit) then
+                    call problems%add(scan%name_line(a), where//'('//subscript(scan, a)// &
+                                      '): the subscript must be within 1 .. '// &
+                                      trim(merge('n =          ', 'max_endpoints', s%have_n))// &
+                                      ' '//integer_text(int(limit)))
+                    cycle
+                end if
+                if (count_values > scan%high(a) - low + 1) then
+                    call problems%add(scan%name_line(a), where//'('//subscript(scan, a)// &
+                                      '): has '//integer_text(int(scan%high(a) - low + 1))// &
+                                      ' element(s) but '//big_text(count_values)// &
+                                      ' values are given')
+                end if
+            end if
+            if (s%have_n .and. low + count_values - 1 > s%n .and. .not. scan%indexed(a)) then
+                call problems%add(scan%name_line(a), where//': has more than n = '// &
+                                  integer_text(s%n)//' values; give exactly n values or '// &
+                                  'raise n')
+            end if
+            largest = max(largest, min(low + count_values - 1, limit))
+        end do
+    end subroutine size_rows
+
+    !> Convert and check the values of assignment a, and keep them if `keep`.
+    subroutine read_assignment(text, scan, a, keep, rule, limit, where, problems, r)
+        character(len=*), intent(in) :: text, where
+        type(group_scan), intent(in) :: scan
+        integer, intent(in) :: a
+        logical, intent(in) :: keep
+        type(variable_rule), intent(in) :: rule
+        integer(int64), intent(in) :: limit
+        type(problem_list), intent(inout) :: problems
+        type(row_values), intent(inout) :: r
+        integer(int64) :: row, high
+        integer :: t, status, last_row
+        real(qp) :: x
+        row = scan%low(a)
+        high = huge(1_int64)
+        if (scan%indexed(a)) then
+            high = scan%high(a)
+            if (row < 1 .or. high < row .or. high > limit) return
+        end if
+        do t = scan%first(a), scan%last(a)
+            if (row > high) exit
+            if (scan%finish(t) >= scan%start(t)) then
+                call real_from_text(text(scan%start(t):scan%finish(t)), x, status)
+                if (.not. keep) then         ! a broken assignment: only bad texts
+                    if (status /= text_ok) call problems%add(scan%value_line(t), &
+                        where//': "'//escape_text(text(scan%start(t):scan%finish(t)))// &
+                        '" is not a valid value; write a real number such as 0.25 '// &
+                        'or 1.5e-3')
+                    cycle
+                end if
+                if (.not. problems%wanted(scan%value_line(t))) then
+                    if (status /= text_ok .or. scan%quoted(t) .or. &
+                        .not. ieee_is_finite(x)) then
+                        call problems%count_one()
+                    else if (.not. in_range(rule, x)) then
+                        call problems%count_one()
+                    end if
+                else if (status /= text_ok .or. scan%quoted(t)) then
+                    call problems%add(scan%value_line(t), where//'('// &
+                        row_range(row, min(row + scan%repeat(t) - 1, high))//'): "'// &
+                        escape_text(text(scan%start(t):scan%finish(t)))// &
+                        '" is not a valid value; write a real number such as 0.25 or 1.5e-3')
+                else if (.not. ieee_is_finite(x)) then
+                    call problems%add(scan%value_line(t), where//'('// &
+                        row_range(row, min(row + scan%repeat(t) - 1, high))// &
+                        '): is not a finite number (NaN or Infinity); give a real number')
+                else if (.not. in_range(rule, x)) then
+                    call problems%add(scan%value_line(t), where//'('// &
+                        row_range(row, min(row + scan%repeat(t) - 1, high))//') = '// &
+                        escape_text(text(scan%start(t):scan%finish(t)))//': '// &
+                        trim(rule%rule))
+                end if
+                r%count = r%count + scan%repeat(t)
+                if (row <= r%rows) then
+                    last_row = int(min(row + scan%repeat(t) - 1, int(r%rows, int64), high))
+                    r%x(row:last_row) = x
+                    r%at(row:last_row) = scan%value_line(t)
+                end if
+            end if
+            row = row + scan%repeat(t)
+        end do
+    end subroutine read_assignment
+
+    !> The rule for the rows of per-row variable v: its row of `variables`, or
+    !! `repulsive_rho` for rho with force = 'repulsive', or no range for rho while the
+    !! field is unknown (its range depends on the field).
+    pure function rule_of_rows(v, s) result(rule)
+        integer, intent(in) :: v
+        type(scalar_values), intent(in) :: s
+        type(variable_rule) :: rule
+        rule = variables(v)
+        if (rule%name /= 'rho') return
+        if (.not. s%force_ok) then
+            rule = variable_rule('rho', kind_real, .true., .true., '')
+        else if (s%force == 'repulsive') then
+            rule = repulsive_rho
+        end if
+    end function rule_of_rows
+
+
+    !> Required per-row variables given for all n rows; r0 and r1 in pairs.
+    subroutine check_counts(scan, s, rows, problems)
+        type(group_scan), intent(in) :: scan
+        type(scalar_values), intent(in) :: s
+        type(row_values), intent(in) :: rows(:)
+        type(problem_list), intent(inout) :: problems
+        integer :: k, i, set
+        character(len=:), allocatable :: where
+        if (.not. s%have_n .and. .not. s%reported(1)) call problems%add(scan%line, &
+            'group &'//group_name//', variable n: is missing (or null); set it to the '// &
+            'number of endpoints, for example  n = 5')
+        do k = 1, size(rows)
+            where = 'group &'//group_name//', variable '//trim(variables(k + 1)%name)
+            if (.not. rows(k)%given) then
+                if (variables(k + 1)%required) call problems%add(scan%line, where// &
+                    ': is missing; give n values, for example  '// &
+                    trim(variables(k + 1)%example))
+            else if (variables(k + 1)%required .and. s%have_n .and. .not. rows(k)%broken) then
+                if (rows(k)%rows > 0) then
+                    set = count(rows(k)%at(:min(rows(k)%rows, s%n)) /= 0)
+                else
+                    set = int(min(rows(k)%count, int(s%n, int64)))
+                end if
+                if (set < s%n) call problems%add(rows(k)%line, where//': has '// &
+                    integer_text(set)//' values but n = '//integer_text(s%n)// &
+                    '; give exactly n values')
+            end if
+        end do
+        if (.not. s%have_n) return
+        do i = 1, min(s%n, max(rows(3)%rows, rows(4)%rows))
+            if (row_set(rows(3), i) .eqv. row_set(rows(4), i)) cycle
+            if (row_set(rows(3), i)) then
+                call problems%add(rows(3)%at(i), 'group &'//group_name//', variable r1('// &
+                                  integer_text(i)//'): is missing; give both r0 and r1 '// &
+                                  'for a row (the paper''s secant method) or neither '// &
+                                  '(the bracketing solver)')
+            else
+                call problems%add(rows(4)%at(i), 'group &'//group_name//', variable r0('// &
+                                  integer_text(i)//'): is missing; give both r0 and r1 '// &
+                                  'for a row (the paper''s secant method) or neither '// &
+                                  '(the bracketing solver)')
+            end if
+        end do
+    end subroutine check_counts
+
+    pure logical function row_set(r, i)
+        type(row_values), intent(in) :: r
+        integer, intent(in) :: i
+        row_set = .false.
+        if (i <= r%rows) row_set = r%at(i) /= 0
+    end function row_set
 
     !> The field and what goes with it: exponent only (and always) with 'power', the
     !! paper's secant method and curves only with 'inverse_square' (its fast path).
-    subroutine check_force(table, scan, force, exponent, estimates, curve_points)
-        type(endpoint_table), intent(inout) :: table
+    subroutine check_force(scan, variable_of, s, r0, problems)
         type(group_scan), intent(in) :: scan
-        character(len=*), intent(in) :: force
-        real(qp), intent(in) :: exponent
-        logical, intent(in) :: estimates
-        integer, intent(in) :: curve_points
+        integer, intent(in) :: variable_of(:)
+        type(scalar_values), intent(in) :: s
+        type(row_values), intent(in) :: r0
+        type(problem_list), intent(inout) :: problems
         character(len=:), allocatable :: where
-        where = at(table%path, line_of(scan, 'force'))//'group &'//group_name
-        if (index(force_names, "'"//trim(force)//"'") == 0) then
-            call add(table, where//', variable force = '''//trim(force)//''': unknown '// &
-                     'field; use one of '//force_names)
-            return
+        integer :: line
+        logical :: exponent_given
+        if (.not. s%force_ok) return
+        line = line_of(scan, variable_of, index_of('force'))
+        where = 'group &'//group_name
+        exponent_given = s%given(index_of('exponent'))
+        if (s%force == 'power') then
+            if (.not. exponent_given) call problems%add(line, where//', variable '// &
+                'exponent: is missing; force = ''power'' needs the exponent n of '// &
+                'F = mu/r^n, n > 1, for example  exponent = 3')
+        else if (exponent_given) then
+            call problems%add(line_of(scan, variable_of, index_of('exponent')), where// &
+                              ', variable exponent: applies to force = ''power'' only')
         end if
-        if (trim(force) == 'power') then
-            if (exponent == unset) then
-                call add(table, where//', variable exponent: is missing; force = ''power'' '// &
-                         'needs the exponent n of F = mu/r^n, n > 1, for example  exponent = 3')
-            else if (.not. ieee_is_finite(exponent) .or. exponent <= 1.0_qp) then
-                call add(table, at(table%path, line_of(scan, 'exponent'))//'group &'// &
-                         group_name//', variable exponent: must be a number > 1 (n = 1 is '// &
-                         'force = ''logarithmic'')')
-            end if
-        else if (exponent /= unset) then
-            call add(table, at(table%path, line_of(scan, 'exponent'))//'group &'// &
-                     group_name//', variable exponent: applies to force = ''power'' only')
-        end if
-        if (trim(force) /= 'inverse_square') then
-            if (estimates) call add(table, where//': r0, r1 (the paper''s secant method) '// &
-                                    'apply to force = ''inverse_square'' only; leave them out')
-            if (curve_points /= 0) call add(table, where//': curve_points: curves are '// &
-                                            'sampled for force = ''inverse_square'' only')
+        if (s%force /= 'inverse_square') then
+            if (r0%count > 0) call problems%add(line, where//': r0, r1 (the paper''s '// &
+                'secant method) apply to force = ''inverse_square'' only; leave them out')
+            if (s%value(index_of('curve_points')) /= 0.0_qp) call problems%add(line, &
+                where//': curve_points: curves are sampled for force = ''inverse_square'' only')
         end if
     end subroutine check_force
 
-    !> Names known, value tokens well formed, n present and in range.
-    subroutine check_tokens(table, text, scan, n)
-        type(endpoint_table), intent(inout) :: table
-        character(len=*), intent(in) :: text
+    !> Line of the first assignment of variable v (0 if none).
+    pure integer function line_of(scan, variable_of, v)
         type(group_scan), intent(in) :: scan
-        integer, intent(out) :: n
-        integer :: a, t, ios, star, repeat, shown, count_points
-        character(len=:), allocatable :: name, token, value
-        real(qp) :: x
-        logical :: is_integer
-
-        n = 0
-        shown = 0
-        do a = 1, scan%count
-            name = trim(scan%name(a))
-            if (index(', '//variable_names//',', ', '//name//',') == 0) then
-                call add(table, at(table%path, scan%name_line(a))//'group &'//group_name// &
-                         ': unknown variable "'//name//'"; the variables are '// &
-                         variable_names)
-                cycle
-            end if
-            is_integer = name == 'n' .or. name == 'curve_points'
-            if (name == 'force') then
-                if (scan%last(a) /= scan%first(a)) then
-                    call add(table, at(table%path, scan%name_line(a))//'group &'// &
-                             group_name//', variable force: needs exactly one quoted name, '// &
-                             'for example  force = ''harmonic''')
-                else
-                    token = text(scan%start(scan%first(a)):scan%finish(scan%first(a)))
-                    if (len(token) < 2 .or. index('''"', token(1:1)) == 0 .or. &
-                        token(len(token):) /= token(1:1)) then
-                        call add(table, at(table%path, scan%name_line(a))//'group &'// &
-                                 group_name//', variable force: '//token//' must be quoted, '// &
-                                 'for example  force = ''harmonic''')
-                    end if
-                end if
-                cycle
-            end if
-            do t = scan%first(a), scan%last(a)
-                token = text(scan%start(t):scan%finish(t))
-                value = token
-                star = index(token, '*')
-                if (star > 0) then
-                    read (token(:star - 1), *, iostat=ios) repeat
-                    if (ios /= 0 .or. repeat < 1 .or. &
-                        verify(token(:star - 1), '0123456789') /= 0) then
-                        call bad_value('a repeat count r*value needs a whole number r >= 1')
-                        cycle
-                    end if
-                    value = token(star + 1:)
-                end if
-                if (len(value) == 0) cycle            ! null value: leaves the default
-                if (is_integer) then
-                    if (verify(value, '+-0123456789') /= 0) then
-                        call bad_value('write a whole number, for example  '//name// &
-                                       ' = '//trim(merge('5  ', '201', name == 'n')))
-                        cycle
-                    end if
-                else
-                    read (value, *, iostat=ios) x
-                    if (ios /= 0 .or. scan_bad_real(value)) then
-                        call bad_value('write a real number such as 0.25 or 1.5e-3')
-                        cycle
-                    end if
-                end if
-            end do
-        end do
-        if (size(table%errors) > 0) return
-
-        a = assignment_of(scan, 'n')
-        if (a == 0) then
-            call add(table, at(table%path, scan%line)//'group &'//group_name// &
-                     ', variable n: is missing; set it to the number of endpoints, for '// &
-                     'example  n = 5')
-            return
-        end if
-        if (scan%last(a) /= scan%first(a)) then
-            call add(table, at(table%path, scan%name_line(a))//'group &'//group_name// &
-                     ', variable n: needs exactly one value, for example  n = 5')
-            return
-        end if
-        token = text(scan%start(scan%first(a)):scan%finish(scan%first(a)))
-        read (token, *, iostat=ios) n
-        if (ios /= 0 .or. n < 1 .or. n > max_endpoints) then
-            call add(table, at(table%path, scan%name_line(a))//'group &'//group_name// &
-                     ', variable n: '//token//' is out of range; it must be 1 <= n <= '// &
-                     integer_text(max_endpoints))
-        end if
-
-        a = assignment_of(scan, 'curve_points')
-        if (a > 0) then
-            if (scan%last(a) /= scan%first(a)) then
-                call add(table, at(table%path, scan%name_line(a))//'group &'//group_name// &
-                         ', variable curve_points: needs exactly one value, for example  '// &
-                         'curve_points = 201')
-            else
-                token = text(scan%start(scan%first(a)):scan%finish(scan%first(a)))
-                read (token, *, iostat=ios) count_points
-                if (len(token) > 0 .and. ios /= 0) then
-                    call add(table, at(table%path, scan%name_line(a))//'group &'// &
-                             group_name//', variable curve_points: '//token//' is out of '// &
-                             'range; it must be 0 (no curves) or 2 <= curve_points <= '// &
-                             integer_text(max_curve_points))
-                end if
-            end if
-        end if
-
-    contains
-
-        subroutine bad_value(advice)
-            character(len=*), intent(in) :: advice
-            shown = shown + 1
-            if (shown > max_row_messages) return
-            call add(table, at(table%path, scan%token_line(t))//'group &'//group_name// &
-                     ', variable '//name//': "'//token//'" is not a valid value; '//advice)
-        end subroutine bad_value
-
-    end subroutine check_tokens
-
-    !> Tokens list-directed input accepts as reals but no user means as one.
-    pure logical function scan_bad_real(value)
-        character(len=*), intent(in) :: value
-        scan_bad_real = verify(lower(value), '+-.0123456789edq') /= 0 .and. &
-                        .not. any(lower(value) == [character(len=9) :: 'nan', 'inf', &
-                                  'infinity', '+inf', '-inf', '+infinity', '-infinity'])
-    end function scan_bad_real
-
-    !> Count and finiteness of one array variable.
-    subroutine check_array(table, text, scan, name, a, values, n, required)
-        type(endpoint_table), intent(inout) :: table
-        character(len=*), intent(in) :: text, name
-        type(group_scan), intent(in) :: scan
-        integer, intent(in) :: a, n
-        real(qp), intent(in) :: values(:)
-        logical, intent(in) :: required
-        integer :: count_set, i, shown
-
-        count_set = count(values(1:n) /= unset)
-        if (a == 0 .and. count_set == 0) then
-            if (required) call add(table, at(table%path, scan%line)//'group &'// &
-                                   group_name//', variable '//name//': is missing; give '// &
-                                   'n values, for example  '//name//' = 0.5, 0.9')
-            return
-        end if
-        if (values(n + 1) /= unset) then
-            call add(table, at(table%path, line_of(scan, name))//'group &'//group_name// &
-                     ', variable '//name//': has more than n = '//integer_text(n)// &
-                     ' values; give exactly n values or raise n')
-        end if
-        if (required .and. count_set < n) then
-            call add(table, at(table%path, line_of(scan, name))//'group &'//group_name// &
-                     ', variable '//name//': has '//integer_text(count_set)// &
-                     ' values but n = '//integer_text(n)//'; give exactly n values')
-        end if
-        shown = 0
-        do i = 1, n
-            if (values(i) == unset .or. ieee_is_finite(values(i))) cycle
-            shown = shown + 1
-            if (shown <= max_row_messages) then
-                call add(table, at(table%path, row_line(text, scan, a, i))//'group &'// &
-                         group_name//', variable '//name//'('//integer_text(i)//'): is not '// &
-                         'a finite number (NaN or Infinity); give a real number')
-            end if
-        end do
-        call add_more(table, name, shown)
-    end subroutine check_array
-
-    !> One range check over the rows of a variable.
-    subroutine check_rows(table, text, scan, name, a, values, n, rule, valid)
-        type(endpoint_table), intent(inout) :: table
-        character(len=*), intent(in) :: text, name, rule
-        type(group_scan), intent(in) :: scan
-        integer, intent(in) :: a, n
-        real(qp), intent(in) :: values(:)
-        interface
-            pure logical function valid(x)
-                import :: qp
-                real(qp), intent(in) :: x
-            end function valid
-        end interface
-        integer :: i, shown
-        character(len=48) :: shown_value
-        shown = 0
-        do i = 1, n
-            if (values(i) == unset .or. .not. ieee_is_finite(values(i))) cycle
-            if (valid(values(i))) cycle
-            shown = shown + 1
-            if (shown > max_row_messages) cycle
-            write (shown_value, '(g0.12)') values(i)
-            call add(table, at(table%path, row_line(text, scan, a, i))//'group &'// &
-                     group_name//', variable '//name//'('//integer_text(i)//') = '// &
-                     trim(adjustl(shown_value))//': '//rule)
-        end do
-        call add_more(table, name, shown)
-    end subroutine check_rows
-
-    pure logical function in_rho_range(x)
-        real(qp), intent(in) :: x
-        in_rho_range = x > 0.0_qp .and. x <= 1.0_qp
-    end function in_rho_range
-
-    pure logical function in_repulsive_rho_range(x)
-        real(qp), intent(in) :: x
-        in_repulsive_rho_range = x >= 1.0_qp
-    end function in_repulsive_rho_range
-
-    pure logical function in_psi_range(x)
-        real(qp), intent(in) :: x
-        in_psi_range = x >= 0.0_qp .and. x <= pi
-    end function in_psi_range
-
-    !> r0 and r1 come in pairs, per row.
-    subroutine check_pairs(table, text, scan, r0, r1, n, a_r0, a_r1)
-        type(endpoint_table), intent(inout) :: table
-        character(len=*), intent(in) :: text
-        type(group_scan), intent(in) :: scan
-        real(qp), intent(in) :: r0(:), r1(:)
-        integer, intent(in) :: n, a_r0, a_r1
-        integer :: i, shown
-        shown = 0
-        do i = 1, n
-            if ((r0(i) == unset) .eqv. (r1(i) == unset)) cycle
-            shown = shown + 1
-            if (shown > max_row_messages) cycle
-            if (r1(i) == unset) then
-                call add(table, at(table%path, row_line(text, scan, a_r0, i))//'group &'// &
-                         group_name//', variable r1('//integer_text(i)//'): is missing; give '// &
-                         'both r0 and r1 for a row (the paper''s secant method) or neither '// &
-                         '(the bracketing solver)')
-            else
-                call add(table, at(table%path, row_line(text, scan, a_r1, i))//'group &'// &
-                         group_name//', variable r0('//integer_text(i)//'): is missing; give '// &
-                         'both r0 and r1 for a row (the paper''s secant method) or neither '// &
-                         '(the bracketing solver)')
-            end if
-        end do
-        call add_more(table, 'r0, r1', shown)
-    end subroutine check_pairs
-
-    subroutine add_more(table, name, shown)
-        type(endpoint_table), intent(inout) :: table
-        character(len=*), intent(in) :: name
-        integer, intent(in) :: shown
-        if (shown > max_row_messages) then
-            call add(table, table%path//': group &'//group_name//', variable '//name// &
-                     ': ... and '//integer_text(shown - max_row_messages)//' more rows like these')
-        end if
-    end subroutine add_more
-
-    !> The last unsubscripted assignment of a variable (0 if none).
-    pure integer function assignment_of(scan, name)
-        type(group_scan), intent(in) :: scan
-        character(len=*), intent(in) :: name
-        integer :: a
-        assignment_of = 0
-        do a = 1, scan%count
-            if (trim(scan%name(a)) == name .and. .not. scan%indexed(a)) assignment_of = a
-        end do
-    end function assignment_of
-
-    !> Line of the first assignment of a variable, subscripted or not (0 if none).
-    pure integer function line_of(scan, name)
-        type(group_scan), intent(in) :: scan
-        character(len=*), intent(in) :: name
+        integer, intent(in) :: variable_of(:), v
         integer :: a
         line_of = 0
-        do a = scan%count, 1, -1
-            if (trim(scan%name(a)) == name) line_of = scan%name_line(a)
+        do a = 1, scan%count
+            if (variable_of(a) == v) then
+                line_of = scan%name_line(a)
+                return
+            end if
         end do
     end function line_of
 
-    !> Line holding row i of the variable assigned by assignment a (0 if unknown).
-    pure integer function row_line(text, scan, a, i)
-        character(len=*), intent(in) :: text
-        type(group_scan), intent(in) :: scan
-        integer, intent(in) :: a, i
-        row_line = 0
-        if (a > 0) row_line = scan%value_line(text, a, i)
-    end function row_line
-
-    !> "file:line: " (or "file: " when the line is unknown).
-    pure function at(path, line) result(prefix)
-        character(len=*), intent(in) :: path
-        integer, intent(in) :: line
-        character(len=:), allocatable :: prefix
-        if (line > 0) then
-            prefix = path//':'//integer_text(line)//': '
-        else
-            prefix = path//': '
-        end if
-    end function at
-
-    subroutine add(table, text)
+    !> The valid table from the values read.
+    subroutine fill_table(s, rows, table)
+        type(scalar_values), intent(in) :: s
+        type(row_values), intent(in) :: rows(:)
         type(endpoint_table), intent(inout) :: table
-        character(len=*), intent(in) :: text
-        table%errors = [table%errors, message(text)]
-    end subroutine add
+        integer :: n, i
+        n = s%n
+        table%n = n
+        table%rho = rows(1)%x(1:n)
+        table%psi = rows(2)%x(1:n)
+        allocate (table%has_estimates(n), table%r0(n), table%r1(n))
+        do i = 1, n
+            table%has_estimates(i) = row_set(rows(3), i)
+            table%r0(i) = 0.0_qp
+            table%r1(i) = 0.0_qp
+            if (table%has_estimates(i)) then
+                table%r0(i) = rows(3)%x(i)
+                table%r1(i) = rows(4)%x(i)
+            end if
+        end do
+        table%secant_tolerance = s%value(index_of('secant_tolerance'))
+        table%curve_points = nint(s%value(index_of('curve_points')))
+        table%force = s%force
+        table%exponent = merge(s%value(index_of('exponent')), 0.0_qp, &
+                              s%given(index_of('exponent')))
+    end subroutine fill_table
 
-    !> Whole file as one string with new-line characters.
-    subroutine read_text(path, text, ios, io_message)
+    !> The problems as messages "file:line: text", then "... and N more".
+    subroutine report(problems, path, table)
+        type(problem_list), intent(in) :: problems
+        character(len=*), intent(in) :: path
+        type(endpoint_table), intent(inout) :: table
+        integer :: k
+        table%problems = problems%total
+        allocate (table%errors(problems%kept))
+        do k = 1, problems%kept
+            if (problems%line(k) > 0) then
+                table%errors(k)%text = path//':'//integer_text(problems%line(k))//': '// &
+                                       problems%message(k)
+            else
+                table%errors(k)%text = path//': '//problems%message(k)
+            end if
+        end do
+        if (problems%total > problems%kept) then
+            table%errors = [table%errors, message(path//': ... and '// &
+                            integer_text(problems%total - problems%kept)// &
+                            ' more problems (the first '//integer_text(problems%kept)// &
+                            ' by line are listed)')]
+        end if
+    end subroutine report
+
+    !> The path as shown in messages: control characters escaped, stdin named.
+    pure function shown_path(path) result(shown)
+        character(len=*), intent(in) :: path
+        character(len=:), allocatable :: shown
+        if (path == stdin_path) then
+            shown = '<stdin>'
+        else
+            shown = escape_text(path)
+        end if
+    end function shown_path
+
+    !> "i" or "i:j" for rows i..j.
+    pure function row_range(first, last) result(text)
+        integer(int64), intent(in) :: first, last
+        character(len=:), allocatable :: text
+        text = big_text(first)
+        if (last > first) text = text//':'//big_text(last)
+    end function row_range
+
+    !> The subscript of assignment a as written ("i" or "i:j").
+    pure function subscript(scan, a) result(text)
+        type(group_scan), intent(in) :: scan
+        integer, intent(in) :: a
+        character(len=:), allocatable :: text
+        text = big_text(scan%low(a))
+        if (scan%section(a)) text = text//':'//big_text(scan%high(a))
+    end function subscript
+
+    pure function big_text(value) result(text)
+        integer(int64), intent(in) :: value
+        character(len=:), allocatable :: text
+        character(len=24) :: buffer
+        write (buffer, '(i0)') value
+        text = trim(buffer)
+    end function big_text
+
+    !> Whole file as one string with new-line characters; `problem` is '' or the cause.
+    subroutine read_text(path, text, problem)
         character(len=*), intent(in) :: path
         character(len=:), allocatable, intent(out) :: text
-        integer, intent(out) :: ios
-        character(len=*), intent(inout) :: io_message
-        integer :: unit, length
+        character(len=:), allocatable, intent(out) :: problem
+        integer :: unit, ios, status
+        integer(int64) :: length
+        character(len=512) :: io_message
         text = ''
+        problem = ''
         open (newunit=unit, file=path, status='old', action='read', access='stream', &
               form='unformatted', iostat=ios, iomsg=io_message)
-        if (ios /= 0) return
+        if (ios /= 0) then
+            problem = trim(io_message)
+            return
+        end if
         inquire (unit=unit, size=length)
-        if (length > 0) then
-            text = repeat(' ', length)
-            read (unit, iostat=ios, iomsg=io_message) text
+        if (length > huge(1) - 1) then
+            problem = 'the file has '//big_text(length)//' bytes; the most is '// &
+                      integer_text(huge(1) - 1)
+        else if (length > 0) then
+            deallocate (text)
+            allocate (character(len=length) :: text, stat=status)
+            if (status /= 0) then
+                problem = 'not enough memory for its '//big_text(length)//' bytes'
+                text = ''
+            else
+                read (unit, iostat=ios, iomsg=io_message) text
+                if (ios /= 0) problem = trim(io_message)
+            end if
         end if
         close (unit)
     end subroutine read_text
+
+    !> Standard input, whole, as one string (read with the C library's `read`, in
+    !! blocks, into a buffer that doubles).
+    subroutine read_stdin(text, problem)
+        character(len=:), allocatable, intent(out) :: text
+        character(len=:), allocatable, intent(out) :: problem
+        character(len=:), allocatable :: grown
+        integer, parameter :: block = 1048576
+        integer(c_size_t) :: got
+        integer :: length, status
+        interface
+            function c_read(fd, buffer, count) bind(c, name='read') result(got)
+                import :: c_int, c_size_t, c_char
+                integer(c_int), value :: fd
+                character(kind=c_char), intent(out) :: buffer(*)
+                integer(c_size_t), value :: count
+                integer(c_size_t) :: got          ! ssize_t: -1 on error
+            end function c_read
+        end interface
+        allocate (character(len=block) :: text)
+        problem = ''
+        length = 0
+        do
+            if (len(text) - length < block) then
+                if (len(text) > huge(1)/2 - block) then
+                    problem = 'standard input is longer than '//integer_text(huge(1)/2)// &
+                              ' bytes'
+                    exit
+                end if
+                allocate (character(len=2*len(text)) :: grown, stat=status)
+                if (status /= 0) then
+                    problem = 'not enough memory for standard input'
+                    exit
+                end if
+                grown(:length) = text(:length)
+                call move_alloc(grown, text)
+            end if
+            got = c_read(0_c_int, text(length + 1:length + block), int(block, c_size_t))
+            if (got == 0) exit
+            if (got < 0 .or. got > block) then
+                problem = 'reading standard input failed'
+                exit
+            end if
+            length = length + int(got)
+        end do
+        text = text(:length)
+    end subroutine read_stdin
 
 end module brachistochrone_endpoint_input

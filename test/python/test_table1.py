@@ -3,7 +3,7 @@ from decimal import Decimal, ROUND_HALF_EVEN
 
 from conftest import ROOT, read_csv
 
-# Table 1 as printed, with the rho of rows 1-2 swapped back (ERRATA.md)
+# Table 1 as printed, with the rho of rows 1-2 swapped back (docs/ERRATA.md)
 TABLE1 = [
     # rho, psi, steps, R-bar, s, t
     ("0.2", "1.2", 10, "0.184781963328079", "0.967544327890300", "1.127755808164997"),

@@ -1,4 +1,4 @@
-"""brachistochrone-tunnel against an independent double-precision computation:
+"""`brachistochrone tunnel` against an independent double-precision computation:
 haversine central angle, then Saitoh's closed forms (10) and the hypocycloid."""
 import math
 import pathlib
@@ -11,9 +11,10 @@ def tunnel(*args):
     subprocess.run([str(FPM), "build", "--profile", "release"], cwd=ROOT, check=True,
                    capture_output=True)
     exe = subprocess.run([str(FPM), "run", "--profile", "release", "--runner", "echo",
-                          "brachistochrone-tunnel"], cwd=ROOT, check=True, capture_output=True,
+                          "brachistochrone"], cwd=ROOT, check=True, capture_output=True,
                          text=True).stdout.strip().splitlines()[-1]
-    return subprocess.run([str(ROOT / exe), *map(str, args)], capture_output=True, text=True)
+    return subprocess.run([str(ROOT / exe), "tunnel", *map(str, args)], capture_output=True,
+                          text=True)
 
 
 def oracle(lat1, lon1, lat2, lon2, radius=6371.0, g=9.81):

@@ -35,10 +35,12 @@ module brachistochrone_curve
     use brachistochrone_status, only: status_ok, status_invalid_argument, &
                                       status_not_finite, status_no_convergence
     use brachistochrone_closed_forms, only: radial_time
-    use brachistochrone_inverse_square, only: inverse_square_model, arch_values, level_fine, &
+    use brachistochrone_inverse_square, only: inverse_square_model, evaluate_arch, arch_values, &
+            level_fine, &
             level_coarse
-    use brachistochrone_two_point, only: endpoint_solution, arch_first, arch_second, &
-            arch_complete, arch_radial
+    use brachistochrone_solution, only: endpoint_solution
+    use brachistochrone_arches, only: arch_first, arch_second, arch_complete, arch_radial
+    use brachistochrone_roots, only: root_function, newton_bracketed
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     implicit none
     private
@@ -49,9 +51,9 @@ module brachistochrone_curve
     !> Fewest points of a sampled curve (A and B).
     integer, parameter :: min_curve_points = 2
 
-    !> Newton iterations allowed per point (bisection fallback included).
+    !> Root-finder evaluations allowed per point and phase.
     integer, parameter :: max_iterations = 300
-    !> Relative Newton step in r below which the 17-digit phase hands over to the full
+    !> Relative Newton step in u below which the 17-digit phase hands over to the full
     !! rules (the error after it is about the step squared times the curvature).
     real(qp), parameter :: coarse_tolerance = 1.0e-8_qp
 
@@ -84,6 +86,17 @@ module brachistochrone_curve
         real(qp) :: big_r = 0.0_qp            !! apse radius R
         real(qp) :: one_minus_big_r = 0.0_qp  !! 1 - R
     end type arch_shape
+
+    !> Arclength from A minus a target, as a function of u on one half-arch.
+    type, extends(root_function) :: arclength_gap
+        type(inverse_square_model) :: model   !! the evaluator
+        type(arch_shape) :: shape             !! the curve
+        integer :: level = level_coarse       !! precision of the rules
+        logical :: second = .false.           !! second half-arch
+        real(qp) :: target = 0.0_qp           !! the arclength wanted
+    contains
+        procedure :: evaluate => arclength_gap_evaluate
+    end type arclength_gap
 
 contains
 
@@ -158,7 +171,7 @@ contains
                 samples%s(k) = 0.0_qp
                 samples%t(k) = 0.0_qp
             else
-                values = model%evaluate_arch(level_fine, .false., big_r(k), big_r(k), &
+                values = evaluate_arch(model, level_fine, .false., big_r(k), big_r(k), &
                                              0.0_qp, .false., .true.)
                 samples%theta(k) = values%angle
                 samples%s(k) = values%arclength
@@ -241,7 +254,7 @@ contains
         start%u = sqrt(one_minus_big_r)
         start%r = 1.0_qp
         start%slope = arclength_slope(shape, 1.0_qp, .false.)
-        values = model%evaluate_arch(level_fine, end_second, end_r, big_r, end_gap, &
+        values = evaluate_arch(model, level_fine, end_second, end_r, big_r, end_gap, &
                                      .false., .true.)
         finish = arch_point(sqrt(end_gap), end_r, values%angle, values%arclength, &
                             values%time, arclength_slope(shape, end_r, end_second))
@@ -253,7 +266,7 @@ contains
         else if (.not. end_second) then
             call fill(model, shape, samples, start, finish, .false., 1, intervals, status)
         else
-            values = model%evaluate_arch(level_fine, .false., big_r, big_r, 0.0_qp, &
+            values = evaluate_arch(model, level_fine, .false., big_r, big_r, 0.0_qp, &
                                          .false., .true.)
             apse = arch_point(0.0_qp, big_r, values%angle, values%arclength, values%time, &
                               arclength_slope(shape, big_r, .true.))
@@ -375,15 +388,16 @@ contains
         real(qp) :: r
         r = min(1.0_qp, shape%big_r + u*u)
         ! r - R is exact where it is small (r <= 2R), so R + (r - R) = r
-        values = model%evaluate_arch(level, second, r, shape%big_r, r - shape%big_r, &
+        values = evaluate_arch(model, level, second, r, shape%big_r, r - shape%big_r, &
                                      .false., .true.)
         point = arch_point(u, r, values%angle, values%arclength, values%time, &
                            arclength_slope(shape, r, second))
     end function arch_point_at
 
-    !> The point of one half-arch whose arclength from A is `target`: safeguarded Newton
-    !! in u on the bracket [lo, hi] (the arclength minus target changes sign on it),
-    !! first on the 17-digit rules, then on the full ones.
+    !> The point of one half-arch whose arclength from A is `target`: the library's
+    !! safeguarded Newton (`newton_bracketed`) in u on the bracket [lo, hi] (the arclength
+    !! minus target changes sign on it), first on the 17-digit rules, then on the full
+    !! ones from the coarse root. Status: status_ok or the root finder's.
     pure subroutine invert_arclength(model, shape, second, target, lo, hi, guess, point, &
                                      status)
         type(inverse_square_model), intent(in) :: model
@@ -392,58 +406,35 @@ contains
         real(qp), intent(in) :: target, lo, hi, guess
         type(arch_point), intent(out) :: point
         integer, intent(out) :: status
-        real(qp) :: a, b, u, u_newton, f, r_newton
-        integer :: iteration, level
-
-        level = level_coarse
-        a = lo
-        b = hi
-        u = guess
-        if (.not. (u > a .and. u < b)) u = 0.5_qp*(a + b)
-        status = status_no_convergence
-        do iteration = 1, max_iterations
-            point = arch_point_at(model, shape, level, second, u)
-            f = point%s - target
-            u_newton = u - f/point%slope
-            r_newton = shape%big_r + u_newton*u_newton
-            if (ieee_is_finite(u_newton)) then
-                if (level == level_fine .and. abs(r_newton - point%r) <= eps_qp*point%r) then
-                    ! the next step would move r by about an ulp: this is the point
-                    status = status_ok
-                    return
-                else if (level == level_coarse .and. &
-                         abs(r_newton - point%r) <= coarse_tolerance*point%r) then
-                    ! to the full rules, on the whole bracket again (the coarse signs
-                    ! may be wrong by their own error)
-                    level = level_fine
-                    a = lo
-                    b = hi
-                    u = min(max(u_newton, a), b)
-                    cycle
-                end if
-            end if
-            ! shrink the bracket: f has the sign of slope*(u - root)
-            if ((f > 0.0_qp) .eqv. (point%slope > 0.0_qp)) then
-                b = u
-            else
-                a = u
-            end if
-            if (ieee_is_finite(u_newton) .and. u_newton > a .and. u_newton < b) then
-                u = u_newton
-            else
-                u = 0.5_qp*(a + b)
-            end if
-            if (b - a <= eps_qp*max(b, tiny(1.0_qp))) then
-                if (level == level_fine) then
-                    point = arch_point_at(model, shape, level, second, u)
-                    status = status_ok
-                    return
-                end if
-                level = level_fine
-                a = lo
-                b = hi
-            end if
-        end do
+        type(arclength_gap) :: gap
+        real(qp) :: u, f_lo, f_hi
+        integer :: steps
+        ! s decreases in u on the first half-arch and increases on the second
+        f_lo = merge(-1.0_qp, 1.0_qp, second)
+        f_hi = -f_lo
+        gap = arclength_gap(model=model, shape=shape, level=level_coarse, second=second, &
+                            target=target)
+        call newton_bracketed(gap, lo, f_lo, hi, f_hi, guess, coarse_tolerance, 0.0_qp, &
+                              max_iterations, u, steps, status)
+        if (status == status_ok) then
+            gap%level = level_fine
+            call newton_bracketed(gap, lo, f_lo, hi, f_hi, u, eps_qp, tiny(1.0_qp), &
+                                  max_iterations, u, steps, status)
+        end if
+        point = arch_point_at(model, shape, level_fine, second, u)
     end subroutine invert_arclength
+
+    !> s(u) - target and ds/du on one half-arch, for the root finder.
+    pure subroutine arclength_gap_evaluate(self, x, f, df, status)
+        class(arclength_gap), intent(in) :: self
+        real(qp), intent(in) :: x             !! u = sqrt(r - R)
+        real(qp), intent(out) :: f, df        !! s(u) - target, ds/du
+        integer, intent(out) :: status        !! status_ok
+        type(arch_point) :: point
+        point = arch_point_at(self%model, self%shape, self%level, self%second, x)
+        f = point%s - self%target
+        df = point%slope
+        status = status_ok
+    end subroutine arclength_gap_evaluate
 
 end module brachistochrone_curve
