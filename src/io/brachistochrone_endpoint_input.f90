@@ -40,6 +40,7 @@ module brachistochrone_endpoint_input
     use brachistochrone_fields, only: field_names
     use brachistochrone_kinds, only: qp, pi
     use brachistochrone_sha256, only: sha256_hex
+    use brachistochrone_speed_laws, only: max_power_exponent
     use brachistochrone_namelist_scan, only: group_scan, scan_group, problem_list
     use brachistochrone_strings, only: integer_text, escape_text, real_from_text, &
                                        integer_from_text, text_ok, text_out_of_range
@@ -110,8 +111,9 @@ module brachistochrone_endpoint_input
                       words=force_names, default_word='inverse_square', &
                       rule='unknown field; use one of '//force_names), &
         variable_rule('exponent', kind_real, .false., .false., 'exponent = 3', low=1.0_qp, &
-                      low_open=.true., rule='must be a number > 1 (n = 1 is force = '// &
-                      '''logarithmic'')')]
+                      low_open=.true., high=max_power_exponent, &
+                      rule='must be a number > 1 and <= 32 (n = 1 is force = '// &
+                      '''logarithmic''; the general engine supports n <= 32)')]
 
     !> rho's range with force = 'repulsive' (paths move outward).
     type(variable_rule), parameter :: repulsive_rho = variable_rule('rho', kind_real, &
