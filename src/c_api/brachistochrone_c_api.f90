@@ -67,13 +67,9 @@ contains
         real(c_double), value :: rho, psi           !! the endpoint B
         type(c_ptr), value :: apse_radius, arclength, time !! outputs (double *), or NULL
         integer(c_int) :: status
-        type(named_field) :: field
         type(endpoint_solution) :: solution
-        call prepare_field(force_name(force), real(exponent, qp), field, status)
-        if (status == status_ok) then
-            solution = solve_in_field(field, real(rho, qp), real(psi, qp))
-            status = solution%status
-        end if
+        solution = solve_named(force, real(exponent, qp), real(rho, qp), real(psi, qp))
+        status = int(solution%status, c_int)
         call put_double(apse_radius, solution%apse_radius, has_apse(solution))
         call put_double(arclength, solution%arclength, solution%has_arclength)
         call put_double(time, solution%time, solution%has_time)
@@ -90,13 +86,9 @@ contains
         real(c_float128), value :: rho, psi         !! the endpoint B
         type(c_ptr), value :: apse_radius, arclength, time !! outputs (__float128 *)
         integer(c_int) :: status
-        type(named_field) :: field
         type(endpoint_solution) :: solution
-        call prepare_field(force_name(force), real(exponent, qp), field, status)
-        if (status == status_ok) then
-            solution = solve_in_field(field, real(rho, qp), real(psi, qp))
-            status = solution%status
-        end if
+        solution = solve_named(force, real(exponent, qp), real(rho, qp), real(psi, qp))
+        status = int(solution%status, c_int)
         call put_quad(apse_radius, solution%apse_radius, has_apse(solution))
         call put_quad(arclength, solution%arclength, solution%has_arclength)
         call put_quad(time, solution%time, solution%has_time)
@@ -204,6 +196,23 @@ contains
             status = int(code, c_int)
         end if
     end subroutine prepare_field
+
+    !> Solve endpoint (rho, psi) in the field named at `force`; a bad name or exponent is
+    !! the solution's status (its values then do not exist).
+    function solve_named(force, exponent, rho, psi) result(solution)
+        type(c_ptr), intent(in) :: force      !! field name, NUL-terminated
+        real(qp), intent(in) :: exponent      !! n of F = mu/r^n ('power' only)
+        real(qp), intent(in) :: rho, psi      !! the endpoint
+        type(endpoint_solution) :: solution
+        type(named_field) :: field
+        integer(c_int) :: status
+        call prepare_field(force_name(force), exponent, field, status)
+        if (status == status_ok) then
+            solution = solve_in_field(field, rho, psi)
+        else
+            solution%status = int(status)
+        end if
+    end function solve_named
 
     !> Solve endpoint (rho, psi) in a prepared field.
     pure function solve_in_field(field, rho, psi) result(solution)
