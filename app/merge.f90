@@ -250,8 +250,8 @@ contains
         file = escape_text(slice%path)//': '
         if (slice%field_line == 0) call add_problem(file//'no "'//field_key// &
                                                     '" line in its provenance', exit_usage)
-        if (slice%input_line == 0) call add_problem(file//'no "'//input_key//'PATH, rows '// &
-                                                    'K to L of N" line in its provenance', exit_usage)
+        if (slice%input_line == 0) call add_problem(file//'no "'//input_key// &
+            'PATH, rows K to L of N" line in its provenance', exit_usage)
         if (slice%sha_line == 0) then
             call add_problem(file//'no "'//sha_key//'HEX, SIZE bytes" line: written by a '// &
                              'version of '//program_name//' without input checksums; '// &
@@ -581,8 +581,8 @@ contains
         integer, intent(in) :: unit
         write (unit, '(a)') 'usage: '//name//' [--force] OUT.csv SLICE1.csv SLICE2.csv ...'
         write (unit, '(a)') ''
-        write (unit, '(a)') 'Join the CSV files (--csv) of the slices of one run (--first/'// &
-            '--last or --slice) into'
+        write (unit, '(a)') 'Join the CSV files (--csv) of the slices of one run (rows K '// &
+            'to L each) into'
         write (unit, '(a)') 'OUT.csv (- for standard output), rows in row order. The slices,'// &
             ' in any order, must'
         write (unit, '(a)') 'come from the same input (its sha256 and size), version, field'// &
