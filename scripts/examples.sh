@@ -10,7 +10,7 @@
 #   5. example/fpm_user: an fpm project with its own quadrature/roots/strings modules
 #      that depends on this package by path.
 #   6. scripts/install.sh (fpm install --prefix, the header, pkg-config), c_user against
-#      it, then the README's Slurm snippet as written (n made small).
+#      it, then the README's Slurm snippet as written (n made small) and the merge.
 # Usage: bash scripts/examples.sh        Exit status non-zero if anything failed.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -102,7 +102,8 @@ grep -q '^n=1000000;' <<<"$snippet"
     for k in 0 1 2 3 4 5 6 7 8 9; do
         SLURM_ARRAY_TASK_ID=$k bash -euc "${snippet/n=1000000/n=$rows}"
     done
-    bash "$root/scripts/merge_csv.sh" merged.csv part{0..9}.csv
+    brachistochrone merge merged.csv part{9..0}.csv
+    grep -qx "# input: big.nml, rows 1 to $rows of $rows" merged.csv
     brachistochrone big.nml --csv whole.csv --no-table --quiet
     diff <(grep -v '^#' merged.csv) <(grep -v '^#' whole.csv)
     test "$(brachistochrone --version)" = "brachistochrone $version"

@@ -64,10 +64,12 @@ def split(data):
 def job(run, tmp_path, env_fixed_date):
     """A 500-row input, its whole run, and its 7 slices (paths in row order)."""
     nml = tmp_path / "in.nml"
-    write_table(nml, ROWS, seed=2026)
+    write_table(nml, ROWS, seed=2026, estimates=True)
     whole = solve(run, nml, tmp_path / "whole.csv")
     parts = [solve(run, nml, tmp_path / f"part{k}.csv", "--first", first, "--last", last)
              for k, (first, last) in enumerate(bounds(ROWS, SLICES))]
+    for part, (first, last) in zip(parts, bounds(ROWS, SLICES)):
+        assert b", rows %d to %d of %d\n" % (first, last, ROWS) in part.read_bytes()
     return nml, whole, parts
 
 
