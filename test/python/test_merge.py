@@ -186,3 +186,16 @@ def test_usage(run, tmp_path):
         result = run("merge", *args)
         assert result.returncode == 1 and result.stderr, args
     assert not (tmp_path / "out.csv").exists()
+
+
+def test_an_input_named_like_rows_and_an_io_error(run, tmp_path, env_fixed_date):
+    nml = tmp_path / "in, rows 1 to 2 of 3.nml"       # the rows are the LAST ", rows "
+    write_table(nml, 9)
+    parts = [solve(run, nml, tmp_path / f"p{k}.csv", "--first", f, "--last", l)
+             for k, (f, l) in enumerate(((1, 4), (5, 9)))]
+    out = tmp_path / "merged.csv"
+    result = run("merge", out, parts[1], parts[0])
+    assert result.returncode == 0, result.stderr
+    assert b"# input: %s, rows 1 to 9 of 9\n" % str(nml).encode() in out.read_bytes()
+    result = run("merge", tmp_path / "no such directory" / "m.csv", *parts)
+    assert result.returncode == 3 and "cannot write" in result.stderr
