@@ -50,7 +50,7 @@ module brachistochrone_status
     integer, parameter :: status_rho_below_start = 13
     !> The field name is not one of the fields the library knows (`field_names`).
     integer, parameter :: status_unknown_field = 14
-    !> Power law: the exponent n of F = mu/r^n is outside the supported range.
+    !> Power law: the exponent n of F = mu/r^n is outside the supported range 1 < n <= 32.
     integer, parameter :: status_bad_exponent = 15
     !> The field does not support the operation asked for (for example sampling its
     !! curves, or the paper's secant method from initial estimates).
@@ -166,7 +166,7 @@ contains
             message = 'unknown field: give one of ''inverse_square'', ''power'', '// &
                       '''logarithmic'', ''harmonic'', ''repulsive'''
         case (status_bad_exponent)
-            message = 'the power-law exponent n of F = mu/r^n must be finite and n > 1'
+            message = 'the power-law exponent n of F = mu/r^n must satisfy 1 < n <= 32'
         case (status_not_supported)
             message = 'this field does not support the operation (curve sampling, or the '// &
                       'secant method from estimates r0, r1, is inverse-square only)'

@@ -4,16 +4,18 @@
 module test_central_force
     use, intrinsic :: iso_fortran_env, only: output_unit
     use brachistochrone_kinds, only: qp, pi, eps_qp
-    use brachistochrone_status, only: status_ok, status_inaccessible
+    use brachistochrone_status, only: status_ok, status_inaccessible, &
+                                      status_parameter_out_of_range
     use brachistochrone_closed_forms, only: radial_time
-    use brachistochrone_speed_laws, only: inverse_square_law, power_law, logarithmic_law, &
-            harmonic_law
+    use brachistochrone_speed_laws, only: speed_law, inverse_square_law, power_law, &
+            logarithmic_law, harmonic_law, max_power_exponent
     use brachistochrone_central_force, only: central_force_model, new_central_force_model
     use brachistochrone_inverse_square, only: inverse_square_model, new_inverse_square_model
     use brachistochrone_two_point, only: solve_endpoint
     use brachistochrone_solution, only: endpoint_solution
-    use brachistochrone_arches, only: arch_inaccessible
+    use brachistochrone_arches, only: arch_inaccessible, arch_second
     use testing, only: check, check_close, check_digits, section, digits_of_agreement
+    use reference_tables, only: csv_table, read_reference
     implicit none
     private
 
@@ -25,7 +27,144 @@ contains
         call engine_versus_fast_path()
         call harmonic_closed_forms()
         call power_laws()
+        call general_references('power1.5', power_law(n=1.5_qp))
+        call general_references('power3', power_law(n=3.0_qp))
+        call general_references('logarithmic', logarithmic_law())
+        call general_references('power10', power_law(n=10.0_qp))
+        call to_the_limits()
     end subroutine run_central_force_tests
+
+    !> The ends of the domain: n -> 1 (the logarithmic law is its limit), the largest
+    !! supported exponent, exponents refused beyond it, the logarithmic law up to psi = pi.
+    subroutine to_the_limits()
+        type(central_force_model) :: near_one, logarithm, steep, beyond
+        type(endpoint_solution) :: a, b
+        real(qp), parameter :: fractions(7) = [1.0e-3_qp, 0.01_qp, 0.5_qp, 0.9_qp, &
+                                               0.99_qp, 0.999_qp, 0.9999_qp]
+        real(qp), parameter :: radii(3) = [1.0_qp, 0.5_qp, 0.1_qp]
+        real(qp), parameter :: near_pi(6) = [3.135_qp, 3.137_qp, 3.139_qp, 3.14_qp, &
+                                             3.1415_qp, 3.14159_qp]
+        real(qp) :: worst, psi
+        integer :: i, j, solved
+        call section('central force: to the limits of the exponent and of the sector')
+        near_one = new_central_force_model(power_law(n=1.0_qp + 2.0_qp**(-100)))
+        logarithm = new_central_force_model(logarithmic_law())
+        worst = 99.0_qp
+        do i = 1, 3
+            do j = 1, 4
+                a = near_one%solve(radii(i), fractions(j)*pi)
+                b = logarithm%solve(radii(i), fractions(j)*pi)
+                worst = min(worst, digits_of_agreement(a%apse_radius, b%apse_radius), &
+                            digits_of_agreement(a%arclength, b%arclength), &
+                            digits_of_agreement(a%time, b%time))
+            end do
+        end do
+        write (output_unit, '(a,f6.2)') '   n = 1 + 2^-100 against the logarithmic law, '// &
+            'fewest digits of R, s, t: ', worst
+        ! they differ by O(n - 1) = 8e-31 relative (times the conditioning near pi)
+        call check(worst >= 28.0_qp, 'power law n = 1 + 2^-100 -> logarithmic law')
+        steep = new_central_force_model(power_law(n=max_power_exponent))
+        solved = 0
+        do i = 1, 3
+            do j = 1, size(fractions)
+                a = steep%solve(radii(i), fractions(j)*2.0_qp*pi/(max_power_exponent + 1))
+                if (a%status == status_ok) solved = solved + 1
+            end do
+        end do
+        call check(solved == 3*size(fractions), 'largest supported exponent: every '// &
+                   'endpoint of a grid up to 0.9999 of the sector solved')
+        beyond = new_central_force_model(power_law(n=2.0_qp*max_power_exponent))
+        a = beyond%solve(0.5_qp, 0.01_qp)
+        call check(a%status == status_parameter_out_of_range, &
+                   'exponent beyond max_power_exponent refused with a status')
+        ! logarithmic law up to pi: R-bar down to the binary128 range and below it
+        solved = 0
+        do j = 1, 6
+            psi = near_pi(j)
+            a = logarithm%solve(0.5_qp, psi)
+            if (a%status == status_ok .and. a%arch == arch_second) solved = solved + 1
+        end do
+        call check(solved == 6, 'logarithmic law: psi = 3.135 .. 3.14159 solved')
+        a = logarithm%solve(0.5_qp, pi)
+        call check(a%status == status_inaccessible, 'logarithmic law: psi = pi inaccessible')
+    end subroutine to_the_limits
+
+    !> Two-point solutions of the general engine against mpmath on Tee's original
+    !! integrals (27), (33), (39) (scripts/make_general_reference.py: bracketed roots, 55
+    !! and 70 digits agreeing to >= 40). Each of R-bar, s, t is credited with its
+    !! condition number with respect to psi, c = |dF/dpsi| psi/F (an error of one ulp in
+    !! Upsilon moves F by c ulps: R-bar next to the edge of the accessible region, and s, t
+    !! with it), measured by central differences on the engine's own half-arch values;
+    !! the digits printed are raw and credited.
+    subroutine general_references(name, law)
+        character(len=*), intent(in) :: name
+        class(speed_law), intent(in) :: law
+        character(len=*), parameter :: classes(9) = [character(len=16) :: 'complete', &
+            'complete_small_r', 'first', 'second', 'first_small_r', 'edge_small_r', &
+            'near_apse_first', 'near_apse_second', 'all']
+        type(central_force_model) :: general
+        type(csv_table) :: table
+        type(endpoint_solution) :: b
+        real(qp) :: rho, psi, expected(3), raw(3), credit(3), worst(3, size(classes))
+        real(qp) :: worst_raw(3, size(classes))
+        integer :: i, k
+        logical :: ok
+        call section('central force: '//name//' against mpmath two-point references')
+        call read_reference('data/reference/general_'//name//'_mpmath.csv', 30, table, ok)
+        if (.not. ok) return
+        general = new_central_force_model(law)
+        worst = 99.0_qp
+        worst_raw = 99.0_qp
+        do i = 1, table%row_count()
+            rho = table%real_value(i, 'rho')
+            psi = table%real_value(i, 'psi')
+            expected = [table%real_value(i, 'R'), table%real_value(i, 's'), &
+                        table%real_value(i, 't')]
+            b = general%solve(rho, psi)
+            credit = log10(max(1.0_qp, conditions(general, rho, psi, expected, &
+                                                  table%text(i, 'arch') == 'second')))
+            raw = [digits_of_agreement(b%apse_radius, expected(1)), &
+                   digits_of_agreement(b%arclength, expected(2)), &
+                   digits_of_agreement(b%time, expected(3))]
+            if (b%status /= 0) raw = 0.0_qp
+            if (minval(raw + credit) < 33.0_qp) write (output_unit, '(5x,a,2es12.3,3f7.2)') &
+                'weakest: rho, R, digits', rho, expected(1), raw + credit
+            do k = 1, size(classes)
+                if (table%text(i, 'class') == trim(classes(k)) .or. k == size(classes)) then
+                    worst(:, k) = min(worst(:, k), raw + credit)
+                    worst_raw(:, k) = min(worst_raw(:, k), raw)
+                end if
+            end do
+        end do
+        write (output_unit, '(3x,a,i0,a)') 'fewest digits of R, s, t (raw | credited) on ', &
+            table%row_count(), ' endpoints:'
+        do k = 1, size(classes)
+            if (worst(1, k) < 99.0_qp) write (output_unit, '(5x,a17,3f7.2,a,3f7.2)') &
+                classes(k), worst_raw(:, k), ' |', worst(:, k)
+        end do
+        call check(all(worst(:, size(classes)) >= 32.0_qp), name// &
+                   ': R-bar, s, t to >= 32 digits (conditioning credited) on every endpoint')
+    end subroutine general_references
+
+    !> Condition numbers of R-bar, s, t with respect to psi at the reference values,
+    !! by central differences (step 1e-9 of min(R, rho - R)).
+    function conditions(general, rho, psi, expected, second) result(cond)
+        type(central_force_model), intent(in) :: general
+        real(qp), intent(in) :: rho, psi, expected(3)
+        logical, intent(in) :: second
+        real(qp) :: cond(3), h, f(3, 2), slope
+        integer :: k, status
+        cond = 1.0_qp
+        h = 1.0e-9_qp*min(expected(1), rho - expected(1))
+        if (h <= 0.0_qp) return
+        do k = 1, 2
+            call general%half_arch(rho, expected(1) + real(2*k - 3, qp)*h, second, &
+                                   f(1, k), f(2, k), f(3, k), status)
+        end do
+        slope = (f(1, 2) - f(1, 1))/(2.0_qp*h)      ! dUpsilon/dR
+        cond(1) = psi/abs(expected(1)*slope)
+        cond(2:3) = psi*abs((f(2:3, 2) - f(2:3, 1))/(2.0_qp*h*slope))/expected(2:3)
+    end function conditions
 
     subroutine engine_versus_fast_path()
         type(central_force_model) :: general

@@ -11,8 +11,9 @@ program main
     use, intrinsic :: iso_fortran_env, only: error_unit, output_unit, int8
     use mpi_f08, only: mpi_init, mpi_finalize, mpi_comm_world, mpi_comm_rank, &
                        mpi_comm_size, mpi_gatherv, mpi_bcast, mpi_byte, mpi_integer, &
-                       mpi_abort, mpi_logical
-    !$ use omp_lib, only: omp_set_num_threads
+                       mpi_abort, mpi_logical, mpi_comm, mpi_comm_split_type, &
+                       mpi_comm_type_shared, mpi_info_null, mpi_comm_free
+    !$ use omp_lib, only: omp_set_num_threads, omp_get_num_procs
     use brachistochrone, only: brachistochrone_field, new_field, endpoint_solution, &
                                status_ok, status_message
     use brachistochrone_version, only: program_name, program_version
@@ -49,7 +50,7 @@ program main
     else if (status /= exit_ok) then
         call fail(exit_input, problem)
     end if
-    !$ if (options%threads > 0) call omp_set_num_threads(options%threads)
+    call set_threads(options%threads)
 
     ! only rank 0 writes files (and creates their temporary files before the work)
     call prepare_run(options, table, first, last, report, code, finished, &
@@ -105,6 +106,26 @@ contains
         if (rank == 0) write (error_unit, '(a)') program_name//': '//text
         call finish(exit_code)
     end subroutine fail
+
+    !> Threads per rank: --threads N if given, else OMP_NUM_THREADS if set, else the
+    !! node's cores shared among the ranks on the node (at least 1), so that ranks x
+    !! threads never oversubscribe a node by default.
+    subroutine set_threads(requested)
+        integer, intent(in) :: requested !! --threads (0: not given)
+        type(mpi_comm) :: node
+        integer :: local_ranks, length, env_status
+        if (requested > 0) then
+            !$ call omp_set_num_threads(requested)
+            return
+        end if
+        call get_environment_variable('OMP_NUM_THREADS', length=length, status=env_status)
+        if (env_status == 0 .and. length > 0) return
+        call mpi_comm_split_type(mpi_comm_world, mpi_comm_type_shared, rank, &
+                                 mpi_info_null, node)
+        call mpi_comm_size(node, local_ranks)
+        call mpi_comm_free(node)
+        !$ call omp_set_num_threads(max(1, omp_get_num_procs()/max(1, local_ranks)))
+    end subroutine set_threads
 
     subroutine finish(exit_code)
         integer, intent(in) :: exit_code

@@ -1,50 +1,91 @@
 !> The general engine: brachistochrones for any attractive speed law (Tee 1998, sec. 2).
 !!
 !! A brachistochrone is the orbit of a free particle with speed 1/v (Jellett). With the
-!! apse at R < 1, w(x) = x^2/v(x)^2 and the law's P = v^2, D(x,y) = (P(x)-P(y))/(x-y):
-!!   V(x) = P(x)/(1 - x) = -D(x, 1),       M(x) = (x + R) - R^2 D(x, R)/P(R),
-!! so that w(x) - w(R) = (x - R) M(x)/((1 - x) V(x)), and the first half-arch integrals
-!! (27), (33), (39) from r to 1 read
-!!   Theta = int sqrt(w_R V) (1 - x)/(x sqrt M) dx/sqrt((x-R)(1-x)),  w_R = R^2/P(R),
-!!   S     = int x sqrt(1 - x)/sqrt(M)       dx/sqrt((x-R)(1-x)),
-!!   T     = int x/(sqrt(V) sqrt(M))         dx/sqrt((x-R)(1-x)).
-!! The substitution x = R + (1-R) sin^2(mu/2) (the paper's (79) for every law) makes
-!! dx/sqrt((x-R)(1-x)) = d mu and keeps x - R = (1-R) sin^2(mu/2), 1 - x = (1-R)
-!! cos^2(mu/2) exact, so both the start (v = 0) and the apse are regular. M > 0 is the
-!! apse condition w'(R) > 0, true for attractive laws (P' < 0). The integrals are taken
-!! by adaptive Gauss-Legendre with an error estimate (`integrate_adaptive`); the second
-!! half-arch by (29). This engine is slower than the inverse-square fast path and is
-!! checked against it, and against closed forms for the harmonic law and Keam's limit.
+!! apse at R < 1, w(x) = x^2/P(x), P = v^2 and q(x) = w(R)/w(x) in (0, 1], the first
+!! half-arch integrals (27), (33), (39) from r to 1 are, in lambda = log(x/R),
+!!   Theta = int sqrt(q/(1 - q)) d lambda,
+!!   S     = (1 - r) + R int q e^lambda/(sqrt(1-q) (1 + sqrt(1-q))) d lambda,
+!!   T     = t0(r) + R int (q/v) e^lambda/(sqrt(1-q) (1 + sqrt(1-q))) d lambda,
+!! (S and T: the radial parts 1 - r and the fall time t0(r) = int_r^1 dx/v taken out
+!! exactly, 1/sqrt(1-q) - 1 = q/(sqrt(1-q)(1 + sqrt(1-q))): the corrections are positive
+!! and nothing cancels at small R). The law supplies q, 1 - q and q/v at the offsets
+!! lambda from the apse and delta = -log x from the start, both carried exactly
+!! (`speed_law%arch_terms`). Second half-arch (29): 2F(R,R) - F(r,R) = 2 int_0^lambda_r
+!! + int_lambda_r^Lambda of the same integrands (Lambda = -log R), and 2 t0(R) - t0(r).
+!!
+!! Quadrature: fixed Gauss-Legendre rules on panels chosen once per R. The integrands
+!! have square-root end singularities at the apse (lambda = 0) and at the start
+!! (delta = 0), removed by lambda = b s^2, delta = c s^2 on the end panels (two such
+!! panels meeting in between when Lambda is small), and complex singularities at
+!! distance sigma_apse, sigma_start from the ends (`log_scales`); the point x = 0 is at
+!! lambda = -infinity. Between the end panels the panels grow geometrically (ratio 4,
+!! length at most 4 sigma) away from both ends, so the count is O(log log(1/R)), and the
+!! node count of each panel comes from the Bernstein ellipse through the nearest
+!! singularity (as on the inverse-square fast path) and the growth of the integrands off
+!! the real axis (`rule_for`). Away from the apse the integrands decay like
+!! exp(-(n+1) lambda/2) or faster: each panel is asked only for the digits its share of
+!! the running sum needs, and panels below 1e-40 of it are skipped. Transcendentals:
+!! two fast exp/expm1 per node (`brachistochrone_fast_exp`), square roots by a double
+!! seed and Newton steps.
+!!
+!! Two-point problem: the root R-bar of Upsilon(R) = psi, in the unknown u = sqrt(rho - R)
+!! for R in [rho/2, rho] (R-bar and rho - R-bar exact next to the apse) or y = log R
+!! below (tiny R-bar keeps its relative precision, down to the binary128 range).
+!! A double-precision phase (17-digit rules, regula falsi with the Anderson-Bjorck
+!! correction on a bracket) then quad precision: one Newton step with the double
+!! phase's slope and secant steps, each a full evaluation of Theta, S and T; the last
+!! secant step (predicted error below 1e-35) is taken without a further evaluation, s
+!! extrapolated along the secant and t by Hamilton-Jacobi (dt/dpsi = K at fixed rho).
 module brachistochrone_central_force
     use brachistochrone_kinds, only: qp, pi, eps_qp
     use brachistochrone_status, only: status_ok, status_inaccessible, &
                                       status_rho_out_of_range, status_psi_out_of_range, &
-                                      status_not_finite, status_outside_domain, &
-                                      status_no_convergence, argument_status
-    use brachistochrone_quadrature, only: univariate_integrand, gauss_legendre_rule, &
-            gauss_legendre, integrate_adaptive
-    use brachistochrone_roots, only: root_function, bracketed_secant
+                                      status_not_finite, &
+                                      status_no_convergence, argument_status, &
+                                      status_parameter_out_of_range
+    use brachistochrone_quad_math, only: log1p
+    use brachistochrone_fast_math, only: inverse_sqrt
+    use brachistochrone_fast_exp, only: fast_exp
+    use brachistochrone_quadrature, only: gauss_legendre_rule, gauss_legendre
     use brachistochrone_speed_laws, only: speed_law
     use brachistochrone_solution, only: endpoint_solution, endpoint_status, region_inside
     use brachistochrone_arches, only: arch_first, arch_second, arch_complete, arch_radial, &
                                       arch_inaccessible
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+    use, intrinsic :: iso_fortran_env, only: real64
     implicit none
     private
 
     public :: central_force_model, new_central_force_model
 
-    !> Which integral an integrand computes.
-    integer, parameter :: want_angle = 1, want_length = 2, want_time = 3, want_fall = 4
-    !> Relative accuracy asked of each integral.
-    real(qp), parameter :: integral_tolerance = 2.0_qp*eps_qp
-    !> Evaluations allowed to the root finder.
-    integer, parameter :: max_steps = 300
+    !> Fewest and most Gauss nodes on one panel (even counts only).
+    integer, parameter :: min_nodes = 4, max_nodes = 80
+    !> Digits aimed at by the full and the double-precision rules.
+    real(qp), parameter :: fine_digits = 36.0_qp, coarse_digits = 17.0_qp
+    !> A panel whose bound is below this share of the running sum is skipped.
+    real(qp), parameter :: negligible = 1.0e-40_qp
+    !> Panel kinds: lambda = b s^2 (from the apse), lambda, delta, delta = c s^2 (from
+    !! the start).
+    integer, parameter :: kind_apse_root = 1, kind_apse = 2, kind_start = 3, &
+                          kind_start_root = 4
+    !> Most panels for one integral.
+    integer, parameter :: max_panels = 160
+    !> Lowest log R searched (R above the smallest normal binary128 number).
+    real(qp), parameter :: lowest_log_r = -11355.0_qp
 
-    !> The general engine for one speed law: the law and a Gauss rule.
+    !> One Gauss-Legendre rule on [0, 1].
+    type :: gauss_nodes
+        integer :: n = 0
+        real(qp), allocatable :: offset(:), weight(:)
+        real(real64), allocatable :: offset64(:), weight64(:)
+    end type gauss_nodes
+
+    !> The general engine for one speed law: the law and the Gauss rules.
     type :: central_force_model
         class(speed_law), allocatable :: law      !! the force field
-        type(gauss_legendre_rule) :: rule         !! rule applied on each adaptive panel
+        type(gauss_nodes) :: gauss(max_nodes/2)   !! rules with 2j nodes
+        real(qp) :: sigma_apse = 1.0_qp           !! singularity distance, apse side
+        real(qp) :: sigma_start = 1.0_qp          !! singularity distance, start side
     contains
         procedure :: half_arch => general_half_arch    !! theta, s, t at r (eqs. 27-41)
         procedure :: apse_angle => general_apse_angle  !! Theta(R,R)
@@ -52,87 +93,543 @@ module brachistochrone_central_force
         procedure :: solve => general_solve            !! the two-point problem
     end type central_force_model
 
-    !> One of the integrands above, in mu.
-    type, extends(univariate_integrand) :: arch_integrand
-        class(speed_law), allocatable :: law
-        integer :: kind = want_angle
-        real(qp) :: big_r = 0.0_qp, one_minus_big_r = 1.0_qp, p_big_r = 0.0_qp
-        real(qp) :: r = 0.0_qp, one_minus_r = 1.0_qp
-    contains
-        procedure :: evaluate => arch_evaluate
-    end type arch_integrand
+    !> A panel in its own variable, with its weight and Bernstein parameter.
+    type :: panel
+        integer :: kind = kind_apse
+        real(qp) :: lo = 0.0_qp, hi = 0.0_qp, scale = 0.0_qp, weight = 1.0_qp
+        real(real64) :: log_rho = 1.0_real64
+    end type panel
 
-    !> Upsilon(R) - psi for the root finder, in the unknown u (R = rho - u^2) or R.
-    type, extends(root_function) :: general_upsilon
-        type(central_force_model) :: model
-        real(qp) :: rho = 0.0_qp, psi = 0.0_qp
-        logical :: second = .false., apse_unknown = .false.
-    contains
-        procedure :: evaluate => upsilon_evaluate
-    end type general_upsilon
+    !> One apse R as the integrals need it: R, 1 - R, Lambda = -log R (all exact), the
+    !! law's constants; the endpoint at lambda_r from the apse, delta_r from the start,
+    !! and the weights of the integrands below and above it.
+    type :: arch_setup
+        real(qp) :: big_r = 0.0_qp, one_minus_big_r = 1.0_qp, big_lambda = 0.0_qp
+        real(qp) :: c(6) = 0.0_qp
+        real(qp) :: lambda_r = 0.0_qp, delta_r = 0.0_qp
+        real(qp) :: weight_below = 0.0_qp, weight_above = 1.0_qp
+    end type arch_setup
+
+    !> The endpoint of a two-point problem and the unknown used.
+    type :: endpoint_problem
+        real(qp) :: rho = 1.0_qp, psi = 0.0_qp, one_minus_rho = 0.0_qp, delta_rho = 0.0_qp
+        real(qp) :: fall_rho = 0.0_qp !! t0(rho), once per endpoint
+        logical :: second = .false., use_u = .true.
+        logical :: use_r = .false.    !! unknown R itself (the quad phase below rho/2)
+        real(qp) :: limit = 0.0_qp    !! 2 lim Theta(R,R), R -> 0
+        integer :: form = 0           !! 0: Upsilon - psi; 1: log(Upsilon/psi);
+                                      !! 2: log((limit - Upsilon)/(limit - psi))
+    end type endpoint_problem
 
 contains
 
-    !> A general-engine model for `law` (copied in).
+    !> A general-engine model for `law` (copied in); builds the Gauss rules once.
     function new_central_force_model(law) result(model)
         class(speed_law), intent(in) :: law !! the speed law
         type(central_force_model) :: model
+        type(gauss_legendre_rule) :: rule
+        real(qp) :: sigma(2)
+        integer :: j
         allocate (model%law, source=law)
-        model%rule = gauss_legendre(20)
+        do j = min_nodes/2, max_nodes/2
+            rule = gauss_legendre(2*j)
+            model%gauss(j)%n = 2*j
+            model%gauss(j)%offset = 0.5_qp*(1.0_qp + rule%node)
+            model%gauss(j)%weight = 0.5_qp*rule%weight
+            model%gauss(j)%offset64 = real(model%gauss(j)%offset, real64)
+            model%gauss(j)%weight64 = real(model%gauss(j)%weight, real64)
+        end do
+        sigma = law%log_scales()
+        model%sigma_apse = sigma(1)
+        model%sigma_start = sigma(2)
     end function new_central_force_model
 
-    pure function arch_evaluate(self, x) result(y)
-        class(arch_integrand), intent(in) :: self
-        real(qp), intent(in) :: x          ! mu
-        real(qp) :: y
-        real(qp) :: half_sin, half_cos, x_minus_r, one_minus_x, point, v_of, m_of, sigma
-        if (self%kind == want_fall) then
-            ! radial fall: point = 1 - (1 - r) sigma^2, sigma = x in [0, 1]
-            sigma = x
-            one_minus_x = self%one_minus_r*sigma*sigma
-            point = 1.0_qp - one_minus_x
-            v_of = -self%law%divided_difference(point, 1.0_qp)
-            y = 2.0_qp*sqrt(self%one_minus_r)/sqrt(v_of)
-            return
+    !> The apse data for R (with 1 - R exact) and the endpoint r = R + d.
+    pure function setup_arch(model, big_r, one_minus_big_r, d, delta_r, second, whole) &
+        result(a)
+        type(central_force_model), intent(in) :: model
+        real(qp), intent(in) :: big_r, one_minus_big_r, d, delta_r
+        logical, intent(in) :: second, whole
+        type(arch_setup) :: a
+        a%big_r = big_r
+        a%one_minus_big_r = one_minus_big_r
+        if (big_r > 0.5_qp) then
+            a%big_lambda = -log1p(-one_minus_big_r)
+        else
+            a%big_lambda = -log(big_r)
         end if
-        half_sin = sin(0.5_qp*x)
-        half_cos = cos(0.5_qp*x)
-        x_minus_r = self%one_minus_big_r*half_sin*half_sin
-        one_minus_x = self%one_minus_big_r*half_cos*half_cos
-        point = self%big_r + x_minus_r
-        v_of = -self%law%divided_difference(point, 1.0_qp)
-        m_of = (point + self%big_r) - self%big_r**2* &
-               self%law%divided_difference(point, self%big_r)/self%p_big_r
-        select case (self%kind)
-        case (want_angle)
-            y = sqrt(self%big_r**2*v_of/self%p_big_r)*one_minus_x/(point*sqrt(m_of))
-        case (want_length)
-            y = point*sqrt(one_minus_x)/sqrt(m_of)
-        case default
-            y = point/(sqrt(v_of)*sqrt(m_of))
-        end select
-    end function arch_evaluate
+        call finish_setup(model, a, d, delta_r, second, whole)
+    end function setup_arch
 
-    !> int over mu in [mu_r, pi] (first half-arch from r to 1) of one integrand.
-    pure subroutine arch_integral(self, kind, r, big_r, d, value, status)
-        type(central_force_model), intent(in) :: self
+    !> The same from Lambda = -log R (R may be below the double range).
+    pure function setup_arch_log(model, big_lambda, rho, delta_r, second) result(a)
+        type(central_force_model), intent(in) :: model
+        real(qp), intent(in) :: big_lambda, rho, delta_r
+        logical, intent(in) :: second
+        type(arch_setup) :: a
+        a%big_lambda = big_lambda
+        a%big_r = exp(-big_lambda)
+        a%one_minus_big_r = -expm1_qp(-big_lambda)
+        call finish_setup(model, a, rho - a%big_r, delta_r, second, .false.)
+    end function setup_arch_log
+
+    pure subroutine finish_setup(model, a, d, delta_r, second, whole)
+        type(central_force_model), intent(in) :: model
+        type(arch_setup), intent(inout) :: a
+        real(qp), intent(in) :: d, delta_r
+        logical, intent(in) :: second, whole
+        a%c = model%law%apse_constants(a%big_r, a%one_minus_big_r, a%big_lambda)
+        if (a%big_r > 0.0_qp .and. d < a%big_r) then
+            a%lambda_r = log1p(d/a%big_r)
+        else
+            a%lambda_r = a%big_lambda - delta_r
+        end if
+        a%delta_r = delta_r
+        if (whole) then
+            a%weight_below = 1.0_qp
+        else
+            a%weight_below = merge(2.0_qp, 0.0_qp, second)
+        end if
+        a%weight_above = 1.0_qp
+    end subroutine finish_setup
+
+    !> expm1 in quad precision (libquadmath's, through log1p's module).
+    elemental function expm1_qp(y) result(e)
+        use brachistochrone_quad_math, only: expm1
+        real(qp), intent(in) :: y
+        real(qp) :: e
+        e = expm1(y)
+    end function expm1_qp
+
+    !> The panels of the arch integrals over lambda in [0, Lambda], split at the endpoint,
+    !! ordered away from the apse (the direction in which the integrands decay).
+    pure subroutine arch_panels(model, a, panels, count)
+        type(central_force_model), intent(in) :: model
+        type(arch_setup), intent(in) :: a
+        type(panel), intent(out) :: panels(max_panels)
+        integer, intent(out) :: count
+        real(qp) :: b, c, meet, lo, hi, origin, decay_rate
+        type(panel) :: start_side(max_panels)
+        integer :: n_start, k
+        count = 0
+        b = min(1.0_qp, 0.5_qp*model%sigma_apse)
+        c = min(1.0_qp, 0.5_qp*model%sigma_start)
+        if (a%big_lambda <= b + c) then
+            ! two root panels meeting in between: lambda = b' s^2 and delta = c' s^2
+            b = a%big_lambda*b/(b + c)
+            c = a%big_lambda - b
+            call add_split(panels, count, kind_apse_root, 0.0_qp, 1.0_qp, b, &
+                           sqrt(a%lambda_r/b), a)
+            call add_split(panels, count, kind_start_root, 0.0_qp, 1.0_qp, c, &
+                           sqrt(a%delta_r/c), a)
+        else
+            meet = max(b, min(a%big_lambda - c, a%big_lambda*b/(b + c)))
+            ! apse side: lambda = b s^2 on [0, b], then [b, 4b], [4b, 16b], ... to meet
+            call add_split(panels, count, kind_apse_root, 0.0_qp, 1.0_qp, b, &
+                           sqrt(a%lambda_r/b), a)
+            lo = b
+            ! where the integrated region starts (the apse unless its weight is 0)
+            origin = merge(0.0_qp, a%lambda_r, a%weight_below > 0.0_qp)
+            decay_rate = pi/model%sigma_apse
+            do while (lo < meet)
+                ! past exp(-300) of the integrands at the origin: nothing more to add
+                if (decay_rate*(lo - origin) > 300.0_qp) exit
+                ! growth 4, length at most 4 sigma: the integrands decay like
+                ! exp(-pi lambda/sigma_apse), which grows as fast off the real axis
+                hi = min(4.0_qp*lo, lo + 4.0_qp*model%sigma_apse, meet)
+                if (hi > 0.75_qp*meet .and. meet - lo <= 4.0_qp*model%sigma_apse) hi = meet
+                call add_split(panels, count, kind_apse, lo, hi, 1.0_qp, a%lambda_r, a)
+                lo = hi
+            end do
+            ! start side, in delta, from meet down to the start
+            n_start = 0
+            if (decay_rate*(meet - origin) > 300.0_qp) return
+            call add_split(start_side, n_start, kind_start_root, 0.0_qp, 1.0_qp, c, &
+                           sqrt(a%delta_r/c), a)
+            lo = c
+            do while (lo < a%big_lambda - meet)
+                hi = min(4.0_qp*lo, lo + 4.0_qp*model%sigma_start, a%big_lambda - meet)
+                if (hi > 0.75_qp*(a%big_lambda - meet) .and. &
+                    a%big_lambda - meet - lo <= 4.0_qp*model%sigma_start) &
+                    hi = a%big_lambda - meet
+                call add_split(start_side, n_start, kind_start, lo, hi, 1.0_qp, a%delta_r, a)
+                lo = hi
+            end do
+            do k = n_start, 1, -1
+                if (count >= max_panels) exit
+                count = count + 1
+                panels(count) = start_side(k)
+            end do
+        end if
+    end subroutine arch_panels
+
+    !> Add the panel [lo, hi] of `kind`, split at `split` (in the panel's variable) into
+    !! the parts below and above the endpoint, with their weights; zero weights dropped.
+    pure subroutine add_split(panels, count, kind, lo, hi, scale, split, a)
+        type(panel), intent(inout) :: panels(:)
+        integer, intent(inout) :: count
         integer, intent(in) :: kind
-        real(qp), intent(in) :: r, big_r, d
-        real(qp), intent(out) :: value
-        integer, intent(out) :: status
-        type(arch_integrand) :: f
-        real(qp) :: lower, error
-        allocate (f%law, source=self%law)
-        f%kind = kind
-        f%big_r = big_r
-        f%r = r
-        f%one_minus_r = 1.0_qp - r
-        f%one_minus_big_r = f%one_minus_r + d
-        f%p_big_r = self%law%speed_squared(big_r)
-        lower = 2.0_qp*atan2(sqrt(d), sqrt(f%one_minus_r))
-        call integrate_adaptive(f, lower, pi, self%rule, integral_tolerance, 0.0_qp, value, &
-                                error, status)
-    end subroutine arch_integral
+        real(qp), intent(in) :: lo, hi, scale, split
+        type(arch_setup), intent(in) :: a
+        real(qp) :: w_lo, w_hi
+        logical :: reversed
+        ! lambda grows with the variable on apse-side panels, falls on start-side ones
+        reversed = kind == kind_start .or. kind == kind_start_root
+        w_lo = merge(a%weight_above, a%weight_below, reversed)
+        w_hi = merge(a%weight_below, a%weight_above, reversed)
+        if (split <= lo) then
+            call push(panels, count, panel(kind, lo, hi, scale, w_hi))
+        else if (split >= hi) then
+            call push(panels, count, panel(kind, lo, hi, scale, w_lo))
+        else if (reversed) then
+            call push(panels, count, panel(kind, split, hi, scale, w_hi))
+            call push(panels, count, panel(kind, lo, split, scale, w_lo))
+        else
+            call push(panels, count, panel(kind, lo, split, scale, w_lo))
+            call push(panels, count, panel(kind, split, hi, scale, w_hi))
+        end if
+    end subroutine add_split
+
+    !> Append a panel unless its weight is zero or it is empty.
+    pure subroutine push(panels, count, p)
+        type(panel), intent(inout) :: panels(:)
+        integer, intent(inout) :: count
+        type(panel), intent(in) :: p
+        if (p%weight == 0.0_qp .or. p%hi <= p%lo .or. count >= size(panels)) return
+        count = count + 1
+        panels(count) = p
+    end subroutine push
+
+    !> log of the Bernstein parameter of a panel: the ellipse through the nearest
+    !! singularity of the integrands, in the panel's variable (double precision).
+    pure function bernstein_log(model, big_lambda, p) result(log_rho)
+        type(central_force_model), intent(in) :: model
+        real(qp), intent(in) :: big_lambda
+        type(panel), intent(in) :: p
+        real(real64) :: log_rho
+        complex(real64) :: zeta(8), point, image(2)
+        real(real64) :: lo, hi, big, sa, ss, rho_min
+        integer :: k, m, images
+        lo = real(p%lo, real64)
+        hi = real(p%hi, real64)
+        big = real(big_lambda, real64)
+        sa = real(model%sigma_apse, real64)
+        ss = real(model%sigma_start, real64)
+        ! singular points as offsets from the panel's own end (apse or start)
+        ! (+-2i: not a singularity but the growth of the factors exp(-+lambda),
+        ! exp(-delta) off the real axis, which fewer nodes would not resolve)
+        select case (p%kind)
+        case (kind_apse_root, kind_apse)
+            zeta = [(0.0_real64, 0.0_real64), cmplx(0.0_real64, sa, real64), &
+                    cmplx(0.0_real64, -sa, real64), cmplx(big, 0.0_real64, real64), &
+                    cmplx(big, ss, real64), cmplx(big, -ss, real64), &
+                    (0.0_real64, 2.0_real64), (0.0_real64, -2.0_real64)]
+        case default
+            zeta = [(0.0_real64, 0.0_real64), cmplx(0.0_real64, ss, real64), &
+                    cmplx(0.0_real64, -ss, real64), cmplx(big, 0.0_real64, real64), &
+                    cmplx(big, sa, real64), cmplx(big, -sa, real64), &
+                    (0.0_real64, 2.0_real64), (0.0_real64, -2.0_real64)]
+        end select
+        rho_min = huge(1.0_real64)
+        do k = 1, size(zeta)
+            if (p%kind == kind_apse .or. p%kind == kind_start) then
+                images = 1
+                image(1) = zeta(k)
+            else
+                if (k == 1) cycle    ! removed by the substitution
+                point = sqrt(zeta(k)/real(p%scale, real64))
+                images = 2
+                image(1:2) = [point, -point]
+            end if
+            do m = 1, images
+                rho_min = min(rho_min, bernstein((2.0_real64*image(m) - (lo + hi))/(hi - lo)))
+            end do
+        end do
+        log_rho = max(log(rho_min), 1.0e-3_real64)
+    contains
+        pure real(real64) function bernstein(x)
+            complex(real64), intent(in) :: x
+            complex(real64) :: root
+            root = sqrt(x*x - 1.0_real64)
+            bernstein = max(abs(x + root), abs(x - root))
+        end function bernstein
+    end function bernstein_log
+
+    !> The rule (element of model%gauss) for `digits` digits on a panel. An n-point
+    !! rule errs by about M rho^(-2n) on the Bernstein ellipse rho (up to the nearest
+    !! singularity, log_rho); the integrands decay like exp(-kappa tau) along the panel,
+    !! so M grows like exp(kappa h ((rho + 1/rho)/2 - 1)) on an ellipse about a plain
+    !! panel of half-length h (growth = kappa h): the smallest n over a few rho <= the
+    !! singular one is taken.
+    pure function rule_for(log_rho, digits, growth) result(j)
+        real(real64), intent(in) :: log_rho
+        real(qp), intent(in) :: digits
+        real(real64), intent(in) :: growth
+        integer :: j, n, k
+        real(real64) :: need, best, lr, target
+        real(real64), parameter :: fractions(8) = [1.0_real64, 0.7_real64, 0.5_real64, &
+            0.35_real64, 0.25_real64, 0.18_real64, 0.12_real64, 0.08_real64]
+        target = real(max(digits, 2.0_qp), real64)*log(10.0_real64)
+        best = huge(1.0_real64)
+        do k = 1, size(fractions)
+            lr = log_rho*fractions(k)
+            need = (target + growth*(cosh(lr) - 1.0_real64))/(2.0_real64*0.95_real64*lr)
+            best = min(best, need)
+        end do
+        if (best > real(max_nodes, real64)) then
+            j = max_nodes/2
+        else
+            n = ceiling(best) + 2
+            j = min(max_nodes/2, max(min_nodes/2, (n + 1)/2))
+        end if
+    end function rule_for
+
+    !> kappa h of a plain panel (0 for the root panels), kappa the decay rate.
+    pure function panel_growth(p, kappa) result(growth)
+        type(panel), intent(in) :: p
+        real(qp), intent(in) :: kappa
+        real(real64) :: growth
+        if (p%kind == kind_apse .or. p%kind == kind_start) then
+            growth = real(kappa*0.5_qp*(p%hi - p%lo), real64)
+        else
+            growth = 0.0_real64
+        end if
+    end function panel_growth
+
+    !> lambda, delta and d lambda/dv at the panel variable v.
+    elemental subroutine node_point(kind, scale, big_lambda, v, lambda, delta, jacobian)
+        integer, intent(in) :: kind
+        real(qp), intent(in) :: scale, big_lambda, v
+        real(qp), intent(out) :: lambda, delta, jacobian
+        select case (kind)
+        case (kind_apse_root)
+            lambda = scale*v*v
+            delta = big_lambda - lambda
+            jacobian = 2.0_qp*scale*v
+        case (kind_apse)
+            lambda = v
+            delta = big_lambda - v
+            jacobian = 1.0_qp
+        case (kind_start)
+            delta = v
+            lambda = big_lambda - v
+            jacobian = 1.0_qp
+        case default
+            delta = scale*v*v
+            lambda = big_lambda - delta
+            jacobian = 2.0_qp*scale*v
+        end select
+    end subroutine node_point
+
+    !> The arch integrals: [Theta, S correction/R, T correction/R] with the weights of
+    !! `a`, to `digits` digits (only Theta unless want_length_time).
+    pure function arch_integrals(model, a, digits, want_length_time) result(sums)
+        type(central_force_model), intent(in) :: model
+        type(arch_setup), intent(in) :: a
+        real(qp), intent(in) :: digits
+        logical, intent(in) :: want_length_time
+        real(qp) :: sums(3)
+        type(panel) :: panels(max_panels)
+        real(qp) :: part(3), last(3), share, v, lambda, delta, jacobian, q, omq, qv, xr
+        real(qp) :: root, inverse_root, common, g(3), length
+        integer :: count, p, k, j, m
+        call arch_panels(model, a, panels, count)
+        sums = 0.0_qp
+        last = 0.0_qp
+        do p = 1, count
+            panels(p)%log_rho = bernstein_log(model, a%big_lambda, panels(p))
+            associate (pan => panels(p))
+            share = 1.0_qp
+            if (p > 1) then
+                ! bound on this panel's share: its length in lambda times the integrands
+                ! at the nearest node of the previous panel (they decay away from the apse)
+                length = panel_length(pan)
+                share = 0.0_qp
+                do m = 1, merge(3, 1, want_length_time)
+                    if (sums(m) > 0.0_qp) share = max(share, 4.0_qp*length*last(m)/sums(m))
+                end do
+                if (share < negligible) exit
+            end if
+            j = rule_for(pan%log_rho, digits + min(0.0_qp, log10(max(share, 1.0e-60_qp))), &
+                         panel_growth(pan, 2.0_qp*pi/model%sigma_apse))
+            part = 0.0_qp
+            do k = 1, model%gauss(j)%n
+                v = pan%lo + (pan%hi - pan%lo)*model%gauss(j)%offset(k)
+                call node_point(pan%kind, pan%scale, a%big_lambda, v, lambda, delta, &
+                                jacobian)
+                call model%law%arch_terms(a%c, lambda, delta, q, omq, qv, xr)
+                ! 1/sqrt(1 - q) and sqrt(q/(1 - q)) by a double seed and Newton steps
+                inverse_root = inverse_sqrt(omq)
+                g(1) = q*inverse_sqrt(q*omq)*jacobian
+                if (want_length_time) then
+                    root = omq*inverse_root
+                    common = xr*inverse_root/(1.0_qp + root)*jacobian
+                    g(2) = q*common
+                    g(3) = qv*common
+                else
+                    g(2:3) = 0.0_qp
+                end if
+                part = part + model%gauss(j)%weight(k)*g
+                ! the node nearest the next panel
+                if (k == merge(1, model%gauss(j)%n, pan%kind >= kind_start .and. &
+                               pan%kind <= kind_start_root)) last = abs(g/jacobian)
+            end do
+            sums = sums + pan%weight*(pan%hi - pan%lo)*part
+            end associate
+        end do
+    end function arch_integrals
+
+    !> The extent in lambda of a panel.
+    pure function panel_length(p) result(length)
+        type(panel), intent(in) :: p
+        real(qp) :: length
+        select case (p%kind)
+        case (kind_apse_root, kind_start_root)
+            length = p%scale*(p%hi**2 - p%lo**2)
+        case default
+            length = p%hi - p%lo
+        end select
+    end function panel_length
+
+    !> Theta (weighted as in `a`) in double precision, 17-digit rules, as
+    !! theta exp(-shift): the integrand is scaled by exp(kappa lambda_0) at the start
+    !! lambda_0 of the weighted region (kappa = pi/sigma_apse, its decay rate), so that
+    !! Theta ~ R^((n+1)/2) stays in range for every R-bar of binary128.
+    pure subroutine theta64(model, a, theta, shift)
+        type(central_force_model), intent(in) :: model
+        type(arch_setup), intent(in) :: a
+        real(real64), intent(out) :: theta, shift
+        type(panel) :: panels(max_panels)
+        real(real64) :: part, last, v, lambda, delta, jacobian, g, big, scale, share
+        integer :: count, p, k, j
+        call arch_panels(model, a, panels, count)
+        theta = 0.0_real64
+        last = 0.0_real64
+        big = real(a%big_lambda, real64)
+        shift = 0.0_real64
+        if (a%weight_below == 0.0_qp) shift = real(pi/model%sigma_apse*a%lambda_r, real64)
+        do p = 1, count
+            panels(p)%log_rho = bernstein_log(model, a%big_lambda, panels(p))
+            associate (pan => panels(p))
+            share = 1.0_real64
+            if (p > 1 .and. theta > 0.0_real64) then
+                share = 4.0_real64*real(panel_length(pan), real64)*last/theta
+                if (share < 1.0e-20_real64) exit
+            end if
+            j = rule_for(pan%log_rho, coarse_digits + &
+                         real(min(0.0_real64, log10(max(share, 1.0e-30_real64))), qp), &
+                         panel_growth(pan, 2.0_qp*pi/model%sigma_apse))
+            scale = real(pan%scale, real64)
+            part = 0.0_real64
+            do k = 1, model%gauss(j)%n
+                v = real(pan%lo, real64) + real(pan%hi - pan%lo, real64)* &
+                    model%gauss(j)%offset64(k)
+                select case (pan%kind)
+                case (kind_apse_root)
+                    lambda = scale*v*v
+                    delta = big - lambda
+                    jacobian = 2.0_real64*scale*v
+                case (kind_apse)
+                    lambda = v
+                    delta = big - v
+                    jacobian = 1.0_real64
+                case (kind_start)
+                    delta = v
+                    lambda = big - v
+                    jacobian = 1.0_real64
+                case default
+                    delta = scale*v*v
+                    lambda = big - delta
+                    jacobian = 2.0_real64*scale*v
+                end select
+                g = model%law%theta_ratio64(a%c, lambda, delta, shift)
+                part = part + model%gauss(j)%weight64(k)*g*jacobian
+                if (k == merge(1, model%gauss(j)%n, pan%kind >= kind_start .and. &
+                               pan%kind <= kind_start_root)) last = g
+            end do
+            theta = theta + real(pan%weight, real64)*real(pan%hi - pan%lo, real64)*part
+            end associate
+        end do
+    end subroutine theta64
+
+    !> A piece of the radial fall time, int x/v(x) d delta over [delta_lo, delta_hi]
+    !! (x = exp(-delta)): t0(r) = piece(0, -log r), t0(R) - t0(r) = piece(-log r, Lambda).
+    !! Panels from the start: delta = c s^2 on [0, c], then [c, 4c], [4c, 16c], ...
+    pure function fall_piece(model, delta_lo, delta_hi) result(total)
+        type(central_force_model), intent(in) :: model
+        real(qp), intent(in) :: delta_lo, delta_hi
+        real(qp) :: total
+        type(panel) :: panels(max_panels)
+        type(arch_setup) :: a
+        real(qp) :: c, lo, hi, v, delta, lambda, jacobian, g, part, last, share
+        integer :: count, p, k, j
+        total = 0.0_qp
+        if (delta_hi <= delta_lo) return
+        c = min(1.0_qp, 0.5_qp*model%sigma_start)
+        ! weight 1 inside [delta_lo, delta_hi] (start-side panels are 'reversed')
+        a%weight_above = 0.0_qp
+        a%weight_below = 1.0_qp
+        count = 0
+        if (delta_lo < c) call add_split(panels, count, kind_start_root, 0.0_qp, &
+            min(1.0_qp, sqrt(delta_hi/c)), c, sqrt(delta_lo/c), a)
+        lo = c
+        do while (lo < delta_hi .and. count < max_panels - 2)
+            ! x/v decays like exp(-(1 + pi/sigma_start) delta): stop at exp(-300)
+            if ((1.0_qp + pi/model%sigma_start)*(lo - delta_lo) > 300.0_qp) exit
+            hi = min(4.0_qp*lo, lo + 4.0_qp*model%sigma_start, delta_hi)
+            if (hi > delta_lo) call add_split(panels, count, kind_start, lo, hi, 1.0_qp, &
+                                              delta_lo, a)
+            lo = hi
+        end do
+        last = 0.0_qp
+        do p = 1, count
+            ! singularities: delta = 0 and +-i sigma_start (x = 0 is at infinity)
+            panels(p)%log_rho = bernstein_log(model, 1.0e30_qp, panels(p))
+            associate (pan => panels(p))
+            share = 1.0_qp
+            if (p > 1 .and. total > 0.0_qp) then
+                share = 4.0_qp*panel_length(pan)*last/total
+                if (share < negligible) exit
+            end if
+            j = rule_for(pan%log_rho, fine_digits + &
+                         min(0.0_qp, log10(max(share, 1.0e-60_qp))), &
+                         panel_growth(pan, 1.0_qp + pi/model%sigma_start))
+            part = 0.0_qp
+            do k = 1, model%gauss(j)%n
+                v = pan%lo + (pan%hi - pan%lo)*model%gauss(j)%offset(k)
+                call node_point(pan%kind, pan%scale, 0.0_qp, v, lambda, delta, jacobian)
+                g = model%law%inverse_speed(delta)*fast_exp(-delta)
+                part = part + model%gauss(j)%weight(k)*g*jacobian
+                if (k == model%gauss(j)%n) last = g
+            end do
+            total = total + pan%weight*(pan%hi - pan%lo)*part
+            end associate
+        end do
+    end function fall_piece
+
+    !> Theta, S, T at the endpoint for the apse data `a` (first or second half-arch as
+    !! the weights say); d = r - R exact, one_minus_r = 1 - r.
+    pure subroutine arch_values(model, a, d, one_minus_r, second, fall_r, angle, length, &
+                                time)
+        type(central_force_model), intent(in) :: model
+        type(arch_setup), intent(in) :: a
+        real(qp), intent(in) :: d, one_minus_r
+        logical, intent(in) :: second
+        real(qp), intent(in) :: fall_r   !! t0(r), the radial fall time to r
+        real(qp), intent(out) :: angle, length, time
+        real(qp) :: sums(3), fall
+        sums = arch_integrals(model, a, fine_digits, .true.)
+        if (second) then
+            ! 2 t0(R) - t0(r) = t0(r) + 2 (t0(R) - t0(r))
+            fall = fall_r + 2.0_qp*fall_piece(model, a%delta_r, a%big_lambda)
+            length = (one_minus_r + 2.0_qp*d) + a%big_r*sums(2)
+        else
+            fall = fall_r
+            length = one_minus_r + a%big_r*sums(2)
+        end if
+        angle = sums(1)
+        time = fall + a%big_r*sums(3)
+    end subroutine arch_values
 
     !> theta, s, t at radius r on the first (or second) half-arch with apse R.
     pure subroutine general_half_arch(self, r, big_r, second, angle, length, time, status)
@@ -142,37 +639,29 @@ contains
         logical, intent(in) :: second    !! second half-arch: 2 F(R,R) - F(r,R)
         real(qp), intent(out) :: angle, length, time !! theta, s, t at r
         integer, intent(out) :: status   !! status_ok or the reason
+        type(arch_setup) :: a
         angle = 0.0_qp
         length = 0.0_qp
         time = 0.0_qp
         status = argument_status([r, big_r], big_r > 0.0_qp .and. big_r < 1.0_qp .and. &
                                              r >= big_r .and. r <= 1.0_qp)
         if (status /= status_ok) return
-        call arch_values(self, r, big_r, r - big_r, second, angle, length, time, status)
+        a = setup_arch(self, big_r, 1.0_qp - big_r, r - big_r, minus_log(r, 1.0_qp - r), &
+                       second, .false.)
+        call arch_values(self, a, r - big_r, 1.0_qp - r, second, &
+                         fall_piece(self, 0.0_qp, a%delta_r), angle, length, time)
     end subroutine general_half_arch
 
-    pure subroutine arch_values(self, r, big_r, d, second, angle, length, time, status)
-        type(central_force_model), intent(in) :: self
-        real(qp), intent(in) :: r, big_r, d
-        logical, intent(in) :: second
-        real(qp), intent(out) :: angle, length, time
-        integer, intent(out) :: status
-        real(qp) :: apse(3)
-        integer :: stat(6)
-        call arch_integral(self, want_angle, r, big_r, d, angle, stat(1))
-        call arch_integral(self, want_length, r, big_r, d, length, stat(2))
-        call arch_integral(self, want_time, r, big_r, d, time, stat(3))
-        stat(4:6) = status_ok
-        if (second) then
-            call arch_integral(self, want_angle, big_r, big_r, 0.0_qp, apse(1), stat(4))
-            call arch_integral(self, want_length, big_r, big_r, 0.0_qp, apse(2), stat(5))
-            call arch_integral(self, want_time, big_r, big_r, 0.0_qp, apse(3), stat(6))
-            angle = 2.0_qp*apse(1) - angle
-            length = 2.0_qp*apse(2) - length
-            time = 2.0_qp*apse(3) - time
+    !> -log r, from 1 - r where r is near 1.
+    elemental function minus_log(r, one_minus_r) result(delta)
+        real(qp), intent(in) :: r, one_minus_r
+        real(qp) :: delta
+        if (r > 0.5_qp) then
+            delta = -log1p(-one_minus_r)
+        else
+            delta = -log(r)
         end if
-        status = maxval(stat)
-    end subroutine arch_values
+    end function minus_log
 
     !> Theta(R,R): the apse angle.
     pure subroutine general_apse_angle(self, big_r, value, status)
@@ -180,10 +669,15 @@ contains
         real(qp), intent(in) :: big_r    !! apse radius, 0 < R < 1
         real(qp), intent(out) :: value   !! Theta(R,R)
         integer, intent(out) :: status   !! status_ok or the reason
+        type(arch_setup) :: a
+        real(qp) :: sums(3)
         value = 0.0_qp
         status = argument_status([big_r], big_r > 0.0_qp .and. big_r < 1.0_qp)
-        if (status == status_ok) &
-            call arch_integral(self, want_angle, big_r, big_r, 0.0_qp, value, status)
+        if (status /= status_ok) return
+        a = setup_arch(self, big_r, 1.0_qp - big_r, 0.0_qp, &
+                       minus_log(big_r, 1.0_qp - big_r), .false., .true.)
+        sums = arch_integrals(self, a, fine_digits, .false.)
+        value = sums(1)
     end subroutine general_apse_angle
 
     !> Time of radial fall from rest at radius 1 to radius r (K = 0): int_r^1 dx/v.
@@ -192,68 +686,256 @@ contains
         real(qp), intent(in) :: r        !! radius, 0 <= r <= 1
         real(qp), intent(out) :: value   !! the time
         integer, intent(out) :: status   !! status_ok or the reason
-        type(arch_integrand) :: f
-        real(qp) :: error
+        real(qp) :: delta
         value = 0.0_qp
         status = argument_status([r], r >= 0.0_qp .and. r <= 1.0_qp)
         if (status /= status_ok .or. r == 1.0_qp) return
-        allocate (f%law, source=self%law)
-        f%kind = want_fall
-        f%r = r
-        f%one_minus_r = 1.0_qp - r
-        call integrate_adaptive(f, 0.0_qp, 1.0_qp, self%rule, integral_tolerance, 0.0_qp, &
-                                value, error, status)
+        if (r > 0.0_qp) then
+            delta = minus_log(r, 1.0_qp - r)
+        else
+            delta = 1.0e4_qp
+        end if
+        value = fall_piece(self, 0.0_qp, delta)
     end subroutine general_fall_time
 
-    pure subroutine upsilon_evaluate(self, x, f, df, status)
-        class(general_upsilon), intent(in) :: self
+    !> The apse data at the unknown x (u = sqrt(rho - R), R, or y = log R).
+    pure function setup_at(model, prob, x) result(a)
+        type(central_force_model), intent(in) :: model
+        type(endpoint_problem), intent(in) :: prob
         real(qp), intent(in) :: x
-        real(qp), intent(out) :: f, df
-        integer, intent(out) :: status
-        real(qp) :: big_r, d, angle, apse
-        integer :: status_apse
-        f = 0.0_qp
-        df = 0.0_qp
-        if (self%apse_unknown) then
+        type(arch_setup) :: a
+        real(qp) :: d
+        if (prob%use_u) then
             d = x*x
-            big_r = self%rho - d
+            a = setup_arch(model, prob%rho - d, prob%one_minus_rho + d, d, prob%delta_rho, &
+                           prob%second, .false.)
+        else if (prob%use_r) then
+            a = setup_arch(model, x, 1.0_qp - x, prob%rho - x, prob%delta_rho, &
+                           prob%second, .false.)
         else
-            big_r = x
-            d = self%rho - big_r
+            a = setup_arch_log(model, -x, prob%rho, prob%delta_rho, prob%second)
         end if
-        if (.not. (big_r > 0.0_qp .and. big_r < 1.0_qp .and. d >= 0.0_qp)) then
-            status = status_outside_domain
+    end function setup_at
+
+    !> The double-precision phase's function (in its `form`) at x.
+    pure function residual64(model, prob, x) result(f)
+        type(central_force_model), intent(in) :: model
+        type(endpoint_problem), intent(in) :: prob
+        real(qp), intent(in) :: x
+        real(real64) :: f, upsilon, psi, limit, scaled, shift
+        call theta64(model, setup_at(model, prob, x), scaled, shift)
+        upsilon = scaled*exp(-shift)
+        psi = real(prob%psi, real64)
+        limit = real(prob%limit, real64)
+        select case (prob%form)
+        case (1)
+            ! log(Upsilon/psi) without forming Upsilon or psi (both may underflow double)
+            f = log(max(scaled, tiny(1.0_real64))) - shift - real(log(prob%psi), real64)
+        case (2)
+            f = log(max(limit - upsilon, tiny(1.0_real64))/(limit - psi))
+        case default
+            f = upsilon - psi
+        end select
+    end function residual64
+
+    !> Regula falsi with the Anderson-Bjorck correction on [lo, hi] (f of opposite
+    !! signs), in double precision; x the root, slope the secant slope near it.
+    pure subroutine double_phase(model, prob, lo, f_lo, hi, f_hi, x, slope, steps)
+        type(central_force_model), intent(in) :: model
+        type(endpoint_problem), intent(in) :: prob
+        real(qp), intent(in) :: lo, hi
+        real(real64), intent(in) :: f_lo, f_hi
+        real(qp), intent(out) :: x
+        real(real64), intent(out) :: slope
+        integer, intent(inout) :: steps
+        real(real64) :: a, b, fa, fb, c, fc, m, width
+        integer :: iteration
+        a = real(lo, real64)
+        b = real(hi, real64)
+        fa = f_lo
+        fb = f_hi
+        width = abs(b - a)
+        slope = (fb - fa)/(b - a)
+        c = b
+        do iteration = 1, 100
+            c = b - fb*(b - a)/(fb - fa)
+            if (.not. (c > min(a, b) .and. c < max(a, b))) c = 0.5_real64*(a + b)
+            fc = residual64(model, prob, real(c, qp))
+            steps = steps + 1
+            if (fc /= fb) slope = (fc - fb)/(c - b)
+            if (fc == 0.0_real64) exit
+            if ((fc > 0.0_real64) .neqv. (fb > 0.0_real64)) then
+                a = b
+                fa = fb
+            else
+                m = 1.0_real64 - fc/fb
+                fa = fa*merge(m, 0.5_real64, m > 0.0_real64)
+            end if
+            if (abs(c - b) <= 2.0e-14_real64*max(abs(c), 1.0e-3_real64*width)) then
+                b = c
+                exit
+            end if
+            b = c
+            fb = fc
+        end do
+        x = real(c, qp)
+    end subroutine double_phase
+
+    !> The quad-precision phase from the double phase's root x0 and slope (of the
+    !! double phase's form): Newton, then secant steps on Upsilon - psi, each a full
+    !! evaluation; the last step taken without one (see the module comment).
+    pure subroutine quad_phase(model, prob, x_start, slope64, lo, hi, solution)
+        type(central_force_model), intent(in) :: model
+        type(endpoint_problem), intent(in) :: prob
+        real(qp), intent(in) :: x_start, lo, hi
+        real(real64), intent(in) :: slope64
+        type(endpoint_solution), intent(inout) :: solution
+        type(arch_setup) :: a
+        real(qp) :: x(3), f(2), s(2), t(2), slope, step, k_mid, scale, floor
+        integer :: iteration
+        select case (prob%form)
+        case (1)
+            slope = prob%psi*real(slope64, qp)
+        case (2)
+            slope = -(prob%limit - prob%psi)*real(slope64, qp)
+        case default
+            slope = real(slope64, qp)
+        end select
+        scale = max(abs(hi - lo), 1.0e-300_qp)
+        floor = 1.0e-3_qp*scale
+        x(1) = x_start
+        call evaluate_full(model, prob, x(1), f(1), s(1), t(1))
+        x(2) = clip(x(1) - f(1)/slope)
+        do iteration = 1, 12
+            call evaluate_full(model, prob, x(2), f(2), s(2), t(2))
+            if (f(2) == f(1) .or. x(2) == x(1)) then
+                step = 0.0_qp
+            else
+                step = -f(2)*(x(2) - x(1))/(f(2) - f(1))
+            end if
+            x(3) = clip(x(2) + step)
+            ! predicted error of x(3): about |step| |x(3) - x(1)| |f''/2f'|, with
+            ! |f''/2f'| taken as 10/scale (u; R: 10/R, Upsilon varies on the scale R)
+            if (prob%use_r) then
+                scale = x(2)
+                floor = tiny(1.0_qp)
+            end if
+            if (abs(step) <= 1.0e-17_qp*max(abs(x(2)), floor) .and. &
+                abs(step)*abs(x(3) - x(1))*10.0_qp/scale <= &
+                1.0e-35_qp*max(abs(x(3)), floor)) exit
+            x(1) = x(2)
+            f(1) = f(2)
+            s(1) = s(2)
+            t(1) = t(2)
+            x(2) = x(3)
+        end do
+        solution%steps = solution%steps + iteration + 1
+        if (iteration > 12) then
+            solution%status = status_no_convergence
             return
         end if
-        call arch_integral(self%model, want_angle, self%rho, big_r, d, angle, status)
-        if (self%second) then
-            call arch_integral(self%model, want_angle, big_r, big_r, 0.0_qp, apse, &
-                               status_apse)
-            angle = 2.0_qp*apse - angle
-            status = max(status, status_apse)
+        ! s along the secant, t by Hamilton-Jacobi: t(x3) = t(x2) + K (psi - Upsilon(x2))
+        a = setup_at(model, prob, 0.5_qp*(x(2) + x(3)))
+        k_mid = model%law%conserved(a%c)
+        a = setup_at(model, prob, x(3))
+        if (x(2) /= x(1)) then
+            solution%arclength = s(2) + (s(2) - s(1))/(x(2) - x(1))*(x(3) - x(2))
+        else
+            solution%arclength = s(2)
         end if
-        f = angle - self%psi
-    end subroutine upsilon_evaluate
+        solution%time = t(2) - k_mid*f(2)
+        solution%apse_radius = a%big_r
+        solution%apse_gap = prob%rho - a%big_r
+        if (prob%use_u) solution%apse_gap = x(3)*x(3)
+        solution%has_apse_radius = .true.
+        solution%has_arclength = .true.
+        solution%has_time = .true.
+        solution%status = status_ok
+    contains
+        pure function clip(x_new) result(y)
+            real(qp), intent(in) :: x_new
+            real(qp) :: y
+            y = x_new
+            if (.not. (ieee_is_finite(y) .and. y > lo .and. y < hi)) &
+                y = max(min(x_new, hi), lo)
+        end function clip
+    end subroutine quad_phase
+
+    !> Upsilon - psi, s and t at the unknown x, on the full rules.
+    pure subroutine evaluate_full(model, prob, x, f, s, t)
+        type(central_force_model), intent(in) :: model
+        type(endpoint_problem), intent(in) :: prob
+        real(qp), intent(in) :: x
+        real(qp), intent(out) :: f, s, t
+        type(arch_setup) :: a
+        real(qp) :: d, angle
+        a = setup_at(model, prob, x)
+        if (prob%use_u) then
+            d = x*x
+        else
+            d = prob%rho - a%big_r
+        end if
+        call arch_values(model, a, d, prob%one_minus_rho, prob%second, prob%fall_rho, &
+                         angle, s, t)
+        f = angle - prob%psi
+    end subroutine evaluate_full
+
+    !> The solution when R-bar is below the smallest binary128 number: R-bar = 0 and the
+    !! limits s = (1 - rho) + 2 rho [second half-arch] and t = 2 t0(0) - t0(rho) (first
+    !! half-arch: s = 1 - rho, t = t0(rho)).
+    pure subroutine below_range(model, prob, solution)
+        type(central_force_model), intent(in) :: model
+        type(endpoint_problem), intent(in) :: prob
+        type(endpoint_solution), intent(inout) :: solution
+        real(qp) :: fall_rho, fall_0
+        integer :: status
+        call model%fall_time(prob%rho, fall_rho, status)
+        if (prob%second) then
+            call model%fall_time(0.0_qp, fall_0, status)
+            solution%arclength = prob%one_minus_rho + 2.0_qp*prob%rho
+            solution%time = 2.0_qp*fall_0 - fall_rho
+        else
+            solution%arclength = prob%one_minus_rho
+            solution%time = fall_rho
+        end if
+        solution%apse_radius = 0.0_qp
+        solution%apse_gap = prob%rho
+        solution%has_apse_radius = .true.
+        solution%has_arclength = .true.
+        solution%has_time = .true.
+        solution%status = status_ok
+    end subroutine below_range
 
     !> The two-point problem for this law: the brachistochrone from A = (1, 0) to
-    !! B = (rho, psi), by a bracketed secant method on (0, rho] split at rho/2 (unknown
-    !! u = sqrt(rho - R) near the apse, R below). psi >= 2 lim Theta(R,R) is the sector
-    !! of inaccessibility; t is then its greatest lower bound t(0) + (t(0) - t(rho)),
-    !! attained (arch 'radial', through O) where the law lets a particle pass the centre.
+    !! B = (rho, psi) (see the module comment). psi >= 2 lim Theta(R,R) is the sector of
+    !! inaccessibility; t is then its greatest lower bound 2 t0(0) - t0(rho), attained
+    !! (arch 'radial', through O) where the law lets a particle pass the centre.
+    !! Statuses: status_ok; status_inaccessible; status_not_finite,
+    !! status_rho_out_of_range, status_psi_out_of_range (bad endpoint);
+    !! status_parameter_out_of_range (law outside its range, `speed_law%valid`);
+    !! status_no_convergence (not seen on accessible endpoints; reported, not hidden).
+    !! R-bar below the binary128 range (logarithmic law, psi within about 1e-4 of pi) is
+    !! returned as 0 with s and t at their limits (`below_range`).
     pure function general_solve(self, rho, psi) result(solution)
         class(central_force_model), intent(in) :: self
         real(qp), intent(in) :: rho   !! endpoint radius, 0 < rho <= 1
         real(qp), intent(in) :: psi   !! endpoint angle, 0 <= psi <= pi
         type(endpoint_solution) :: solution
-        type(general_upsilon) :: fun
-        real(qp) :: apse_angle_rho, limit, half, f_half, f_end, x, big_r, d, fall_rho, fall_0
-        real(qp) :: angle, length, time
-        integer :: status, steps
+        type(endpoint_problem) :: prob
+        type(arch_setup) :: a
+        real(qp) :: limit, apse_angle_rho, half, x, lo, hi, sums(3), fall_rho, fall_0
+        real(real64) :: f_half, f_lo, f_hi, slope, theta_half, scaled, shift
+        integer :: status, probe
 
         solution%rho = rho
         solution%psi = psi
         solution%status = endpoint_status(rho, psi, region_inside)
         if (solution%status /= status_ok) return
+        if (.not. self%law%valid()) then
+            ! e.g. a power law beyond max_power_exponent
+            solution%status = status_parameter_out_of_range
+            return
+        end if
         limit = self%law%apse_angle_limit()
         if (psi == 0.0_qp .or. psi >= 2.0_qp*limit) then
             call self%fall_time(rho, fall_rho, status)
@@ -267,8 +949,6 @@ contains
                 call self%fall_time(0.0_qp, fall_0, status)
                 solution%time = 2.0_qp*fall_0 - fall_rho
                 if (self%law%passes_centre() .and. psi == 2.0_qp*limit) then
-                    ! the straight path through O (harmonic: the diametral tunnel) attains
-                    ! the bound: R = 0, s = 1 + rho
                     solution%arch = arch_radial
                     solution%arclength = 1.0_qp + rho
                     solution%has_apse_radius = .true.
@@ -282,56 +962,87 @@ contains
             return
         end if
 
-        fun%model = self
-        fun%rho = rho
-        fun%psi = psi
+        prob%rho = rho
+        prob%psi = psi
+        prob%one_minus_rho = 1.0_qp - rho
+        prob%delta_rho = minus_log(rho, prob%one_minus_rho)
+        prob%limit = 2.0_qp*limit
+        ! the half-arch of B: psi against Theta(rho, rho), in quad only when close
         apse_angle_rho = 0.0_qp
-        if (rho < 1.0_qp) call self%apse_angle(rho, apse_angle_rho, status)
-        fun%second = rho == 1.0_qp .or. psi > apse_angle_rho
-        solution%arch = merge(arch_complete, merge(arch_second, arch_first, fun%second), &
+        if (rho < 1.0_qp) then
+            a = setup_arch(self, rho, prob%one_minus_rho, 0.0_qp, prob%delta_rho, &
+                           .false., .true.)
+            call theta64(self, a, scaled, shift)
+            apse_angle_rho = real(scaled, qp)*exp(-real(shift, qp))
+            if (abs(apse_angle_rho - psi) <= 1.0e-12_qp*psi) then
+                sums = arch_integrals(self, a, fine_digits, .false.)
+                apse_angle_rho = sums(1)
+            end if
+        end if
+        prob%second = rho == 1.0_qp .or. psi > apse_angle_rho
+        solution%arch = merge(arch_complete, merge(arch_second, arch_first, prob%second), &
                               rho == 1.0_qp)
         if (psi == apse_angle_rho) then
-            big_r = rho
-            d = 0.0_qp
-        else
-            half = 0.5_qp*rho
-            fun%apse_unknown = .false.
-            call fun%evaluate(half, f_half, x, status)
-            if ((f_half >= 0.0_qp) .neqv. fun%second) then
-                ! root in (0, rho/2]: Upsilon(0+) = 0 (first) or 2 lim Theta (second)
-                f_end = merge(2.0_qp*limit, 0.0_qp, fun%second) - psi
-                call bracketed_secant(fun, 0.0_qp, f_end, half, f_half, 4.0_qp*eps_qp, &
-                                      tiny(1.0_qp), max_steps, x, steps, status)
-                big_r = x
-                d = rho - x
-            else
-                ! root in (rho/2, rho]: unknown u = sqrt(rho - R), Upsilon(u=0) = Theta(rho,rho)
-                fun%apse_unknown = .true.
-                f_end = apse_angle_rho - psi
-                if (rho == 1.0_qp) f_end = -psi
-                call bracketed_secant(fun, 0.0_qp, f_end, sqrt(rho - half), f_half, &
-                                      4.0_qp*eps_qp, tiny(1.0_qp), max_steps, x, steps, &
-                                      status)
-                d = x*x
-                big_r = rho - d
-            end if
-            solution%steps = steps + 1
-            if (status /= status_ok) then
-                solution%status = status
-                return
-            end if
-        end if
-        call arch_values(self, rho, big_r, d, fun%second, angle, length, time, status)
-        if (status /= status_ok) then
-            solution%status = status_no_convergence
+            ! B is the apse itself
+            a = setup_arch(self, rho, prob%one_minus_rho, 0.0_qp, prob%delta_rho, &
+                           .false., .false.)
+            call arch_values(self, a, 0.0_qp, prob%one_minus_rho, .false., &
+                             fall_piece(self, 0.0_qp, prob%delta_rho), x, &
+                             solution%arclength, solution%time)
+            solution%apse_radius = rho
+            solution%has_apse_radius = .true.
+            solution%has_arclength = .true.
+            solution%has_time = .true.
             return
         end if
-        solution%apse_radius = big_r
-        solution%arclength = length
-        solution%time = time
-        solution%has_apse_radius = .true.
-        solution%has_arclength = .true.
-        solution%has_time = .true.
+
+        ! which part of (0, rho] holds the root: Upsilon at R = rho/2
+        half = 0.5_qp*rho
+        prob%use_u = .true.
+        call theta64(self, setup_at(self, prob, sqrt(rho - half)), scaled, shift)
+        theta_half = scaled*exp(-shift)
+        f_half = theta_half - real(psi, real64)
+        solution%steps = 1
+        if ((f_half >= 0.0_real64) .neqv. prob%second) then
+            ! R-bar < rho/2: unknown y = log R on [y_lo, log(rho/2)]
+            prob%use_u = .false.
+            prob%form = merge(2, 1, prob%second)
+            hi = log(half)
+            f_hi = residual64(self, prob, hi)
+            lo = hi
+            do probe = 1, 40
+                lo = max(lowest_log_r, hi - 4.0_qp*2.0_qp**probe)
+                f_lo = residual64(self, prob, lo)
+                solution%steps = solution%steps + 1
+                if (f_lo < 0.0_real64 .or. lo == lowest_log_r) exit
+            end do
+            if (.not. f_lo < 0.0_real64) then
+                ! R-bar is below the binary128 range (the logarithmic law next to psi = pi):
+                ! R-bar underflows to 0, and s, t equal their limits R -> 0 to far more
+                ! than 34 digits (they differ from them by O(R) < 1e-4900)
+                call below_range(self, prob, solution)
+                return
+            end if
+        else
+            ! R-bar in [rho/2, rho]: unknown u = sqrt(rho - R) on [0, sqrt(rho/2)]
+            prob%form = 0
+            lo = 0.0_qp
+            hi = sqrt(rho - half)
+            f_lo = real(apse_angle_rho - psi, real64)
+            if (rho == 1.0_qp) f_lo = -real(psi, real64)
+            f_hi = f_half
+        end if
+        call double_phase(self, prob, lo, f_lo, hi, f_hi, x, slope, solution%steps)
+        prob%fall_rho = fall_piece(self, 0.0_qp, prob%delta_rho)
+        if (.not. prob%use_u) then
+            ! the quad phase in R itself: y = log R resolves R only to eps |log R|
+            prob%use_r = .true.
+            x = exp(x)
+            slope = slope/real(x, real64)
+            lo = exp(lo)
+            hi = half
+        end if
+        call quad_phase(self, prob, x, slope, lo, hi, solution)
     end function general_solve
 
 end module brachistochrone_central_force

@@ -8,7 +8,7 @@ module brachistochrone_central_force_field
     use brachistochrone_solution, only: endpoint_solution
     use brachistochrone_field_interface, only: brachistochrone_field
     use brachistochrone_central_force, only: central_force_model, new_central_force_model
-    use brachistochrone_speed_laws, only: power_law, logarithmic_law
+    use brachistochrone_speed_laws, only: power_law, logarithmic_law, max_power_exponent
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     implicit none
     private
@@ -29,15 +29,16 @@ module brachistochrone_central_force_field
 
 contains
 
-    !> F = mu/r^n. status: status_ok, or status_bad_exponent unless n is finite and n > 1
-    !! (the field is then the inverse-square law's, n = 2, so that it stays defined).
+    !> F = mu/r^n. status: status_ok, or status_bad_exponent unless
+    !! 1 < n <= max_power_exponent (32: the range the general engine is tested on; the
+    !! field is then the inverse-square law's, n = 2, so that it stays defined).
     subroutine new_power_field(n, field, status)
         real(qp), intent(in) :: n                     !! exponent, n > 1
         type(central_force_field), intent(out) :: field !! the field
         integer, intent(out) :: status                !! status_ok or status_bad_exponent
         status = status_ok
         field%n = n
-        if (.not. (ieee_is_finite(n) .and. n > 1.0_qp)) then
+        if (.not. (ieee_is_finite(n) .and. n > 1.0_qp .and. n <= max_power_exponent)) then
             status = status_bad_exponent
             field%n = 2.0_qp
         end if

@@ -4,7 +4,7 @@
 !! drivers (which only parse, decide and exit), so the serial/OpenMP program and the MPI
 !! program solve rows and write files with the same code and give the same bytes.
 module brachistochrone_batch_run
-    use, intrinsic :: iso_fortran_env, only: error_unit
+    use, intrinsic :: iso_fortran_env, only: error_unit, int64
     use brachistochrone_kinds, only: qp
     use brachistochrone_solution, only: endpoint_solution
     use brachistochrone_field_interface, only: brachistochrone_field
@@ -56,7 +56,7 @@ contains
         code = exit_ok
         finished = .false.
         allocate (report(0))
-        call read_endpoint_file(options%input_path, table)
+        call read_endpoint_file(options%input_path, table, checksum=.not. options%check_only)
         if (size(table%errors) > 0) then
             report = [(message(program_name//': '//table%errors(i)%text), &
                        i = 1, size(table%errors))]
@@ -69,7 +69,7 @@ contains
         end if
         first = options%first
         last = options%last
-        call check_slice(table, first, last, ok, text)
+        call check_slice(table, options%slice, options%slices, first, last, ok, text)
         if (ok .and. len(options%request%curves_path) > 0 .and. table%curve_points == 0) then
             ok = .false.
             text = '--curves '//escape_text(options%request%curves_path)//' needs the '// &
@@ -179,6 +179,7 @@ contains
                 integer_text(last - first + 1)//' endpoints have no solution; see their status'
             code = exit_unsolved
         end if
+        if (code == exit_unsolved .and. options%unsolved_ok) code = exit_ok
 
     contains
 
@@ -231,19 +232,36 @@ contains
         call progress%finish()
     end subroutine solve_rows
 
-    !> Resolve the slice (-1 means the table's first or last row) and check it.
-    subroutine check_slice(table, first, last, ok, message)
+    !> Resolve the rows to solve: slice K of N nearly equal slices (`slice` > 0: rows
+    !! (K-1) n/N + 1 to K n/N, any N <= n), or first..last (-1 means the table's first or
+    !! last row), and check them.
+    subroutine check_slice(table, slice, slices, first, last, ok, message)
         type(endpoint_table), intent(in) :: table    !! the input
-        integer, intent(inout) :: first, last        !! the slice
-        logical, intent(out) :: ok                   !! it is a slice of the table
+        integer, intent(in) :: slice, slices         !! --slice K/N (0/0: none)
+        integer, intent(inout) :: first, last        !! the rows
+        logical, intent(out) :: ok                   !! they are rows of the table
         character(len=:), allocatable, intent(out) :: message !! why not
+        message = ''
+        if (slices > 0) then
+            ok = slices <= table%n
+            if (.not. ok) then
+                message = '--slice '//integer_text(slice)//'/'//integer_text(slices)// &
+                    ': '//integer_text(slices)//' slices of the '//integer_text(table%n)// &
+                    ' rows of '//escape_text(table%path)//' would leave some empty; use at '// &
+                    'most '//integer_text(table%n)//' slices'
+                return
+            end if
+            first = int(int(slice - 1, int64)*table%n/slices) + 1
+            last = int(int(slice, int64)*table%n/slices)
+            return
+        end if
         if (first == -1) first = 1
         if (last == -1) last = table%n
         ok = first >= 1 .and. last <= table%n .and. first <= last
-        message = ''
         if (.not. ok) message = '--first '//integer_text(first)//' --last '// &
             integer_text(last)//' is not a slice of the '//integer_text(table%n)// &
-            ' rows of '//table%path//' (need 1 <= first <= last <= n)'
+            ' rows of '//escape_text(table%path)//' (need 1 <= first <= last <= n; '// &
+            '--slice K/N splits any n)'
     end subroutine check_slice
 
     !> Before any work: refuse outputs that are the same file as another output or as the

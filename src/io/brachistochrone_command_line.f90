@@ -22,6 +22,9 @@ module brachistochrone_command_line
         integer :: first = -1          !! first row (-1: 1)
         integer :: last = -1           !! last row (-1: n)
         integer :: threads = 0         !! OpenMP threads (0: default)
+        integer :: slice = 0           !! --slice K/N: K (0: no slice)
+        integer :: slices = 0          !! --slice K/N: N
+        logical :: unsolved_ok = .false. !! endpoints without a solution still exit 0
         logical :: quiet = .false.     !! no progress on stderr
         logical :: check_only = .false. !! validate only
         logical :: show_table = .true. !! table on stdout
@@ -72,7 +75,8 @@ contains
                 return
             case ('--')
                 options_ended = .true.
-            case ('--csv', '--nml', '--table', '--curves', '--first', '--last', '--threads')
+            case ('--csv', '--nml', '--table', '--curves', '--first', '--last', '--threads', &
+                  '--slice')
                 if (.not. has_value) then
                     if (k == count_arguments) then
                         call problem(argument//' needs a value')
@@ -82,12 +86,13 @@ contains
                     value = get_argument(k)
                 end if
                 call take_value(argument, value)
-            case ('--force', '--quiet', '--no-table', '--check')
+            case ('--force', '--quiet', '--no-table', '--check', '--unsolved-ok')
                 if (has_value) call problem(escape_text(argument)//' takes no value')
                 select case (argument)
                 case ('--force');    options%request%force = .true.
                 case ('--quiet');    options%quiet = .true.
                 case ('--no-table'); options%show_table = .false.
+                case ('--unsolved-ok'); options%unsolved_ok = .true.
                 case default;        options%check_only = .true.
                 end select
             case default
@@ -153,6 +158,7 @@ contains
             case ('--curves');  options%request%curves_path = text
             case ('--first');   options%first = whole_number(option, text)
             case ('--last');    options%last = whole_number(option, text)
+            case ('--slice');   call take_slice(text)
             case default
                 options%threads = whole_number(option, text)
                 if (status == exit_ok .and. (options%threads < 1 .or. &
@@ -161,6 +167,24 @@ contains
             end select
         end subroutine take_value
 
+        !> `K/N`: slice K of N nearly equal slices of the rows, 1 <= K <= N.
+        subroutine take_slice(text)
+            character(len=*), intent(in) :: text
+            integer :: slash
+            slash = index(text, '/')
+            if (slash > 1 .and. slash < len(text)) then
+                options%slice = whole_number('--slice', text(:slash - 1))
+                options%slices = whole_number('--slice', text(slash + 1:))
+            end if
+            if (status /= exit_ok) return
+            if (slash <= 1 .or. slash == len(text) .or. options%slices < 1 .or. &
+                options%slice < 1 .or. options%slice > options%slices) then
+                call problem('--slice needs K/N with 1 <= K <= N (slice K of N, for '// &
+                             'example --slice 3/10 or --slice $SLURM_ARRAY_TASK_ID/'// &
+                             '$SLURM_ARRAY_TASK_COUNT), got "'//escape_text(text)//'"')
+            end if
+        end subroutine take_slice
+
         !> An input is needed; at most one output is standard output, and then the table
         !! is not printed there.
         subroutine check_outputs()
@@ -168,6 +192,10 @@ contains
             if (options%help .or. options%version) return
             if (len(options%input_path) == 0) then
                 call problem('no input file given (see --help)')
+                return
+            end if
+            if (options%slices > 0 .and. (options%first /= -1 .or. options%last /= -1)) then
+                call problem('--slice K/N chooses the rows itself; leave out --first and --last')
                 return
             end if
             dashes = count([options%request%csv_path == '-', options%request%nml_path == '-', &
@@ -227,7 +255,13 @@ contains
             'from A to B)'
         write (unit, '(a)') '  --no-table          do not print the table on stdout'
         write (unit, '(a)') '  --first I --last J  solve rows I..J only (1-based, '// &
-            'inclusive): one job of an array'
+            'inclusive, J <= n)'
+        write (unit, '(a)') '  --slice K/N         solve slice K of N nearly equal slices of '// &
+            'the rows (job arrays;'
+        write (unit, '(a)') '                      any N <= n; join the CSVs with: '// &
+            driver//' merge)'
+        write (unit, '(a)') '  --unsolved-ok       exit 0 also when some endpoints have no '// &
+            'solution (their status says why)'
         write (unit, '(a)') '  --threads N         OpenMP threads, 1..'// &
             integer_text(max_threads)//' (default: OMP_NUM_THREADS, or all cores)'
         write (unit, '(a)') '  --force             replace output files (regular files or '// &

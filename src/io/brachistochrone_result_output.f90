@@ -17,7 +17,7 @@ module brachistochrone_result_output
     use brachistochrone_field_interface, only: brachistochrone_field
     use brachistochrone_arches, only: arch_word
     use brachistochrone_endpoint_input, only: endpoint_table, group_name
-    use brachistochrone_strings, only: integer_text
+    use brachistochrone_strings, only: integer_text, escape_text
     use brachistochrone_format, only: format_quad
     use brachistochrone_safe_file, only: safe_file
     implicit none
@@ -33,7 +33,7 @@ module brachistochrone_result_output
     !> Name of the namelist group of the namelist output.
     character(len=*), parameter :: results_group_name = 'results'
     !> The effective input echoed into provenance lists its arrays up to this many rows.
-    integer, parameter :: max_echoed_rows = 100000
+    integer, parameter :: max_echoed_rows = 1000
 
     !> Which files to write.
     type :: output_request
@@ -119,8 +119,11 @@ contains
                  line_text('date: '//date), &
                  line_text('field: '//field%name()//', '//field%description()// &
                            exponent_note(field)//', '//field%units()), &
-                 line_text('input: '//table%path//', rows '//integer_text(first)//' to '// &
-                           integer_text(last)//' of '//integer_text(table%n)), &
+                 line_text('input: '//escape_text(table%path)//', rows '// &
+                           integer_text(first)//' to '//integer_text(last)//' of '// &
+                           integer_text(table%n)), &
+                 line_text('input sha256: '//table%checksum//', '// &
+                           integer_text(table%bytes)//' bytes'), &
                  line_text('effective input:')]
         lines = [lines, effective_input(field, table, first, last)]
     end function provenance_lines

@@ -5,9 +5,15 @@ module brachistochrone_strings
     use, intrinsic :: iso_c_binding, only: c_char, c_null_char, c_ptr, c_null_ptr, c_float128
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_positive_inf, &
                                              ieee_negative_inf
+    use, intrinsic :: iso_fortran_env, only: int64
     use brachistochrone_kinds, only: qp
     implicit none
     private
+
+    !> Decimal text of an integer (default kind or 64-bit), without blanks.
+    interface integer_text
+        module procedure integer_text_default, integer_text_int64
+    end interface integer_text
 
     public :: integer_text, lower, escape_text, real_from_text, integer_from_text
     public :: text_ok, text_malformed, text_out_of_range
@@ -36,13 +42,22 @@ module brachistochrone_strings
 contains
 
     !> Decimal text of an integer, without blanks.
-    pure function integer_text(value) result(text)
+    pure function integer_text_default(value) result(text)
         integer, intent(in) :: value !! the integer
         character(len=:), allocatable :: text
         character(len=24) :: buffer
         write (buffer, '(i0)') value
         text = trim(buffer)
-    end function integer_text
+    end function integer_text_default
+
+    !> `integer_text` for a 64-bit integer.
+    pure function integer_text_int64(value) result(text)
+        integer(int64), intent(in) :: value !! the integer
+        character(len=:), allocatable :: text
+        character(len=24) :: buffer
+        write (buffer, '(i0)') value
+        text = trim(buffer)
+    end function integer_text_int64
 
     !> Lowercase copy of ASCII text.
     pure function lower(text) result(lowered)

@@ -8,13 +8,35 @@
 !! V(x) = P(x)/(1 - x) = -D(x,1) and (P(x) - P(R))/(x - R) near x = 1 and x = R.
 !! Units: radius of A = 1 and |mu| = 1 (inverse-square: Tee's units; harmonic: R_E = 1,
 !! omega = 1).
+!!
+!! The engine's fast path (`arch_terms`) works in logarithmic offsets: for the apse R and
+!! a point x of the arch, lambda = log(x/R) from the apse and delta = -log(x) from the
+!! start, lambda + delta = Lambda = -log R, each carried exactly by the engine. It needs
+!!   q = w(R)/w(x) = (R/x)^2 P(x)/P(R),   1 - q without cancellation,   q/sqrt(P(x)),
+!! where w = x^2/P. Power laws (a = n - 1) have, with E(y) = 1 - exp(-a y),
+!!   q = exp(-(n+1) lambda) E(delta)/E(Lambda),
+!!   1 - q = (1 - exp(-2 lambda)) + exp(-2 lambda) E(lambda)/E(Lambda),
+!!   q/sqrt(P) = sqrt(a/2) sqrt(E(delta))/E(Lambda) exp(-(n+1) lambda - a delta/2),
+!! all sums of positive terms that neither overflow nor cancel for any R in binary128
+!! and any n > 1 (E/a -> y as a -> 0: the logarithmic law, P = 2 delta, is that limit).
+!! Other laws get these from P and D (`default_arch_terms`).
 module brachistochrone_speed_laws
     use brachistochrone_kinds, only: qp
     use brachistochrone_quad_math, only: expm1, log1p
+    use brachistochrone_fast_exp, only: fast_exp, fast_expm1
+    use, intrinsic :: iso_fortran_env, only: real64
     implicit none
     private
 
     public :: speed_law, inverse_square_law, power_law, logarithmic_law, harmonic_law
+    public :: max_power_exponent
+
+    !> Largest force exponent n of `power_law` the general engine accepts (checked against
+    !! mpmath at n = 1.5, 3, 10 and converging on a grid up to n = 32; from n of about 100
+    !! the integrands' exp(-(n+1) lambda/2) decay outgrows its panel layout next to the
+    !! edge of the accessible region). Any n > 1 is accepted below it, n = 1 + 2^-100
+    !! included (it agrees with the logarithmic law to O(n - 1)).
+    real(qp), parameter :: max_power_exponent = 32.0_qp
 
     !> A speed law: v^2 and its divided difference. Attractive laws here: v > 0 for
     !! 0 < r < 1, v(1) = 0.
@@ -24,6 +46,16 @@ module brachistochrone_speed_laws
         procedure(pair_law), deferred :: divided_difference !! (P(x) - P(y))/(x - y)
         procedure(limit_law), deferred :: apse_angle_limit !! lim Theta(R,R), R -> 0
         procedure :: passes_centre => no_centre_passage  !! v(0) finite
+        procedure :: valid => default_valid  !! parameters inside the supported range
+        procedure :: apse_constants => default_apse_constants !! per-apse data for arch_terms
+        procedure :: arch_terms => default_arch_terms     !! q, 1 - q, q/v at a node
+        !> sqrt(q/(1 - q)) exp(shift) in double precision, for the solver's early phase
+        procedure :: theta_ratio64 => default_theta_ratio64
+        procedure :: inverse_speed => default_inverse_speed !! 1/v(x) at x = exp(-delta)
+        procedure :: conserved => default_conserved       !! K = R/v(R) (eq. 25)
+        !> Distances (in lambda from the apse, delta from the start) of the nearest
+        !! complex singularities of the integrands in those variables
+        procedure :: log_scales => default_log_scales
     end type speed_law
 
     abstract interface
@@ -61,6 +93,13 @@ module brachistochrone_speed_laws
         procedure :: speed_squared => power_p
         procedure :: divided_difference => power_d
         procedure :: apse_angle_limit => power_limit
+        procedure :: apse_constants => power_apse_constants
+        procedure :: arch_terms => power_arch_terms
+        procedure :: theta_ratio64 => power_theta_ratio64
+        procedure :: inverse_speed => power_inverse_speed
+        procedure :: conserved => power_conserved
+        procedure :: log_scales => power_log_scales
+        procedure :: valid => power_valid
     end type power_law
 
     !> Logarithmic potential (F = 1/r, the power law n = 1): v^2 = -2 log x.
@@ -69,6 +108,12 @@ module brachistochrone_speed_laws
         procedure :: speed_squared => logarithmic_p
         procedure :: divided_difference => logarithmic_d
         procedure :: apse_angle_limit => logarithmic_limit
+        procedure :: apse_constants => logarithmic_apse_constants
+        procedure :: arch_terms => logarithmic_arch_terms
+        procedure :: theta_ratio64 => logarithmic_theta_ratio64
+        procedure :: inverse_speed => logarithmic_inverse_speed
+        procedure :: conserved => logarithmic_conserved
+        procedure :: log_scales => logarithmic_log_scales
     end type logarithmic_law
 
     !> Inside a uniform planet (Saitoh), R_E = 1, omega = 1: v^2 = 1 - x^2.
@@ -78,6 +123,12 @@ module brachistochrone_speed_laws
         procedure :: divided_difference => harmonic_d
         procedure :: apse_angle_limit => harmonic_limit
         procedure :: passes_centre => harmonic_passes_centre
+        procedure :: log_scales => harmonic_log_scales
+        procedure :: apse_constants => harmonic_apse_constants
+        procedure :: arch_terms => harmonic_arch_terms
+        procedure :: theta_ratio64 => harmonic_theta_ratio64
+        procedure :: inverse_speed => harmonic_inverse_speed
+        procedure :: conserved => harmonic_conserved
     end type harmonic_law
 
 contains
@@ -88,6 +139,18 @@ contains
         class(speed_law), intent(in) :: self
         no_centre_passage = .false.
     end function no_centre_passage
+
+    !> Parameters inside the supported range (no parameters: always).
+    pure logical function default_valid(self)
+        class(speed_law), intent(in) :: self
+        default_valid = .true.
+    end function default_valid
+
+    !> 1 < n <= max_power_exponent.
+    pure logical function power_valid(self)
+        class(power_law), intent(in) :: self
+        power_valid = self%n > 1.0_qp .and. self%n <= max_power_exponent
+    end function power_valid
 
     pure logical function harmonic_passes_centre(self)
         class(harmonic_law), intent(in) :: self
@@ -204,5 +267,312 @@ contains
         real(qp) :: angle
         angle = acos(-1.0_qp)/2.0_qp
     end function harmonic_limit
+
+    !> Per-apse constants for `arch_terms`: [R, 1 - R, Lambda = -log R, P(R)] here
+    !! (R and 1 - R exact as the engine carries them).
+    pure function default_apse_constants(self, big_r, one_minus_big_r, big_lambda) result(c)
+        class(speed_law), intent(in) :: self
+        real(qp), intent(in) :: big_r            !! apse radius R
+        real(qp), intent(in) :: one_minus_big_r  !! 1 - R, exact
+        real(qp), intent(in) :: big_lambda       !! -log R
+        real(qp) :: c(6)
+        c = [big_r, one_minus_big_r, big_lambda, &
+             -one_minus_big_r*self%divided_difference(big_r, 1.0_qp), 0.0_qp, 0.0_qp]
+    end function default_apse_constants
+
+    !> q = (R/x)^2 P(x)/P(R), 1 - q = (x - R) M/x^2 with M = (x + R) - R^2 D(x,R)/P(R)
+    !! (a sum of positive terms for attractive laws), q/sqrt(P(x)), and x/R, at the node
+    !! lambda = log(x/R), delta = -log x.
+    pure subroutine default_arch_terms(self, c, lambda, delta, q, one_minus_q, q_over_v, &
+                                       x_over_r)
+        class(speed_law), intent(in) :: self
+        real(qp), intent(in) :: c(6)           !! from apse_constants
+        real(qp), intent(in) :: lambda, delta  !! offsets from the apse and the start
+        real(qp), intent(out) :: q, one_minus_q, q_over_v, x_over_r
+        real(qp) :: x, p_x, m
+        x_over_r = exp(lambda)
+        x = exp(-delta)
+        p_x = -expm1(-delta)*(-self%divided_difference(x, 1.0_qp))
+        m = (x + c(1)) - c(1)**2*self%divided_difference(x, c(1))/c(4)
+        q = (c(1)/x)**2*p_x/c(4)
+        one_minus_q = c(1)*expm1(lambda)*m/x**2
+        q_over_v = q/sqrt(p_x)
+    end subroutine default_arch_terms
+
+    !> 1/v(x) at x = exp(-delta): 1/sqrt((1 - x) V(x)), V = -D(x, 1).
+    pure function default_inverse_speed(self, delta) result(w)
+        class(speed_law), intent(in) :: self
+        real(qp), intent(in) :: delta !! -log x > 0
+        real(qp) :: w
+        w = 1.0_qp/sqrt(-expm1(-delta)*(-self%divided_difference(exp(-delta), 1.0_qp)))
+    end function default_inverse_speed
+
+    !> K = R/v(R), the conserved angular momentum of the associated free particle.
+    pure function default_conserved(self, c) result(k)
+        class(speed_law), intent(in) :: self
+        real(qp), intent(in) :: c(6) !! from apse_constants
+        real(qp) :: k
+        k = c(1)/sqrt(c(4))
+    end function default_conserved
+
+    !> [sigma_apse, sigma_start]: inverse-square values (w(x) = w(R) at x = R e^(2 pi i/3)
+    !! for small R; P has no other zero).
+    pure function default_log_scales(self) result(sigma)
+        class(speed_law), intent(in) :: self
+        real(qp) :: sigma(2)
+        sigma = [2.0_qp*acos(-1.0_qp)/3.0_qp, 2.0_qp*acos(-1.0_qp)]
+    end function default_log_scales
+
+    !> Harmonic: w(x) = w(R) at x = -R, P = 0 at x = -1: both at distance pi.
+    pure function harmonic_log_scales(self) result(sigma)
+        class(harmonic_law), intent(in) :: self
+        real(qp) :: sigma(2)
+        sigma = [acos(-1.0_qp), acos(-1.0_qp)]
+    end function harmonic_log_scales
+
+    !> exp(-lambda) and 1 - exp(-2 lambda), both to full relative precision (lambda >= 0);
+    !! where delta < lambda (nearer the start) exp(-lambda) = R exp(delta), since lambda =
+    !! Lambda - delta carries an absolute rounding error of Lambda's size.
+    elemental subroutine exp_pair(lambda, delta, big_r, e1, om2)
+        real(qp), intent(in) :: lambda, delta, big_r
+        real(qp), intent(out) :: e1, om2
+        real(qp) :: em1
+        if (lambda > 0.5_qp) then
+            if (delta < lambda .and. big_r > 0.0_qp) then
+                e1 = big_r*fast_exp(delta)
+            else
+                e1 = fast_exp(-lambda)
+            end if
+            om2 = 1.0_qp - e1*e1
+        else
+            em1 = fast_expm1(-lambda)
+            e1 = 1.0_qp + em1
+            om2 = -em1*(2.0_qp + em1)
+        end if
+    end subroutine exp_pair
+
+    !> E(y) = 1 - exp(-a y) for y >= 0, accurate for all a y.
+    elemental function decay(a, y) result(e)
+        real(qp), intent(in) :: a, y
+        real(qp) :: e
+        e = -fast_expm1(-a*y)
+    end function decay
+
+    !> Power law: [Lambda, E(Lambda), a, R^a = exp(-a Lambda), R, 1/E(Lambda)].
+    pure function power_apse_constants(self, big_r, one_minus_big_r, big_lambda) result(c)
+        class(power_law), intent(in) :: self
+        real(qp), intent(in) :: big_r, one_minus_big_r, big_lambda
+        real(qp) :: c(6), a
+        a = self%n - 1.0_qp
+        ! R^a (powq) rather than exp(-a Lambda): Lambda's rounding would cost a Lambda eps
+        c = [big_lambda, decay(a, big_lambda), a, big_r**a, big_r, 0.0_qp]
+        if (a*big_lambda > 0.5_qp) c(2) = 1.0_qp - c(4)
+        c(6) = 1.0_qp/c(2)
+    end function power_apse_constants
+
+    !> Two expm1 per node (three where a delta < 1/4): exp(-lambda) = 1 + expm1(-lambda),
+    !! 1 - exp(-2 lambda) = -expm1(-lambda) (2 + expm1(-lambda)), E(lambda) =
+    !! -expm1(-a lambda), exp(-a delta) = exp(-a Lambda)/exp(-a lambda).
+    pure subroutine power_arch_terms(self, c, lambda, delta, q, one_minus_q, q_over_v, &
+                                     x_over_r)
+        class(power_law), intent(in) :: self
+        real(qp), intent(in) :: c(6), lambda, delta
+        real(qp), intent(out) :: q, one_minus_q, q_over_v, x_over_r
+        real(qp) :: a, om2, e1, e2, eam1, ea, e_delta, exp_delta
+        a = c(3)
+        call exp_pair(lambda, delta, c(5), e1, om2)
+        e2 = e1*e1
+        if (a*lambda > 0.5_qp) then
+            if (delta < lambda .and. c(4) > 0.0_qp) then
+                ! nearer the start: exp(-a lambda) = R^a exp(a delta), exact arguments
+                ea = c(4)*fast_exp(a*delta)
+            else
+                ea = fast_exp(-a*lambda)
+            end if
+            eam1 = ea - 1.0_qp
+        else
+            eam1 = fast_expm1(-a*lambda)
+            ea = 1.0_qp + eam1
+        end if
+        if (a*delta > 0.25_qp .and. c(4) > 0.0_qp) then
+            exp_delta = c(4)/ea
+            e_delta = 1.0_qp - exp_delta
+        else
+            e_delta = decay(a, delta)
+            exp_delta = 1.0_qp - e_delta
+        end if
+        q = e2*ea*e_delta*c(6)
+        one_minus_q = om2 + e2*(-eam1)*c(6)
+        q_over_v = sqrt(0.5_qp*a*e_delta*exp_delta)*c(6)*(e2*ea)
+        x_over_r = 1.0_qp/e1
+    end subroutine power_arch_terms
+
+    !> 1/v = sqrt(a/2) exp(-a delta/2)/sqrt(E(delta)).
+    pure function power_inverse_speed(self, delta) result(w)
+        class(power_law), intent(in) :: self
+        real(qp), intent(in) :: delta
+        real(qp) :: w, a
+        a = self%n - 1.0_qp
+        w = sqrt(0.5_qp*a/decay(a, delta))*fast_exp(-0.5_qp*a*delta)
+    end function power_inverse_speed
+
+    pure function power_conserved(self, c) result(k)
+        class(power_law), intent(in) :: self
+        real(qp), intent(in) :: c(6)
+        real(qp) :: k
+        k = sqrt(0.5_qp*c(3)/c(2))*exp(-(1.0_qp + 0.5_qp*c(3))*c(1))
+    end function power_conserved
+
+    !> w(x) = w(R) at lambda = 2 pi i/(n+1) (small R); P(x) = 0 at delta = 2 pi i/(n-1).
+    pure function power_log_scales(self) result(sigma)
+        class(power_law), intent(in) :: self
+        real(qp) :: sigma(2)
+        sigma = [2.0_qp*acos(-1.0_qp)/(self%n + 1.0_qp), &
+                 2.0_qp*acos(-1.0_qp)/max(self%n - 1.0_qp, 1.0e-3_qp)]
+    end function power_log_scales
+
+    !> Logarithmic law: [Lambda, 0, 0, 0, R, 0].
+    pure function logarithmic_apse_constants(self, big_r, one_minus_big_r, big_lambda) &
+        result(c)
+        class(logarithmic_law), intent(in) :: self
+        real(qp), intent(in) :: big_r, one_minus_big_r, big_lambda
+        real(qp) :: c(6)
+        c = [big_lambda, 0.0_qp, 0.0_qp, 0.0_qp, big_r, 0.0_qp]
+    end function logarithmic_apse_constants
+
+    !> The power law's terms in the limit a -> 0: E(y)/a -> y, P = 2 delta.
+    pure subroutine logarithmic_arch_terms(self, c, lambda, delta, q, one_minus_q, &
+                                           q_over_v, x_over_r)
+        class(logarithmic_law), intent(in) :: self
+        real(qp), intent(in) :: c(6), lambda, delta
+        real(qp), intent(out) :: q, one_minus_q, q_over_v, x_over_r
+        real(qp) :: om2, e1, e2
+        call exp_pair(lambda, delta, c(5), e1, om2)
+        e2 = e1*e1
+        q = e2*delta/c(1)
+        one_minus_q = om2 + e2*lambda/c(1)
+        q_over_v = e2*sqrt(0.5_qp*delta)/c(1)
+        x_over_r = 1.0_qp/e1
+    end subroutine logarithmic_arch_terms
+
+    pure function logarithmic_inverse_speed(self, delta) result(w)
+        class(logarithmic_law), intent(in) :: self
+        real(qp), intent(in) :: delta
+        real(qp) :: w
+        w = 1.0_qp/sqrt(2.0_qp*delta)
+    end function logarithmic_inverse_speed
+
+    pure function logarithmic_conserved(self, c) result(k)
+        class(logarithmic_law), intent(in) :: self
+        real(qp), intent(in) :: c(6)
+        real(qp) :: k
+        k = exp(-c(1))/sqrt(2.0_qp*c(1))
+    end function logarithmic_conserved
+
+    !> w(x) = w(R) at lambda = i pi (small R); P has no zero but x = 1.
+    pure function logarithmic_log_scales(self) result(sigma)
+        class(logarithmic_law), intent(in) :: self
+        real(qp) :: sigma(2)
+        sigma = [acos(-1.0_qp), 1.0e3_qp]
+    end function logarithmic_log_scales
+
+    !> Double precision sqrt(q/(1 - q)) exp(shift) (here through the quad-precision
+    !! terms). The shift keeps the values in range: q ~ R^(n+1) underflows double
+    !! precision long before binary128 (the early phase of tiny R-bar).
+    pure function default_theta_ratio64(self, c, lambda, delta, shift) result(g)
+        class(speed_law), intent(in) :: self
+        real(qp), intent(in) :: c(6)                 !! from apse_constants
+        real(real64), intent(in) :: lambda, delta    !! offsets from the apse and the start
+        real(real64), intent(in) :: shift            !! log of the scale factor
+        real(real64) :: g
+        real(qp) :: q, one_minus_q, q_over_v, x_over_r
+        call self%arch_terms(c, real(lambda, qp), real(delta, qp), q, one_minus_q, &
+                             q_over_v, x_over_r)
+        g = real(sqrt(q/one_minus_q)*exp(real(shift, qp)), real64)
+    end function default_theta_ratio64
+
+    pure function power_theta_ratio64(self, c, lambda, delta, shift) result(g)
+        class(power_law), intent(in) :: self
+        real(qp), intent(in) :: c(6)
+        real(real64), intent(in) :: lambda, delta, shift
+        real(real64) :: g, a, e2, e_big
+        a = real(c(3), real64)
+        e_big = real(c(2), real64)
+        e2 = exp(-2.0_real64*lambda)
+        g = sqrt((-expm1_64(-a*delta))/(-expm1_64(-2.0_real64*lambda)*e_big &
+                                         + e2*(-expm1_64(-a*lambda)))) &
+            *exp(shift - 0.5_real64*(a + 2.0_real64)*lambda)
+    end function power_theta_ratio64
+
+    pure function logarithmic_theta_ratio64(self, c, lambda, delta, shift) result(g)
+        class(logarithmic_law), intent(in) :: self
+        real(qp), intent(in) :: c(6)
+        real(real64), intent(in) :: lambda, delta, shift
+        real(real64) :: g, e2, big
+        big = real(c(1), real64)
+        e2 = exp(-2.0_real64*lambda)
+        g = sqrt(delta/(-expm1_64(-2.0_real64*lambda)*big + e2*lambda))*exp(shift - lambda)
+    end function logarithmic_theta_ratio64
+
+    !> expm1 in double precision (a series below 1e-5, where exp(y) - 1 cancels).
+    elemental function expm1_64(y) result(e)
+        real(real64), intent(in) :: y
+        real(real64) :: e
+        if (abs(y) < 1.0e-5_real64) then
+            e = y*(1.0_real64 + y*(0.5_real64 + y/6.0_real64))
+        else if (abs(y) < 0.5_real64) then
+            e = 2.0_real64*exp(0.5_real64*y)*sinh(0.5_real64*y)
+        else
+            e = exp(y) - 1.0_real64
+        end if
+    end function expm1_64
+
+    !> Harmonic law: [Lambda, 1 - R^2, 0, 0, R, 0].
+    pure function harmonic_apse_constants(self, big_r, one_minus_big_r, big_lambda) &
+        result(c)
+        class(harmonic_law), intent(in) :: self
+        real(qp), intent(in) :: big_r, one_minus_big_r, big_lambda
+        real(qp) :: c(6)
+        c = [big_lambda, one_minus_big_r*(1.0_qp + big_r), 0.0_qp, 0.0_qp, big_r, 0.0_qp]
+    end function harmonic_apse_constants
+
+    !> P = 1 - x^2: q = exp(-2 lambda) (1 - x^2)/(1 - R^2), 1 - q = (1 - exp(-2 lambda))/
+    !! (1 - R^2), q/v = q/sqrt(1 - x^2).
+    pure subroutine harmonic_arch_terms(self, c, lambda, delta, q, one_minus_q, q_over_v, &
+                                        x_over_r)
+        class(harmonic_law), intent(in) :: self
+        real(qp), intent(in) :: c(6), lambda, delta
+        real(qp), intent(out) :: q, one_minus_q, q_over_v, x_over_r
+        real(qp) :: e1, om2, p_x
+        call exp_pair(lambda, delta, c(5), e1, om2)
+        p_x = -fast_expm1(-2.0_qp*delta)
+        q = e1*e1*p_x/c(2)
+        one_minus_q = om2/c(2)
+        q_over_v = q/sqrt(p_x)
+        x_over_r = 1.0_qp/e1
+    end subroutine harmonic_arch_terms
+
+    pure function harmonic_theta_ratio64(self, c, lambda, delta, shift) result(g)
+        class(harmonic_law), intent(in) :: self
+        real(qp), intent(in) :: c(6)
+        real(real64), intent(in) :: lambda, delta, shift
+        real(real64) :: g
+        g = sqrt((-expm1_64(-2.0_real64*delta))/(-expm1_64(-2.0_real64*lambda))) &
+            *exp(shift - lambda)
+    end function harmonic_theta_ratio64
+
+    pure function harmonic_inverse_speed(self, delta) result(w)
+        class(harmonic_law), intent(in) :: self
+        real(qp), intent(in) :: delta
+        real(qp) :: w
+        w = 1.0_qp/sqrt(-fast_expm1(-2.0_qp*delta))
+    end function harmonic_inverse_speed
+
+    pure function harmonic_conserved(self, c) result(k)
+        class(harmonic_law), intent(in) :: self
+        real(qp), intent(in) :: c(6)
+        real(qp) :: k
+        k = c(5)/sqrt(c(2))
+    end function harmonic_conserved
 
 end module brachistochrone_speed_laws

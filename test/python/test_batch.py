@@ -120,9 +120,9 @@ def test_a_million_endpoints_validate(run, tmp_path):
 
 
 def test_progress_on_stderr_and_quiet(run, tmp_path):
-    # progress starts after 2 s: 40,000 endpoints take about 5 s on one thread
+    # progress starts after 2 s: 120,000 endpoints take about 5 s on one thread
     nml = tmp_path / "in.nml"
-    write_table(nml, 40000)
+    write_table(nml, 120000)
     loud = run(nml, "--no-table", "--threads", "1")
     assert loud.returncode == 0
     assert loud.stdout == ""
@@ -138,3 +138,19 @@ def test_io_error_exit_3_and_no_partial_file(run, tmp_path):
     assert result.returncode == 3
     assert "cannot write" in result.stderr
     assert not (tmp_path / "missing_dir").exists()
+
+
+def test_provenance_checksum_and_short_echo(run, tmp_path):
+    """The provenance identifies the input by its SHA-256 and size (hashlib is the
+    oracle); the effective input is echoed only for small inputs."""
+    import hashlib
+    for rows, echoed in ((5, True), (1500, False)):
+        nml = tmp_path / f"in{rows}.nml"
+        write_table(nml, rows)
+        out = tmp_path / f"out{rows}.csv"
+        assert run(nml, "--csv", out, "--no-table", "--quiet").returncode in (0, 2)
+        data = nml.read_bytes()
+        comments = [l for l in out.read_text().splitlines() if l.startswith("#")]
+        assert (f"# input sha256: {hashlib.sha256(data).hexdigest()}, {len(data)} bytes"
+                in comments)
+        assert any(l.startswith("#   rho =") for l in comments) == echoed

@@ -1,0 +1,98 @@
+!> exp and expm1 in binary128, several times faster than libquadmath's, for the general
+!! engine's integrands (two per quadrature node).
+!!
+!! x = k log 2 + j1/256 + j2/65536 + r (j1, j2, r with the sign of x, |r| < 2^-16):
+!! exp(x) = 2^k (1 + expm1(...)), and expm1(a + r) = e^a expm1(r) + expm1(a) for each
+!! table step a (both terms of one sign: no cancellation). The tables e^a and expm1(a)
+!! are constant expressions (rounded by the compiler); expm1(r) is its Taylor series to
+!! r^7/7!. k log 2 is
+!! subtracted in two parts (log 2 split into 60 + 113 bits), so the reduction is exact
+!! to about 2^-170 for |k| < 2^14. Errors: a few units in the last place.
+module brachistochrone_fast_exp
+    use brachistochrone_kinds, only: qp
+    implicit none
+    private
+
+    public :: fast_exp, fast_expm1
+
+    integer :: j_
+    !> j/256 and -j/256, j = 0..255.
+    real(qp), parameter :: steps_plus(0:255) = [(real(j_, qp)/256.0_qp, j_ = 0, 255)]
+    real(qp), parameter :: steps_minus(0:255) = -steps_plus
+    !> e^(+-j/256) and expm1(+-j/256) = 2 e^(a/2) sinh(a/2) (exp - 1 would lose up to 2.4
+    !! digits).
+    real(qp), parameter :: exp_table(0:255) = exp(steps_plus)
+    real(qp), parameter :: expm1_table(0:255) = &
+        2.0_qp*exp(0.5_qp*steps_plus)*sinh(0.5_qp*steps_plus)
+    real(qp), parameter :: exp_table_minus(0:255) = exp(steps_minus)
+    real(qp), parameter :: expm1_table_minus(0:255) = &
+        2.0_qp*exp(0.5_qp*steps_minus)*sinh(0.5_qp*steps_minus)
+    !> The same for +-j/65536.
+    real(qp), parameter :: fine_plus(0:255) = [(real(j_, qp)/65536.0_qp, j_ = 0, 255)]
+    real(qp), parameter :: fine_minus(0:255) = -fine_plus
+    real(qp), parameter :: exp_fine(0:255) = exp(fine_plus)
+    real(qp), parameter :: expm1_fine(0:255) = &
+        2.0_qp*exp(0.5_qp*fine_plus)*sinh(0.5_qp*fine_plus)
+    real(qp), parameter :: exp_fine_minus(0:255) = exp(fine_minus)
+    real(qp), parameter :: expm1_fine_minus(0:255) = &
+        2.0_qp*exp(0.5_qp*fine_minus)*sinh(0.5_qp*fine_minus)
+    !> log 2 in two parts: high (exact times any |k| < 2^50) and low.
+    real(qp), parameter :: ln2 = log(2.0_qp)
+    real(qp), parameter :: ln2_high = real(int(ln2*2.0_qp**60, kind=selected_int_kind(18)), &
+                                           qp)/2.0_qp**60
+    real(qp), parameter :: ln2_low = ln2 - ln2_high
+
+contains
+
+    !> exp(x) for binary128 x (overflow to +Inf, underflow to 0 as exp does).
+    elemental function fast_exp(x) result(y)
+        real(qp), intent(in) :: x !! argument
+        real(qp) :: y
+        real(qp) :: reduced
+        integer :: k
+        if (.not. (abs(x) < 11000.0_qp)) then
+            y = exp(x)
+            return
+        end if
+        k = nint(x/ln2)
+        reduced = (x - real(k, qp)*ln2_high) - real(k, qp)*ln2_low
+        y = scale(1.0_qp + small_expm1(reduced), k)
+    end function fast_exp
+
+    !> expm1(x) = exp(x) - 1 to full relative precision.
+    elemental function fast_expm1(x) result(y)
+        real(qp), intent(in) :: x !! argument
+        real(qp) :: y
+        if (abs(x) < 0.5_qp) then
+            y = small_expm1(x)
+        else
+            y = fast_exp(x) - 1.0_qp
+        end if
+    end function fast_expm1
+
+    !> expm1 for |x| < 1/2 (and a little beyond, for the reduced argument of fast_exp):
+    !! x = a1 + a2 + r, a1 = j1/256, a2 = j2/65536 (all with the sign of x, the
+    !! subtractions exact), |r| < 2^-16, expm1(r) by its series to r^7/7! (the remainder
+    !! is below 1e-38 of it), then expm1(a + r) = e^a expm1(r) + expm1(a) twice.
+    elemental function small_expm1(x) result(y)
+        real(qp), intent(in) :: x
+        real(qp) :: y, r, series
+        integer :: j1, j2
+        j1 = min(int(abs(x)*256.0_qp), 255)
+        r = abs(x) - real(j1, qp)/256.0_qp
+        j2 = min(int(r*65536.0_qp), 255)
+        r = r - real(j2, qp)/65536.0_qp
+        if (x < 0.0_qp) r = -r
+        series = r*(1.0_qp + r*(1.0_qp/2 + r*(1.0_qp/6 + r*(1.0_qp/24 + r*(1.0_qp/120 &
+                 + r*(1.0_qp/720 + r*(1.0_qp/5040)))))))
+        if (x >= 0.0_qp) then
+            if (j2 > 0) series = exp_fine(j2)*series + expm1_fine(j2)
+            if (j1 > 0) series = exp_table(j1)*series + expm1_table(j1)
+        else
+            if (j2 > 0) series = exp_fine_minus(j2)*series + expm1_fine_minus(j2)
+            if (j1 > 0) series = exp_table_minus(j1)*series + expm1_table_minus(j1)
+        end if
+        y = series
+    end function small_expm1
+
+end module brachistochrone_fast_exp
