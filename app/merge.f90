@@ -581,8 +581,8 @@ contains
         integer, intent(in) :: unit
         write (unit, '(a)') 'usage: '//name//' [--force] OUT.csv SLICE1.csv SLICE2.csv ...'
         write (unit, '(a)') ''
-        write (unit, '(a)') 'Join the CSV files (--csv) of the slices of one run (rows K '// &
-            'to L each) into'
+        write (unit, '(a)') 'Join the CSV files (--csv) of the slices of one run (--slice '// &
+            'K/N, --first/--last) into'
         write (unit, '(a)') 'OUT.csv (- for standard output), rows in row order. The slices,'// &
             ' in any order, must'
         write (unit, '(a)') 'come from the same input (its sha256 and size), version, field'// &
