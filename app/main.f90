@@ -24,6 +24,7 @@ program main
     use brachistochrone_strings, only: integer_text
     use brachistochrone_app_family, only: run_family
     use brachistochrone_app_tunnel, only: run_tunnel
+    use brachistochrone_app_merge, only: run_merge
     implicit none
 
     type(run_options) :: options
@@ -84,6 +85,7 @@ contains
         select case (first)
         case ('family');  call run_family(2)
         case ('tunnel');  call run_tunnel(2)
+        case ('merge');   call run_merge(2)
         end select
     end subroutine run_subcommand
 

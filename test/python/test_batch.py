@@ -3,12 +3,11 @@ validation-only runs, and the I/O error path."""
 import math
 import os
 import random
-import subprocess
 from decimal import Decimal
 
 import pytest
 
-from conftest import ROOT, read_csv
+from conftest import read_csv
 
 
 def write_table(path, n, seed=7, estimates=False):
@@ -84,24 +83,6 @@ def test_threads_give_identical_bytes(run, tmp_path, env_fixed_date):
     assert run(nml, "--csv", one, "--threads", "1", "--no-table").returncode == 0
     assert run(nml, "--csv", two, "--threads", "2", "--no-table").returncode == 0
     assert one.read_bytes() == two.read_bytes()
-
-
-def test_slices_merged_equal_the_whole(run, tmp_path, env_fixed_date):
-    nml = tmp_path / "in.nml"
-    write_table(nml, 23, estimates=True)
-    whole = tmp_path / "whole.csv"
-    assert run(nml, "--csv", whole, "--no-table").returncode in (0, 2)
-    parts = []
-    for first, last in ((1, 7), (8, 8), (9, 23)):
-        part = tmp_path / f"part{first}.csv"
-        result = run(nml, "--csv", part, "--first", first, "--last", last, "--no-table")
-        assert result.returncode in (0, 2), result.stderr
-        assert f"rows {first} to {last} of 23" in part.read_text()
-        parts.append(part)
-    merged = tmp_path / "merged.csv"
-    subprocess.run(["bash", str(ROOT / "scripts" / "merge_csv.sh"), str(merged), *map(str, parts)],
-                   check=True)
-    assert data_lines(merged) == data_lines(whole)
 
 
 def test_bad_slices_are_usage_errors(run, tmp_path):

@@ -29,7 +29,8 @@ def test_one_version_everywhere():
 
 @pytest.mark.parametrize("words, name", [([], "brachistochrone"),
                                          (["family"], "brachistochrone family"),
-                                         (["tunnel"], "brachistochrone tunnel")])
+                                         (["tunnel"], "brachistochrone tunnel"),
+                                         (["merge"], "brachistochrone merge")])
 def test_every_program_prints_the_version(run, words, name):
     result = run(*words, "--version")
     assert result.returncode == 0, result.stderr
