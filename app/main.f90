@@ -3,6 +3,7 @@
 !!     brachistochrone [options] FILE.nml      (see --help and the README)
 !!     brachistochrone family ...              (complete arches, apsidal locus; family.f90)
 !!     brachistochrone tunnel ...              (tunnels through a planet; tunnel.f90)
+!!     brachistochrone merge OUT.csv SLICE...  (join job-array slices; merge.f90)
 !!
 !! The first argument `family` or `tunnel` selects a subcommand (an input file of that
 !! name is `./family`).
@@ -40,7 +41,8 @@ program main
     call parse_command_line(options, status, problem)
     if (options%help) then
         call write_usage(output_unit, program_name)
-        write (output_unit, '(a)') 'Subcommands: '//program_name//' family --help, '// &
+        write (output_unit, '(a)') 'Subcommands: '//program_name//' merge --help, '// &
+            program_name//' family --help, '// &
             program_name//' tunnel --help'
         stop exit_ok, quiet=.true.
     else if (options%version) then
@@ -76,7 +78,7 @@ program main
 
 contains
 
-    !> `brachistochrone family ...` and `brachistochrone tunnel ...` run the subcommand
+    !> `brachistochrone family|tunnel|merge ...` run the subcommand
     !! (which stops); any other first argument returns to the batch program.
     subroutine run_subcommand()
         character(len=8) :: first
