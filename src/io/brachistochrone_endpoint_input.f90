@@ -675,12 +675,19 @@ contains
         type(scalar_values), intent(in) :: s
         type(row_values), intent(in) :: rows(:)
         type(endpoint_table), intent(inout) :: table
-        integer :: n, i
+        integer :: n, i, status
         n = s%n
+        allocate (table%rho(n), table%psi(n), table%has_estimates(n), table%r0(n), &
+                  table%r1(n), stat=status)
+        if (status /= 0) then
+            table%problems = 1
+            table%errors = [message(escape_text(table%path)//': out of memory for a '// &
+                            'table of '//integer_text(n)//' rows; split it into smaller files')]
+            return
+        end if
         table%n = n
         table%rho = rows(1)%x(1:n)
         table%psi = rows(2)%x(1:n)
-        allocate (table%has_estimates(n), table%r0(n), table%r1(n))
         do i = 1, n
             table%has_estimates(i) = row_set(rows(3), i)
             table%r0(i) = 0.0_qp

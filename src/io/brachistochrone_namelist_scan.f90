@@ -77,6 +77,8 @@ module brachistochrone_namelist_scan
         integer, allocatable :: value_line(:) !! line of each value
         logical, allocatable :: quoted(:)   !! a string: text between the quotes
         integer(int64) :: total = 0         !! sum of the repeat counts of all values
+        !> memory ran out while storing values (those after it were not stored)
+        logical :: out_of_memory = .false.
     end type group_scan
 
     character(len=*), parameter :: blanks = ' '//achar(9)//achar(13)
@@ -128,6 +130,9 @@ contains
                 call skip_group(text, i, line)
             end if
         end do
+        if (g%out_of_memory) call problems%add(0, 'group &'//group_name//': out of '// &
+            'memory after '//integer_text(g%values)//' values; split the table into '// &
+            'smaller files or run where more memory is available')
     end subroutine scan_group
 
     !> Move i to the next '&' or '$' outside comments (past the end if none).
@@ -525,12 +530,19 @@ contains
         type(group_scan), intent(inout) :: g
         integer, intent(in) :: from, to, r, at_line
         logical, intent(in) :: quoted
+        logical :: ok
+        if (g%out_of_memory) return
         if (g%values == size(g%start)) then
+            ok = .true.
             call grow(g%start)
             call grow(g%finish)
             call grow(g%repeat)
             call grow(g%value_line)
             call grow_logical(g%quoted)
+            if (.not. ok) then
+                g%out_of_memory = .true.
+                return
+            end if
         end if
         g%values = g%values + 1
         g%start(g%values) = from
@@ -543,14 +555,22 @@ contains
         subroutine grow(array)
             integer, allocatable, intent(inout) :: array(:)
             integer, allocatable :: grown(:)
-            allocate (grown(2*size(array)))
+            integer :: status
+            if (.not. ok .or. size(array) > g%values) return
+            allocate (grown(2*size(array)), stat=status)
+            ok = status == 0
+            if (.not. ok) return
             grown(:size(array)) = array
             call move_alloc(grown, array)
         end subroutine grow
         subroutine grow_logical(array)
             logical, allocatable, intent(inout) :: array(:)
             logical, allocatable :: grown(:)
-            allocate (grown(2*size(array)))
+            integer :: status
+            if (.not. ok .or. size(array) > g%values) return
+            allocate (grown(2*size(array)), stat=status)
+            ok = status == 0
+            if (.not. ok) return
             grown(:size(array)) = array
             call move_alloc(grown, array)
         end subroutine grow_logical

@@ -11,7 +11,7 @@ from decimal import Decimal
 
 import pytest
 
-from conftest import read_csv
+from conftest import ROOT, read_csv
 
 
 MEASURE = """
@@ -184,3 +184,29 @@ def test_standard_input(app, tmp_path):
     bad = subprocess.run([str(app), "-", "--check"], input=b"&endpoints n = 1 /",
                          capture_output=True, text=False)
     assert bad.returncode == 1 and b"<stdin>:1:" in bad.stderr
+
+
+def test_reader_out_of_memory_is_a_message(app, tmp_path):
+    """Under address-space limits the reader fails with a message and exit 1 (or
+    succeeds), never with a runtime error, whichever allocation runs out."""
+    import resource
+    import subprocess
+    import sys
+    nml = tmp_path / "big.nml"
+    subprocess.run([sys.executable, str(ROOT / "scripts" / "make_table.py"), "400000",
+                    str(nml)], check=True, capture_output=True)
+    seen_refusal = False
+    for megabytes in (12, 20, 30, 40, 60, 90):
+        limit = megabytes * 2**20
+
+        def cap():
+            resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
+        result = subprocess.run([str(app), str(nml), "--check"], capture_output=True,
+                                text=True, preexec_fn=cap, timeout=120)
+        assert result.returncode in (0, 1), (megabytes, result.stderr)
+        for bad in ("runtime error", "Backtrace", "Error termination", "Segmentation"):
+            assert bad not in result.stderr, (megabytes, result.stderr)
+        if result.returncode == 1:
+            assert "memory" in result.stderr, (megabytes, result.stderr)
+            seen_refusal = True
+    assert seen_refusal
