@@ -13,13 +13,13 @@
 !! written; see brachistochrone_safe_file).
 program main
     use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
-    !$ use omp_lib, only: omp_set_num_threads
+    !$ use omp_lib, only: omp_set_num_threads, omp_get_max_threads
     use brachistochrone, only: brachistochrone_field, new_field, endpoint_solution, &
                                status_ok, status_message
     use brachistochrone_version, only: program_name, program_version
     use brachistochrone_endpoint_input, only: endpoint_table, message
-    use brachistochrone_command_line, only: run_options, parse_command_line, write_usage, exit_ok, &
-                            exit_input
+    use brachistochrone_command_line, only: run_options, parse_command_line, write_usage, &
+                                            max_threads, exit_ok, exit_input
     use brachistochrone_batch_run, only: prepare_run, print_report, solve_rows, deliver_results, &
                                          abandon_outputs
     use brachistochrone_strings, only: integer_text
@@ -52,6 +52,10 @@ program main
         call fail(exit_input, problem)
     end if
     !$ if (options%threads > 0) call omp_set_num_threads(options%threads)
+    !$ if (options%threads == 0 .and. omp_get_max_threads() > max_threads) &
+    !$     call fail(exit_input, 'OMP_NUM_THREADS asks for more than '// &
+    !$               integer_text(max_threads)//' threads (the most supported); set it '// &
+    !$               'lower or give --threads N')
 
     call prepare_run(options, table, first, last, report, code, finished)
     if (finished) then

@@ -13,13 +13,13 @@ program main
                        mpi_comm_size, mpi_gatherv, mpi_bcast, mpi_byte, mpi_integer, &
                        mpi_abort, mpi_logical, mpi_comm, mpi_comm_split_type, &
                        mpi_comm_type_shared, mpi_info_null, mpi_comm_free
-    !$ use omp_lib, only: omp_set_num_threads, omp_get_num_procs
+    !$ use omp_lib, only: omp_set_num_threads, omp_get_num_procs, omp_get_max_threads
     use brachistochrone, only: brachistochrone_field, new_field, endpoint_solution, &
                                status_ok, status_message
     use brachistochrone_version, only: program_name, program_version
     use brachistochrone_endpoint_input, only: endpoint_table, message
-    use brachistochrone_command_line, only: run_options, parse_command_line, write_usage, exit_ok, &
-                            exit_input
+    use brachistochrone_command_line, only: run_options, parse_command_line, write_usage, &
+                                            max_threads, exit_ok, exit_input
     use brachistochrone_batch_run, only: prepare_run, print_report, solve_rows, deliver_results, &
                                          abandon_outputs
     implicit none
@@ -119,7 +119,11 @@ contains
             return
         end if
         call get_environment_variable('OMP_NUM_THREADS', length=length, status=env_status)
-        if (env_status == 0 .and. length > 0) return
+        if (env_status == 0 .and. length > 0) then
+            !$ if (omp_get_max_threads() > max_threads) call fail(exit_input, &
+            !$     'OMP_NUM_THREADS asks for more than the most supported threads; set it lower')
+            return
+        end if
         call mpi_comm_split_type(mpi_comm_world, mpi_comm_type_shared, rank, &
                                  mpi_info_null, node)
         call mpi_comm_size(node, local_ranks)

@@ -154,3 +154,17 @@ def test_provenance_checksum_and_short_echo(run, tmp_path):
         assert (f"# input sha256: {hashlib.sha256(data).hexdigest()}, {len(data)} bytes"
                 in comments)
         assert any(l.startswith("#   rho =") for l in comments) == echoed
+
+
+def test_too_many_threads_from_the_environment(app, tmp_path):
+    """OMP_NUM_THREADS beyond the supported maximum is refused (it crashed the OpenMP
+    runtime); --threads still wins over it."""
+    nml = tmp_path / "in.nml"
+    write_table(nml, 3)
+    env = dict(os.environ, OMP_NUM_THREADS="65536")
+    result = subprocess.run([str(app), str(nml), "--quiet"], env=env, capture_output=True,
+                            text=True, timeout=60)
+    assert result.returncode == 1 and "OMP_NUM_THREADS" in result.stderr
+    result = subprocess.run([str(app), str(nml), "--quiet", "--threads", "2"], env=env,
+                            capture_output=True, text=True, timeout=60)
+    assert result.returncode == 0, result.stderr
