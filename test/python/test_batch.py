@@ -3,6 +3,7 @@ validation-only runs, and the I/O error path."""
 import math
 import os
 import random
+import subprocess
 from decimal import Decimal
 
 import pytest
