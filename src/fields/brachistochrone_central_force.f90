@@ -922,10 +922,9 @@ contains
         real(qp), intent(in) :: psi   !! endpoint angle, 0 <= psi <= pi
         type(endpoint_solution) :: solution
         type(endpoint_problem) :: prob
-        type(arch_setup) :: a
-        real(qp) :: limit, apse_angle_rho, half, x, lo, hi, sums(3), fall_rho, fall_0
-        real(real64) :: f_half, f_lo, f_hi, slope, theta_half, scaled, shift
-        integer :: status, probe
+        real(qp) :: limit, apse_angle_rho, half, x, lo, hi
+        real(real64) :: f_lo, f_hi, slope
+        logical :: below
 
         solution%rho = rho
         solution%psi = psi
@@ -938,99 +937,25 @@ contains
         end if
         limit = self%law%apse_angle_limit()
         if (psi == 0.0_qp .or. psi >= 2.0_qp*limit) then
-            call self%fall_time(rho, fall_rho, status)
-            if (psi == 0.0_qp) then
-                solution%arch = arch_radial
-                solution%arclength = 1.0_qp - rho
-                solution%time = fall_rho
-                solution%has_apse_radius = .true.
-                solution%has_arclength = .true.
-            else
-                call self%fall_time(0.0_qp, fall_0, status)
-                solution%time = 2.0_qp*fall_0 - fall_rho
-                if (self%law%passes_centre() .and. psi == 2.0_qp*limit) then
-                    solution%arch = arch_radial
-                    solution%arclength = 1.0_qp + rho
-                    solution%has_apse_radius = .true.
-                    solution%has_arclength = .true.
-                else
-                    solution%arch = arch_inaccessible
-                    solution%status = status_inaccessible
-                end if
-            end if
-            solution%has_time = .true.
+            call radial_or_beyond(self, rho, psi, limit, solution)
             return
         end if
-
-        prob%rho = rho
-        prob%psi = psi
-        prob%one_minus_rho = 1.0_qp - rho
-        prob%delta_rho = minus_log(rho, prob%one_minus_rho)
-        prob%limit = 2.0_qp*limit
-        ! the half-arch of B: psi against Theta(rho, rho), in quad only when close
-        apse_angle_rho = 0.0_qp
-        if (rho < 1.0_qp) then
-            a = setup_arch(self, rho, prob%one_minus_rho, 0.0_qp, prob%delta_rho, &
-                           .false., .true.)
-            call theta64(self, a, scaled, shift)
-            apse_angle_rho = real(scaled, qp)*exp(-real(shift, qp))
-            if (abs(apse_angle_rho - psi) <= 1.0e-12_qp*psi) then
-                sums = arch_integrals(self, a, fine_digits, .false.)
-                apse_angle_rho = sums(1)
-            end if
-        end if
-        prob%second = rho == 1.0_qp .or. psi > apse_angle_rho
+        call start_problem(self, rho, psi, limit, prob, apse_angle_rho)
         solution%arch = merge(arch_complete, merge(arch_second, arch_first, prob%second), &
                               rho == 1.0_qp)
         if (psi == apse_angle_rho) then
-            ! B is the apse itself
-            a = setup_arch(self, rho, prob%one_minus_rho, 0.0_qp, prob%delta_rho, &
-                           .false., .false.)
-            call arch_values(self, a, 0.0_qp, prob%one_minus_rho, .false., &
-                             fall_piece(self, 0.0_qp, prob%delta_rho), x, &
-                             solution%arclength, solution%time)
-            solution%apse_radius = rho
-            solution%has_apse_radius = .true.
-            solution%has_arclength = .true.
-            solution%has_time = .true.
+            call at_the_apse(self, prob, solution)
             return
         end if
-
-        ! which part of (0, rho] holds the root: Upsilon at R = rho/2
         half = 0.5_qp*rho
-        prob%use_u = .true.
-        call theta64(self, setup_at(self, prob, sqrt(rho - half)), scaled, shift)
-        theta_half = scaled*exp(-shift)
-        f_half = theta_half - real(psi, real64)
-        solution%steps = 1
-        if ((f_half >= 0.0_real64) .neqv. prob%second) then
-            ! R-bar < rho/2: unknown y = log R on [y_lo, log(rho/2)]
-            prob%use_u = .false.
-            prob%form = merge(2, 1, prob%second)
-            hi = log(half)
-            f_hi = residual64(self, prob, hi)
-            lo = hi
-            do probe = 1, 40
-                lo = max(lowest_log_r, hi - 4.0_qp*2.0_qp**probe)
-                f_lo = residual64(self, prob, lo)
-                solution%steps = solution%steps + 1
-                if (f_lo < 0.0_real64 .or. lo == lowest_log_r) exit
-            end do
-            if (.not. f_lo < 0.0_real64) then
-                ! R-bar is below the binary128 range (the logarithmic law next to psi = pi):
-                ! R-bar underflows to 0, and s, t equal their limits R -> 0 to far more
-                ! than 34 digits (they differ from them by O(R) < 1e-4900)
-                call below_range(self, prob, solution)
-                return
-            end if
-        else
-            ! R-bar in [rho/2, rho]: unknown u = sqrt(rho - R) on [0, sqrt(rho/2)]
-            prob%form = 0
-            lo = 0.0_qp
-            hi = sqrt(rho - half)
-            f_lo = real(apse_angle_rho - psi, real64)
-            if (rho == 1.0_qp) f_lo = -real(psi, real64)
-            f_hi = f_half
+        call open_bracket(self, prob, apse_angle_rho, half, lo, hi, f_lo, f_hi, &
+                          solution%steps, below)
+        if (below) then
+            ! R-bar is below the binary128 range (the logarithmic law next to psi = pi):
+            ! R-bar underflows to 0, and s, t equal their limits R -> 0 to far more
+            ! than 34 digits (they differ from them by O(R) < 1e-4900)
+            call below_range(self, prob, solution)
+            return
         end if
         call double_phase(self, prob, lo, f_lo, hi, f_hi, x, slope, solution%steps)
         prob%fall_rho = fall_piece(self, 0.0_qp, prob%delta_rho)
@@ -1044,5 +969,137 @@ contains
         end if
         call quad_phase(self, prob, x, slope, lo, hi, solution)
     end function general_solve
+
+    !> psi = 0 (radial fall) or psi at or beyond the sector 2 Theta(0,0): no
+    !! brachistochrone (t is the bound 2 t(0) - t(rho)), except the straight path through
+    !! the centre of a law that passes it. The status of a fall time that fails is kept.
+    pure subroutine radial_or_beyond(self, rho, psi, limit, solution)
+        type(central_force_model), intent(in) :: self
+        real(qp), intent(in) :: rho, psi, limit
+        type(endpoint_solution), intent(inout) :: solution
+        real(qp) :: fall_rho, fall_0
+        integer :: status
+        call self%fall_time(rho, fall_rho, status)
+        if (status /= status_ok) then
+            solution%status = status
+            return
+        end if
+        if (psi == 0.0_qp) then
+            solution%arch = arch_radial
+            solution%arclength = 1.0_qp - rho
+            solution%time = fall_rho
+            solution%has_apse_radius = .true.
+            solution%has_arclength = .true.
+        else
+            call self%fall_time(0.0_qp, fall_0, status)
+            if (status /= status_ok) then
+                solution%status = status
+                return
+            end if
+            solution%time = 2.0_qp*fall_0 - fall_rho
+            if (self%law%passes_centre() .and. psi == 2.0_qp*limit) then
+                solution%arch = arch_radial
+                solution%arclength = 1.0_qp + rho
+                solution%has_apse_radius = .true.
+                solution%has_arclength = .true.
+            else
+                solution%arch = arch_inaccessible
+                solution%status = status_inaccessible
+            end if
+        end if
+        solution%has_time = .true.
+    end subroutine radial_or_beyond
+
+    !> The problem's data, and the half-arch of B: psi against Theta(rho, rho), in quad
+    !! precision only when they are close.
+    pure subroutine start_problem(self, rho, psi, limit, prob, apse_angle_rho)
+        type(central_force_model), intent(in) :: self
+        real(qp), intent(in) :: rho, psi, limit
+        type(endpoint_problem), intent(out) :: prob
+        real(qp), intent(out) :: apse_angle_rho    !! Theta(rho, rho) (0 when rho = 1)
+        type(arch_setup) :: a
+        real(qp) :: sums(3)
+        real(real64) :: scaled, shift
+        prob%rho = rho
+        prob%psi = psi
+        prob%one_minus_rho = 1.0_qp - rho
+        prob%delta_rho = minus_log(rho, prob%one_minus_rho)
+        prob%limit = 2.0_qp*limit
+        apse_angle_rho = 0.0_qp
+        if (rho < 1.0_qp) then
+            a = setup_arch(self, rho, prob%one_minus_rho, 0.0_qp, prob%delta_rho, &
+                           .false., .true.)
+            call theta64(self, a, scaled, shift)
+            apse_angle_rho = real(scaled, qp)*exp(-real(shift, qp))
+            if (abs(apse_angle_rho - psi) <= 1.0e-12_qp*psi) then
+                sums = arch_integrals(self, a, fine_digits, .false.)
+                apse_angle_rho = sums(1)
+            end if
+        end if
+        prob%second = rho == 1.0_qp .or. psi > apse_angle_rho
+    end subroutine start_problem
+
+    !> B is the apse of its brachistochrone: R-bar = rho, s and t of the first half-arch.
+    pure subroutine at_the_apse(self, prob, solution)
+        type(central_force_model), intent(in) :: self
+        type(endpoint_problem), intent(in) :: prob
+        type(endpoint_solution), intent(inout) :: solution
+        type(arch_setup) :: a
+        real(qp) :: angle
+        a = setup_arch(self, prob%rho, prob%one_minus_rho, 0.0_qp, prob%delta_rho, &
+                       .false., .false.)
+        call arch_values(self, a, 0.0_qp, prob%one_minus_rho, .false., &
+                         fall_piece(self, 0.0_qp, prob%delta_rho), angle, &
+                         solution%arclength, solution%time)
+        solution%apse_radius = prob%rho
+        solution%has_apse_radius = .true.
+        solution%has_arclength = .true.
+        solution%has_time = .true.
+    end subroutine at_the_apse
+
+    !> Which part of (0, rho] holds the root (Upsilon at R = rho/2), its unknown and
+    !! bracket: u = sqrt(rho - R) on [0, sqrt(rho/2)], or y = log R on [y_lo, log(rho/2)]
+    !! with y_lo found by stepping down; `below` when R-bar is below the binary128 range.
+    pure subroutine open_bracket(self, prob, apse_angle_rho, half, lo, hi, f_lo, f_hi, &
+                                 steps, below)
+        type(central_force_model), intent(in) :: self
+        type(endpoint_problem), intent(inout) :: prob !! gets its unknown (use_u, form)
+        real(qp), intent(in) :: apse_angle_rho, half
+        real(qp), intent(out) :: lo, hi               !! the bracket
+        real(real64), intent(out) :: f_lo, f_hi       !! residuals at its ends
+        integer, intent(out) :: steps                 !! evaluations made
+        logical, intent(out) :: below                 !! R-bar underflows
+        real(real64) :: f_half, theta_half, scaled, shift
+        integer :: probe
+        below = .false.
+        prob%use_u = .true.
+        call theta64(self, setup_at(self, prob, sqrt(prob%rho - half)), scaled, shift)
+        theta_half = scaled*exp(-shift)
+        f_half = theta_half - real(prob%psi, real64)
+        steps = 1
+        if ((f_half >= 0.0_real64) .neqv. prob%second) then
+            ! R-bar < rho/2: unknown y = log R on [y_lo, log(rho/2)]
+            prob%use_u = .false.
+            prob%form = merge(2, 1, prob%second)
+            hi = log(half)
+            f_hi = residual64(self, prob, hi)
+            lo = hi
+            do probe = 1, 40
+                lo = max(lowest_log_r, hi - 4.0_qp*2.0_qp**probe)
+                f_lo = residual64(self, prob, lo)
+                steps = steps + 1
+                if (f_lo < 0.0_real64 .or. lo == lowest_log_r) exit
+            end do
+            below = .not. f_lo < 0.0_real64
+        else
+            ! R-bar in [rho/2, rho]: unknown u = sqrt(rho - R) on [0, sqrt(rho/2)]
+            prob%form = 0
+            lo = 0.0_qp
+            hi = sqrt(prob%rho - half)
+            f_lo = real(apse_angle_rho - prob%psi, real64)
+            if (prob%rho == 1.0_qp) f_lo = -real(prob%psi, real64)
+            f_hi = f_half
+        end if
+    end subroutine open_bracket
 
 end module brachistochrone_central_force
