@@ -25,6 +25,7 @@ module brachistochrone_app_family
     use brachistochrone_run_support, only: timestamp
     use brachistochrone_strings, only: integer_text
     use brachistochrone_command_line, only: get_argument
+    use brachistochrone_app_support, only: stop_with
     implicit none
     private
 
@@ -249,8 +250,7 @@ contains
     subroutine fail(code, text)
         integer, intent(in) :: code
         character(len=*), intent(in) :: text
-        write (error_unit, '(a)') name//': '//text
-        stop code, quiet=.true.
+        call stop_with(name, code, text)
     end subroutine fail
 
     subroutine get_command_line(text)

@@ -26,6 +26,7 @@ program main
     use brachistochrone_app_family, only: run_family
     use brachistochrone_app_tunnel, only: run_tunnel
     use brachistochrone_app_merge, only: run_merge
+    use brachistochrone_app_support, only: stop_with
     implicit none
 
     type(run_options) :: options
@@ -98,8 +99,7 @@ contains
     subroutine fail(code, text)
         integer, intent(in) :: code
         character(len=*), intent(in) :: text
-        write (error_unit, '(a)') program_name//': '//text
-        stop code, quiet=.true.
+        call stop_with(program_name, code, text)
     end subroutine fail
 
 end program main

@@ -22,6 +22,7 @@ module brachistochrone_app_merge
             commit_outputs, discard_outputs, same_file, safe_ok, safe_refused, standard_output
     use brachistochrone_strings, only: integer_text, escape_text, integer_from_text, text_ok
     use brachistochrone_command_line, only: get_argument
+    use brachistochrone_app_support, only: stop_with
     implicit none
     private
 
@@ -596,8 +597,7 @@ contains
     subroutine fail(code, text)
         integer, intent(in) :: code
         character(len=*), intent(in) :: text
-        write (error_unit, '(a)') name//': '//text
-        stop code, quiet=.true.
+        call stop_with(name, code, text)
     end subroutine fail
 
 end module brachistochrone_app_merge
