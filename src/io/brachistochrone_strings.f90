@@ -45,18 +45,31 @@ contains
     pure function integer_text_default(value) result(text)
         integer, intent(in) :: value !! the integer
         character(len=:), allocatable :: text
-        character(len=24) :: buffer
-        write (buffer, '(i0)') value
-        text = trim(buffer)
+        text = integer_text_int64(int(value, int64))
     end function integer_text_default
 
     !> `integer_text` for a 64-bit integer.
     pure function integer_text_int64(value) result(text)
         integer(int64), intent(in) :: value !! the integer
         character(len=:), allocatable :: text
-        character(len=24) :: buffer
-        write (buffer, '(i0)') value
-        text = trim(buffer)
+        character(len=20) :: buffer
+        integer(int64) :: rest
+        integer :: k
+        ! digits from the right, without internal I/O (safe and fast in parallel loops);
+        ! the magnitude is taken digit by digit so that -huge - 1 works too
+        k = len(buffer) + 1
+        rest = value
+        do
+            k = k - 1
+            buffer(k:k) = achar(iachar('0') + int(abs(mod(rest, 10_int64))))
+            rest = rest/10_int64
+            if (rest == 0_int64) exit
+        end do
+        if (value < 0_int64) then
+            k = k - 1
+            buffer(k:k) = '-'
+        end if
+        text = buffer(k:)
     end function integer_text_int64
 
     !> Lowercase copy of ASCII text.
