@@ -16,8 +16,11 @@ module brachistochrone_status
               status_above_start, status_parameter_out_of_range, &
               status_rho_below_start
     public :: status_unknown_field, status_bad_exponent, status_not_supported
-    public :: status_word, status_message, argument_status, keep_first, first_failure
+    public :: status_word, status_word_fixed, status_word_length, status_message
+    public :: argument_status, keep_first, first_failure
 
+    !> Longest status word.
+    integer, parameter :: status_word_length = 24
     !> Success.
     integer, parameter :: status_ok = 0
     !> Endpoint in the sector of inaccessibility (psi >= 2 pi/3): no brachistochrone.
@@ -100,6 +103,14 @@ contains
     pure function status_word(code) result(word)
         integer, intent(in) :: code !! status code
         character(len=:), allocatable :: word
+        word = trim(status_word_fixed(code))
+    end function status_word
+
+    !> `status_word` in a fixed-length, blank-padded result (no allocation: safe in
+    !! parallel loops).
+    pure function status_word_fixed(code) result(word)
+        integer, intent(in) :: code !! status code
+        character(len=status_word_length) :: word
         select case (code)
         case (status_ok);               word = 'ok'
         case (status_inaccessible);     word = 'inaccessible'
@@ -120,7 +131,7 @@ contains
         case (status_not_supported);    word = 'not_supported'
         case default;                   word = 'unknown_status'
         end select
-    end function status_word
+    end function status_word_fixed
 
     !> One-sentence explanation of a status code, for error messages.
     pure function status_message(code) result(message)

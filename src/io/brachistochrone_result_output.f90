@@ -11,14 +11,14 @@
 module brachistochrone_result_output
     use, intrinsic :: iso_fortran_env, only: compiler_version, compiler_options
     use brachistochrone_kinds, only: qp
-    use brachistochrone_status, only: status_word, status_ok, status_inaccessible
+    use brachistochrone_status, only: status_word, status_word_fixed, status_ok, status_inaccessible
     use brachistochrone_version, only: program_name, program_version
     use brachistochrone_solution, only: endpoint_solution
     use brachistochrone_field_interface, only: brachistochrone_field
-    use brachistochrone_arches, only: arch_word
+    use brachistochrone_arches, only: arch_word, arch_word_fixed
     use brachistochrone_endpoint_input, only: endpoint_table, group_name
-    use brachistochrone_strings, only: integer_text, escape_text
-    use brachistochrone_format, only: format_quad
+    use brachistochrone_strings, only: integer_text, escape_text, put_integer
+    use brachistochrone_format, only: format_quad, write_quad
     use brachistochrone_safe_file, only: safe_file
     implicit none
     private
@@ -32,6 +32,8 @@ module brachistochrone_result_output
     character(len=*), parameter :: csv_header = 'rho,psi,arch,R,s,t,steps,status'
     !> Name of the namelist group of the namelist output.
     character(len=*), parameter :: results_group_name = 'results'
+    !> Rows formatted per parallel block of the CSV output, and room for one row.
+    integer, parameter :: format_block = 8192, csv_row_length = 256
     !> The effective input echoed into provenance lists its arrays up to this many rows.
     integer, parameter :: max_echoed_rows = 1000
 
@@ -226,9 +228,7 @@ contains
                 call csv%put('# '//provenance(k)%text)
             end do
             call csv%put(csv_header)
-            do k = first, last
-                call csv%put(csv_row(solutions(k)))
-            end do
+            call put_csv_rows(csv, solutions, first, last)
         end if
         if (nml%is_open()) then
             do k = 1, size(provenance)
@@ -247,6 +247,79 @@ contains
         end if
     end subroutine write_outputs
 
+    !> The CSV rows first..last, formatted in parallel (OpenMP threads, `format_block`
+    !! rows at a time into fixed-length lines, so memory stays bounded) and written in row
+    !! order. The formatting allocates nothing (`csv_row_into`): deferred-length strings
+    !! built concurrently corrupt the heap with gfortran 12.
+    subroutine put_csv_rows(out, solutions, first, last)
+        type(safe_file), intent(inout) :: out                    !! the output
+        type(endpoint_solution), intent(in) :: solutions(first:) !! the solutions
+        integer, intent(in) :: first, last                       !! rows to write
+        character(len=csv_row_length), allocatable :: lines(:)
+        integer, allocatable :: lengths(:)
+        integer :: block_first, block_last, k
+        allocate (lines(format_block), lengths(format_block))
+        block_first = first
+        do while (block_first <= last)
+            block_last = min(last, block_first + format_block - 1)
+            !$omp parallel do schedule(static) default(shared) private(k)
+            do k = block_first, block_last
+                call csv_row_into(solutions(k), lines(k - block_first + 1), &
+                                  lengths(k - block_first + 1))
+            end do
+            !$omp end parallel do
+            do k = 1, block_last - block_first + 1
+                call out%put(lines(k)(1:lengths(k)))
+            end do
+            block_first = block_last + 1
+        end do
+    end subroutine put_csv_rows
+
+    !> `csv_row` into a fixed-length line, without allocation: line(1:length).
+    pure subroutine csv_row_into(solution, line, length)
+        type(endpoint_solution), intent(in) :: solution !! the solved endpoint
+        character(len=*), intent(inout) :: line         !! csv_row_length long
+        integer, intent(out) :: length                  !! characters used
+        length = 0
+        call put_value(.true., solution%rho, line, length)
+        call put_value(.true., solution%psi, line, length)
+        call put_word(arch_word_fixed(solution%arch), line, length)
+        call put_value(solution%has_apse_radius, solution%apse_radius, line, length)
+        call put_value(solution%has_arclength, solution%arclength, line, length)
+        call put_value(solution%has_time, solution%time, line, length)
+        call put_integer(solution%steps, line, length)
+        call put_word(',', line, length)
+        call put_word(status_word_fixed(solution%status), line, length)
+        length = length - 1          ! no comma after the last field
+    end subroutine csv_row_into
+
+    !> A CSV field and its comma: the value's 36 digits, or nothing when it does not exist.
+    pure subroutine put_value(exists, x, line, length)
+        logical, intent(in) :: exists             !! the value exists
+        real(qp), intent(in) :: x                 !! the value
+        character(len=*), intent(inout) :: line   !! the row so far
+        integer, intent(inout) :: length          !! its length
+        integer :: used
+        if (exists) then
+            call write_quad(x, line(length + 1:), used)
+            length = length + used
+        end if
+        line(length + 1:length + 1) = ','
+        length = length + 1
+    end subroutine put_value
+
+    !> A word (trailing blanks dropped) and a comma; ',' alone is just the comma.
+    pure subroutine put_word(word, line, length)
+        character(len=*), intent(in) :: word      !! the word, blank-padded
+        character(len=*), intent(inout) :: line   !! the row so far
+        integer, intent(inout) :: length          !! its length
+        integer :: used
+        used = len_trim(word)
+        if (word == ',') used = 0
+        line(length + 1:length + used + 1) = word(1:used)//','
+        length = length + used + 1
+    end subroutine put_word
+
     !> The results as the namelist group &results (n, rho, psi, arch, r, s, t, steps,
     !! status), which `read(nml=)` gives back bit for bit: one value a line, reals with
     !! 36 significant digits (`format_real`). Where a value does not exist (R and s when
@@ -258,31 +331,19 @@ contains
         call out%put('&RESULTS')
         call out%put(' N='//integer_text(size(solutions))//',')
         call out%put(' RHO=')
-        do k = 1, size(solutions)
-            call out%put('  '//format_real(solutions(k)%rho)//',')
-        end do
+        call put_value_lines(out, solutions%rho, [(.true., k = 1, size(solutions))])
         call out%put(' PSI=')
-        do k = 1, size(solutions)
-            call out%put('  '//format_real(solutions(k)%psi)//',')
-        end do
+        call put_value_lines(out, solutions%psi, [(.true., k = 1, size(solutions))])
         call out%put(' ARCH=')
         do k = 1, size(solutions)
             call out%put('  "'//arch_word(solutions(k)%arch)//'",')
         end do
         call out%put(' R=')
-        do k = 1, size(solutions)
-            call out%put('  '//optional_real(solutions(k)%has_apse_radius, &
-                         solutions(k)%apse_radius, '0')//',')
-        end do
+        call put_value_lines(out, solutions%apse_radius, solutions%has_apse_radius)
         call out%put(' S=')
-        do k = 1, size(solutions)
-            call out%put('  '//optional_real(solutions(k)%has_arclength, &
-                         solutions(k)%arclength, '0')//',')
-        end do
+        call put_value_lines(out, solutions%arclength, solutions%has_arclength)
         call out%put(' T=')
-        do k = 1, size(solutions)
-            call out%put('  '//optional_real(solutions(k)%has_time, solutions(k)%time, '0')//',')
-        end do
+        call put_value_lines(out, solutions%time, solutions%has_time)
         call out%put(' STEPS=')
         do k = 1, size(solutions)
             call out%put('  '//integer_text(solutions(k)%steps)//',')
@@ -293,6 +354,38 @@ contains
         end do
         call out%put(' /')
     end subroutine write_results_namelist
+
+    !> One namelist value a line, `  x,` (`  0,` where it does not exist), formatted in
+    !! parallel a block at a time without allocation and written in order.
+    subroutine put_value_lines(out, values, exists)
+        type(safe_file), intent(inout) :: out  !! the output
+        real(qp), intent(in) :: values(:)      !! the values
+        logical, intent(in) :: exists(:)       !! which exist
+        character(len=csv_row_length), allocatable :: lines(:)
+        integer, allocatable :: lengths(:)
+        integer :: block_first, block_last, k, j
+        allocate (lines(format_block), lengths(format_block))
+        block_first = 1
+        do while (block_first <= size(values))
+            block_last = min(size(values), block_first + format_block - 1)
+            !$omp parallel do schedule(static) default(shared) private(k, j)
+            do k = block_first, block_last
+                j = k - block_first + 1
+                lines(j)(1:2) = '  '
+                lengths(j) = 2
+                if (exists(k)) then
+                    call put_value(.true., values(k), lines(j), lengths(j))
+                else
+                    call put_word('0', lines(j), lengths(j))
+                end if
+            end do
+            !$omp end parallel do
+            do k = 1, block_last - block_first + 1
+                call out%put(lines(k)(1:lengths(k)))
+            end do
+            block_first = block_last + 1
+        end do
+    end subroutine put_value_lines
 
     !> ` with n = ...` for fields with an exponent, '' for the others.
     pure function exponent_note(field) result(text)

@@ -15,7 +15,7 @@ module brachistochrone_strings
         module procedure integer_text_default, integer_text_int64
     end interface integer_text
 
-    public :: integer_text, lower, escape_text, real_from_text, integer_from_text
+    public :: integer_text, put_integer, lower, escape_text, real_from_text, integer_from_text
     public :: text_ok, text_malformed, text_out_of_range
 
     !> `real_from_text` / `integer_from_text` status: the text is a number of the kind.
@@ -71,6 +71,31 @@ contains
         end if
         text = buffer(k:)
     end function integer_text_int64
+
+    !> Append the decimal digits of `value` to buffer(length+1:) without allocation or
+    !! internal I/O (safe in parallel loops); `length` grows.
+    pure subroutine put_integer(value, buffer, length)
+        integer, intent(in) :: value               !! the integer
+        character(len=*), intent(inout) :: buffer  !! room for 11 more characters
+        integer, intent(inout) :: length           !! characters used so far
+        character(len=20) :: digits
+        integer(int64) :: rest
+        integer :: k
+        k = len(digits) + 1
+        rest = int(value, int64)
+        do
+            k = k - 1
+            digits(k:k) = achar(iachar('0') + int(abs(mod(rest, 10_int64))))
+            rest = rest/10_int64
+            if (rest == 0_int64) exit
+        end do
+        if (value < 0) then
+            k = k - 1
+            digits(k:k) = '-'
+        end if
+        buffer(length + 1:length + len(digits) - k + 1) = digits(k:)
+        length = length + len(digits) - k + 1
+    end subroutine put_integer
 
     !> Lowercase copy of ASCII text.
     pure function lower(text) result(lowered)

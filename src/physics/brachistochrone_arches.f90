@@ -8,8 +8,11 @@ module brachistochrone_arches
     private
 
     public :: arch_none, arch_first, arch_second, arch_complete, arch_radial, &
-              arch_inaccessible, arch_unbounded, arch_word
+              arch_inaccessible, arch_unbounded, arch_word, &
+              arch_word_fixed, arch_word_length
 
+    !> Longest arch word.
+    integer, parameter :: arch_word_length = 12
     !> No answer (bad input).
     integer, parameter :: arch_none = 0
     !> B is on the first half-arch, before the apse.
@@ -31,6 +34,14 @@ contains
     pure function arch_word(arch) result(word)
         integer, intent(in) :: arch !! arch code
         character(len=:), allocatable :: word
+        word = trim(arch_word_fixed(arch))
+    end function arch_word
+
+    !> `arch_word` in a fixed-length, blank-padded result (no allocation: safe in
+    !! parallel loops).
+    pure function arch_word_fixed(arch) result(word)
+        integer, intent(in) :: arch !! arch code
+        character(len=arch_word_length) :: word
         select case (arch)
         case (arch_first);        word = 'first'
         case (arch_second);       word = 'second'
@@ -40,6 +51,6 @@ contains
         case (arch_unbounded);    word = 'unbounded'
         case default;             word = 'none'
         end select
-    end function arch_word
+    end function arch_word_fixed
 
 end module brachistochrone_arches
