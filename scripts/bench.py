@@ -148,6 +148,11 @@ def main(argv=None):
     parser.add_argument("--scipy", type=int, default=40, help="endpoints timed with SciPy")
     parser.add_argument("--mpmath", type=int, default=3, help="endpoints timed with mpmath")
     parser.add_argument("--seed", type=int, default=2026)
+    parser.add_argument("--output-n", type=int, default=30000,
+                        help="endpoints of the output-cost runs of the batch program")
+    parser.add_argument("--million", action="store_true",
+                        help="also 1,000,000 endpoints end to end (--csv, 2 threads) and "
+                             "--check of them (about 30 s)")
     args = parser.parse_args(argv)
 
     out_dir = ROOT / "bench-out"
@@ -198,7 +203,45 @@ def main(argv=None):
                                                      "format_write_ns_per_value"))
     print(f"formatting a value to 36 digits: {fast_ns:.0f} ns (formatted write "
           f"{write_ns:.0f} ns, {write_ns / fast_ns:.1f} x slower)")
+    output_cost(out_dir, args)
+    if args.million:
+        million(out_dir)
     return 0
+
+
+def run_program(arguments, threads):
+    """Wall time and peak memory (kB) of one run of the batch program."""
+    start = time.perf_counter()
+    result = subprocess.run(["/usr/bin/time", "-f", "%M", fpm_exe("brachistochrone"),
+                             *map(str, arguments), "--no-table", "--quiet", "--force",
+                             "--threads", str(threads)], capture_output=True, text=True)
+    seconds = time.perf_counter() - start
+    if result.returncode not in (0, 2):
+        raise RuntimeError(result.stderr)
+    return seconds, int(result.stderr.strip().splitlines()[-1])
+
+
+def output_cost(out_dir, args):
+    """The batch program end to end: 1 thread solving without output against 2 threads
+    writing --csv and --nml (median of 3 runs each, same run of the script)."""
+    table = out_dir / "output.nml"
+    write_nml(table, endpoints(args.output_n, args.seed + 1))
+    alone = statistics.median(run_program([table], 1)[0] for _ in range(3))
+    both = statistics.median(run_program([table, "--csv", out_dir / "o.csv", "--nml",
+                                          out_dir / "o.nml"], 2)[0] for _ in range(3))
+    print(f"output: {args.output_n} endpoints, 1 thread solving only {alone:.2f} s, "
+          f"2 threads writing --csv and --nml {both:.2f} s; ratio {alone / both:.2f}")
+
+
+def million(out_dir):
+    """1,000,000 endpoints: read, check, solve and write the CSV on 2 threads; --check."""
+    table = out_dir / "million.nml"
+    write_nml(table, endpoints(1000000, 7))
+    seconds, kilobytes = run_program([table, "--csv", out_dir / "million.csv"], 2)
+    print(f"1,000,000 endpoints end to end (--csv, 2 threads): {seconds:.1f} s, "
+          f"{kilobytes / 1e3:.0f} MB peak ({kilobytes * 1024 / 1e6:.0f} bytes per endpoint)")
+    check = statistics.median(run_program([table, "--check"], 1)[0] for _ in range(3))
+    print(f"--check of 1,000,000 endpoints: {check:.2f} s")
 
 
 if __name__ == "__main__":
