@@ -677,10 +677,9 @@ contains
         type(repulsive_solution), allocatable, intent(out) :: solutions(:) !! by angle
         integer, intent(out) :: best       !! index of the least time (0 if none)
         integer, intent(out) :: status     !! status_ok or the reason for bad input
-        type(repulsive_curve) :: curve
         type(gauss_legendre_rule) :: rule
-        real(qp) :: target, angle_critical, angle_apse, dummy(2)
-        integer :: m, sense, n, i, stat
+        real(qp) :: target, angle_critical, angle_apse
+        integer :: m, sense, n
         logical :: mirror_distinct
         best = 0
         allocate (solutions(0))
@@ -691,15 +690,9 @@ contains
             status = status_invalid_argument
             return
         end if
-        status = status_ok
         rule = gauss_legendre(20)
-        angle_critical = 0.0_qp
-        angle_apse = 0.0_qp
-        if (rho > 1.0_qp .and. rho < 1.5_qp) then
-            call critical_values(rho, angle_critical, dummy(1), dummy(2), stat)
-            call curve_from_apse(rho, curve, stat)
-            call first_integral(curve, want_angle, rho, rule, angle_apse, stat)
-        end if
+        call branch_angles(rho, rule, angle_critical, angle_apse, status)
+        if (status /= status_ok) return
         mirror_distinct = psi > 0.0_qp .and. psi < pi
         deallocate (solutions)
         allocate (solutions(merge(2, 1, mirror_distinct)*(max_windings + 1)))
@@ -715,10 +708,67 @@ contains
                 solutions(n)%target = target
                 solutions(n)%winding = m
                 solutions(n)%clockwise = sense == 1
-                call solve_target(target, solutions(n))
+                call solve_target(rho, target, angle_critical, angle_apse, solutions(n))
             end do
         end do
-        do i = 1, n
+        best = least_time(solutions)
+    end subroutine solve_repulsive
+
+    !> For 1 < rho < 3/2, the angles at rho of the critical curve and of the curve with
+    !! its apse at rho, which split the targets among the branches (0 otherwise).
+    !! status: status_ok or the first failure of those integrals.
+    pure subroutine branch_angles(rho, rule, angle_critical, angle_apse, status)
+        real(qp), intent(in) :: rho
+        type(gauss_legendre_rule), intent(in) :: rule
+        real(qp), intent(out) :: angle_critical, angle_apse
+        integer, intent(out) :: status
+        type(repulsive_curve) :: curve
+        real(qp) :: dummy(2)
+        integer :: stat(3)
+        angle_critical = 0.0_qp
+        angle_apse = 0.0_qp
+        status = status_ok
+        if (.not. (rho > 1.0_qp .and. rho < 1.5_qp)) return
+        call critical_values(rho, angle_critical, dummy(1), dummy(2), stat(1))
+        call curve_from_apse(rho, curve, stat(2))
+        call first_integral(curve, want_angle, rho, rule, angle_apse, stat(3))
+        status = first_failure(stat)
+    end subroutine branch_angles
+
+    !> The curve from A through (rho, target): the radial path for target 0, else the
+    !! branch that holds the target (complete arches when rho = 1).
+    pure subroutine solve_target(rho, target, angle_critical, angle_apse, solution)
+        real(qp), intent(in) :: rho, target, angle_critical, angle_apse
+        type(repulsive_solution), intent(inout) :: solution
+        integer :: stat_values
+        if (target == 0.0_qp) then
+            ! psi = 0, m = 0: the radial path (K = 0); B = A when rho = 1
+            call set_from_gap(3.0_qp, solution%curve)
+            solution%arch = arch_unbounded
+            call repulsive_values(solution%curve, rho, .false., solution%angle, &
+                                  solution%arclength, solution%time, stat_values)
+            solution%status = stat_values
+        else if (rho == 1.0_qp) then
+            ! complete arches: lambda = log(3 - 2R) up to 0 (R -> 1, angle -> 0)
+            call solve_branch(rho, target, arch_second, 0.0_qp, -target, solution)
+        else if (rho >= 1.5_qp .or. target < angle_critical) then
+            call solve_branch(rho, target, arch_unbounded, log(3.0_qp), -target, solution)
+        else if (target <= angle_apse) then
+            call solve_branch(rho, target, arch_first, log(3.0_qp - 2.0_qp*rho), &
+                              angle_apse - target, solution)
+        else
+            call solve_branch(rho, target, arch_second, log(3.0_qp - 2.0_qp*rho), &
+                              angle_apse - target, solution)
+        end if
+    end subroutine solve_target
+
+    !> Index of the solved curve of least time (the first of equal times; 0 if none).
+    pure function least_time(solutions) result(best)
+        type(repulsive_solution), intent(in) :: solutions(:)
+        integer :: best
+        integer :: i
+        best = 0
+        do i = 1, size(solutions)
             if (solutions(i)%status /= status_ok) cycle
             if (best == 0) then
                 best = i
@@ -726,32 +776,6 @@ contains
                 best = i
             end if
         end do
-    contains
-        pure subroutine solve_target(target, solution)
-            real(qp), intent(in) :: target
-            type(repulsive_solution), intent(inout) :: solution
-            integer :: stat_values
-            if (target == 0.0_qp) then
-                ! psi = 0, m = 0: the radial path (K = 0); B = A when rho = 1
-                call set_from_gap(3.0_qp, solution%curve)
-                solution%arch = arch_unbounded
-                call repulsive_values(solution%curve, rho, .false., solution%angle, &
-                                      solution%arclength, solution%time, stat_values)
-                solution%status = stat_values
-            else if (rho == 1.0_qp) then
-                ! complete arches: lambda = log(3 - 2R) up to 0 (R -> 1, angle -> 0)
-                call solve_branch(rho, target, arch_second, 0.0_qp, -target, solution)
-            else if (rho >= 1.5_qp .or. target < angle_critical) then
-                call solve_branch(rho, target, arch_unbounded, log(3.0_qp), -target, &
-                                  solution)
-            else if (target <= angle_apse) then
-                call solve_branch(rho, target, arch_first, log(3.0_qp - 2.0_qp*rho), &
-                                  angle_apse - target, solution)
-            else
-                call solve_branch(rho, target, arch_second, &
-                                  log(3.0_qp - 2.0_qp*rho), angle_apse - target, solution)
-            end if
-        end subroutine solve_target
-    end subroutine solve_repulsive
+    end function least_time
 
 end module brachistochrone_repulsive
