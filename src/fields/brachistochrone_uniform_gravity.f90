@@ -192,10 +192,7 @@ contains
         integer, intent(out) :: status
         !> 2 pi - phi_B to full relative precision (0 for the complete arch)
         real(qp), intent(out), optional :: phi_deficit
-        type(steep_equation) :: steep
-        type(shallow_equation) :: shallow
-        real(qp) :: deficit, first_guess, half
-        integer :: steps
+        real(qp) :: deficit
 
         phi = 0.0_qp
         radius = 0.0_qp
@@ -229,48 +226,75 @@ contains
             time = two_pi*sqrt(radius)/sqrt(g)
             arclength = 8.0_qp*radius
         else if (x_b <= 0.5_qp*pi*y_b) then
-            ! steep: unknown phi in (0, pi], ratio r = x_B/y_B <= pi/2 (cannot overflow)
-            steep%ratio = x_b/y_b
-            if (steep%ratio > 0.0_qp) then
-                first_guess = 3.0_qp*steep%ratio*(1.0_qp - 0.3_qp*steep%ratio**2)
-                call newton_bracketed(steep, 0.0_qp, -1.0_qp, bracket_end, 1.0_qp, &
-                                      first_guess, root_tolerance, 0.0_qp, max_root_steps, &
-                                      phi, steps, status)
-                if (status /= status_ok) then
-                    phi = 0.0_qp
-                    return
-                end if
-            end if
-            deficit = two_pi - phi
-            half = 0.5_qp*phi
-            if (phi > 0.0_qp) then
-                ! halved first: y_B near huge with phi near pi must not overflow
-                radius = (0.5_qp*y_b/sin(half))/sin(half)
-            else
-                ! x_B/y_B underflowed: a is beyond the range of real(qp)
-                radius = ieee_value(radius, ieee_positive_inf)
-            end if
-            time = sqrt(2.0_qp)*(sqrt(y_b)/sqrt(g))/sinc(half)
-            arclength = y_b/cos(0.25_qp*phi)**2
+            call steep_arch(x_b, y_b, g, phi, radius, time, arclength, deficit, status)
+            if (status /= status_ok) return
         else
-            ! shallow: unknown delta = 2 pi - phi in [0, pi), w = sqrt(y_B/x_B)
-            shallow%root_ratio = sqrt(y_b)/sqrt(x_b)
-            first_guess = 2.0_qp*sqrt(pi)*shallow%root_ratio* &
-                          (1.0_qp + pi*shallow%root_ratio**2/6.0_qp)
-            call newton_bracketed(shallow, 0.0_qp, -1.0_qp, bracket_end, 1.0_qp, &
-                                  first_guess, root_tolerance, 0.0_qp, max_root_steps, &
-                                  deficit, steps, status)
-            if (status /= status_ok) then
-                deficit = 0.0_qp
-                return
-            end if
-            phi = two_pi - deficit
-            radius = x_b/(two_pi - angle_minus_sine(deficit))
-            time = phi*sqrt(radius)/sqrt(g)
-            arclength = 8.0_qp*radius*cos(0.25_qp*deficit)**2
+            call shallow_arch(x_b, y_b, g, phi, radius, time, arclength, deficit, status)
+            if (status /= status_ok) return
         end if
         if (present(phi_deficit)) phi_deficit = deficit
     end subroutine uniform_brachistochrone
+
+    !> B with x_B <= (pi/2) y_B: the unknown is phi in (0, pi], from the ratio
+    !! r = x_B/y_B <= pi/2 (which cannot overflow). On failure the outputs stay as given.
+    elemental subroutine steep_arch(x_b, y_b, g, phi, radius, time, arclength, deficit, &
+                                    status)
+        real(qp), intent(in) :: x_b, y_b, g
+        real(qp), intent(inout) :: phi, radius, time, arclength, deficit
+        integer, intent(out) :: status
+        type(steep_equation) :: steep
+        real(qp) :: first_guess, half
+        integer :: steps
+        status = status_ok
+        steep%ratio = x_b/y_b
+        if (steep%ratio > 0.0_qp) then
+            first_guess = 3.0_qp*steep%ratio*(1.0_qp - 0.3_qp*steep%ratio**2)
+            call newton_bracketed(steep, 0.0_qp, -1.0_qp, bracket_end, 1.0_qp, &
+                                  first_guess, root_tolerance, 0.0_qp, max_root_steps, &
+                                  phi, steps, status)
+            if (status /= status_ok) then
+                phi = 0.0_qp
+                return
+            end if
+        end if
+        deficit = two_pi - phi
+        half = 0.5_qp*phi
+        if (phi > 0.0_qp) then
+            ! halved first: y_B near huge with phi near pi must not overflow
+            radius = (0.5_qp*y_b/sin(half))/sin(half)
+        else
+            ! x_B/y_B underflowed: a is beyond the range of real(qp)
+            radius = ieee_value(radius, ieee_positive_inf)
+        end if
+        time = sqrt(2.0_qp)*(sqrt(y_b)/sqrt(g))/sinc(half)
+        arclength = y_b/cos(0.25_qp*phi)**2
+    end subroutine steep_arch
+
+    !> B with x_B > (pi/2) y_B: the unknown is the deficit delta = 2 pi - phi in
+    !! [0, pi), from w = sqrt(y_B/x_B). On failure the outputs stay as given.
+    elemental subroutine shallow_arch(x_b, y_b, g, phi, radius, time, arclength, deficit, &
+                                      status)
+        real(qp), intent(in) :: x_b, y_b, g
+        real(qp), intent(inout) :: phi, radius, time, arclength, deficit
+        integer, intent(out) :: status
+        type(shallow_equation) :: shallow
+        real(qp) :: first_guess
+        integer :: steps
+        shallow%root_ratio = sqrt(y_b)/sqrt(x_b)
+        first_guess = 2.0_qp*sqrt(pi)*shallow%root_ratio* &
+                      (1.0_qp + pi*shallow%root_ratio**2/6.0_qp)
+        call newton_bracketed(shallow, 0.0_qp, -1.0_qp, bracket_end, 1.0_qp, &
+                              first_guess, root_tolerance, 0.0_qp, max_root_steps, &
+                              deficit, steps, status)
+        if (status /= status_ok) then
+            deficit = 0.0_qp
+            return
+        end if
+        phi = two_pi - deficit
+        radius = x_b/(two_pi - angle_minus_sine(deficit))
+        time = phi*sqrt(radius)/sqrt(g)
+        arclength = 8.0_qp*radius*cos(0.25_qp*deficit)**2
+    end subroutine shallow_arch
 
     !> h(phi) - r and h'(phi) for the steep case: h = (phi - sin phi)/(1 - cos phi)
     !! = 2 phi R(phi)/sinc^2(phi/2) with R = (phi - sin phi)/phi^3, and
