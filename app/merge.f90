@@ -22,6 +22,7 @@ module brachistochrone_app_merge
             commit_outputs, discard_outputs, same_file, safe_ok, safe_refused, standard_output
     use brachistochrone_strings, only: integer_text, escape_text, integer_from_text, text_ok
     use brachistochrone_command_line, only: get_argument
+    use brachistochrone_result_output, only: csv_header
     use brachistochrone_app_support, only: stop_with
     implicit none
     private
@@ -29,7 +30,7 @@ module brachistochrone_app_merge
     public :: run_merge
 
     character(len=*), parameter :: name = program_name//' merge'
-    character(len=*), parameter :: csv_header = 'rho,psi,arch,R,s,t,steps,status'
+    character(len=*), parameter :: cartesian_header = 'x,y,'//csv_header(9:)
     integer, parameter :: exit_ok = 0, exit_usage = 1, exit_io = 3
     integer, parameter :: block_size = 1048576      ! bytes read at a time
     integer, parameter :: max_row_problems = 3      ! bad rows reported per slice
@@ -57,6 +58,7 @@ module brachistochrone_app_merge
         integer :: first = 0, last = 0, n = 0       ! rows first..last of n
         integer :: input_line = 0, sha_line = 0, version_line = 1, field_line = 0
         integer :: header_line = 0                  ! line number of the CSV header
+        character(len=:), allocatable :: header     ! the header (rho,psi,... or x,y,...)
         logical :: usable = .false.                 ! the comments parsed
     end type slice_info
 
@@ -173,14 +175,16 @@ contains
         else if (.not. found) then
             call add_problem(escape_text(slice%path)//': ends before the header line '// &
                              csv_header//' (truncated?)', exit_usage)
-        else if (line(reader) /= csv_header) then
+        else if (line(reader) /= csv_header .and. line(reader) /= cartesian_header) then
             call add_problem(where//integer_text(reader%line_number)//': header "'// &
-                             escape_text(line(reader))//'", expected '//csv_header, exit_usage)
+                             escape_text(line(reader))//'", expected '//csv_header//' (or '// &
+                             cartesian_header//' for uniform gravity)', exit_usage)
         else if (in_echo) then
             call add_problem(escape_text(slice%path)//': the effective input is not '// &
                              'closed by "'//echo_end//'"', exit_usage)
         else
             slice%header_line = reader%line_number
+            slice%header = line(reader)
             call check_comments(slice)
         end if
         call close_reader(reader)
@@ -361,7 +365,7 @@ contains
             if (reader%line_number < slices(k)%header_line) then
                 if (first_slice) call put_comment(k, line(reader), in_echo)
             else if (reader%line_number == slices(k)%header_line) then
-                if (first_slice) call files(1)%put(csv_header)
+                if (first_slice) call files(1)%put(slices(k)%header)
             else
                 rows = rows + 1
                 call check_row(k, reader, bad)

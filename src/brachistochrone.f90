@@ -36,6 +36,7 @@ module brachistochrone
             new_logarithmic_field
     use brachistochrone_harmonic_field, only: harmonic_field
     use brachistochrone_repulsive_field, only: repulsive_field, least_time_repulsive
+    use brachistochrone_uniform_field, only: uniform_field
     use brachistochrone_inverse_square, only: inverse_square_model, new_inverse_square_model
     use brachistochrone_two_point, only: solve_endpoint, solve_endpoint_secant
     use brachistochrone_curve, only: curve_samples, sample_endpoint_curve, &
@@ -74,7 +75,7 @@ module brachistochrone
     public :: brachistochrone_field, new_field, field_names, endpoint_solution
     public :: inverse_square_field, new_inverse_square_field, central_force_field, &
               new_power_field, new_logarithmic_field, harmonic_field, repulsive_field, &
-              least_time_repulsive
+              least_time_repulsive, uniform_field
     ! closed forms
     public :: fall_to_centre_time, apse_angle_limit, inaccessible_angle, &
               radial_fall_time, kappa_bound, radial_time, kappa_time

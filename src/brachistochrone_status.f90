@@ -175,7 +175,7 @@ contains
                       '1 and every path moves outward)'
         case (status_unknown_field)
             message = 'unknown field: give one of ''inverse_square'', ''power'', '// &
-                      '''logarithmic'', ''harmonic'', ''repulsive'''
+                      '''logarithmic'', ''harmonic'', ''repulsive'', ''uniform'''
         case (status_bad_exponent)
             message = 'the power-law exponent n of F = mu/r^n must satisfy 1 < n <= 32'
         case (status_not_supported)

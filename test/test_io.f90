@@ -6,6 +6,7 @@ module test_io
     use brachistochrone_arches, only: arch_inaccessible
     use brachistochrone_endpoint_input, only: endpoint_table, read_endpoint_file
     use brachistochrone_result_output, only: format_real, csv_row, write_results_namelist
+    use brachistochrone_harmonic_field, only: harmonic_field
     use brachistochrone_safe_file, only: safe_file, open_output, finish_output, &
                                          commit_outputs, safe_ok
     use testing, only: check, section
@@ -25,6 +26,7 @@ contains
     !> The namelist results read back with read(nml=) to the same bits.
     subroutine namelist_round_trip()
         type(endpoint_solution) :: written(4)
+        type(harmonic_field) :: polar   ! a field whose coordinates are rho, psi
         integer :: unit, ios, k
         type(safe_file) :: out(1)
         character(len=:), allocatable :: problem
@@ -46,7 +48,7 @@ contains
             written(k)%has_time = .true.
         end do
         call open_output(out(1), 'build/test_results.nml', .true., ios, problem)
-        if (ios == safe_ok) call write_results_namelist(out(1), written)
+        if (ios == safe_ok) call write_results_namelist(out(1), polar, written)
         if (ios == safe_ok) call finish_output(out(1), ios, problem)
         if (ios == safe_ok) call commit_outputs(out, ios, problem)
         call check(ios == safe_ok, 'results namelist written: '//problem)

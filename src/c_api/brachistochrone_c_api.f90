@@ -123,7 +123,7 @@ contains
         if (.not. (c_associated(rho) .and. c_associated(psi))) return
         call c_f_pointer(rho, rho_in, [n])
         call c_f_pointer(psi, psi_in, [n])
-        call prepare_field(force_name(force), real(exponent, qp), field, field_status)
+        call prepare_field(trim(force_name(force)), real(exponent, qp), field, field_status)
         count = 0
         !$omp parallel do schedule(dynamic, 16) default(shared) &
         !$omp private(i, solution, one_status) reduction(+:count)
@@ -206,7 +206,7 @@ contains
         type(endpoint_solution) :: solution
         type(named_field) :: field
         integer(c_int) :: status
-        call prepare_field(force_name(force), exponent, field, status)
+        call prepare_field(trim(force_name(force)), exponent, field, status)
         if (status == status_ok) then
             solution = solve_in_field(field, rho, psi)
         else
@@ -240,9 +240,12 @@ contains
 
     !> The NUL-terminated string at `force` (at most max_name_length characters; a
     !! longer or NULL string gives a name that is not a field's).
+    !! The result is fixed-length (blank-padded): with gfortran 12, functions returning
+    !! deferred-length strings give wrong results when threads call them at once, and
+    !! the C functions may be called from many threads.
     function force_name(force) result(name)
         type(c_ptr), intent(in) :: force
-        character(len=:), allocatable :: name
+        character(len=max_name_length) :: name
         character(kind=c_char), pointer :: chars(:)
         integer :: k
         name = '(null)'
@@ -251,7 +254,8 @@ contains
         name = ''
         do k = 1, max_name_length + 1
             if (chars(k) == c_null_char) return
-            name = name//chars(k)
+            if (k > max_name_length) exit
+            name(k:k) = chars(k)
         end do
         name = '(too long)'
     end function force_name

@@ -39,6 +39,9 @@ module brachistochrone_field_interface
         procedure :: units => default_units
         !> The exponent n of F = mu/r^n (power law), 0 for fields without one.
         procedure :: exponent => no_exponent
+        !> The name of the endpoint's coordinate k (1 or 2): `rho`, `psi` (polar, A at
+        !! radius 1), or `x`, `y` for uniform gravity; they name the outputs' columns.
+        procedure :: coordinate => polar_coordinate
         !> Words after a time that is only a bound (inaccessible endpoints).
         procedure :: bound_note => default_bound_note
         !> The paper's secant method from estimates r0, r1 (default: not supported).
@@ -78,6 +81,13 @@ contains
         real(qp) :: n
         n = 0.0_qp
     end function no_exponent
+
+    pure function polar_coordinate(self, k) result(name)
+        class(brachistochrone_field), intent(in) :: self
+        integer, intent(in) :: k   !! 1 or 2
+        character(len=:), allocatable :: name
+        name = merge('rho', 'psi', k == 1)
+    end function polar_coordinate
 
     pure function default_bound_note(self) result(text)
         class(brachistochrone_field), intent(in) :: self

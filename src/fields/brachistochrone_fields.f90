@@ -10,6 +10,7 @@ module brachistochrone_fields
             new_logarithmic_field
     use brachistochrone_harmonic_field, only: harmonic_field
     use brachistochrone_repulsive_field, only: repulsive_field
+    use brachistochrone_uniform_field, only: uniform_field
     implicit none
     private
 
@@ -17,7 +18,7 @@ module brachistochrone_fields
 
     !> The names `new_field` knows, quoted as in the namelist.
     character(len=*), parameter :: field_names = &
-        "'inverse_square', 'power', 'logarithmic', 'harmonic', 'repulsive'"
+        "'inverse_square', 'power', 'logarithmic', 'harmonic', 'repulsive', 'uniform'"
 
 contains
 
@@ -44,6 +45,8 @@ contains
             allocate (harmonic_field :: field)
         case ('repulsive')
             allocate (repulsive_field :: field)
+        case ('uniform')
+            allocate (uniform_field :: field)
         case default
             status = status_unknown_field
             allocate (field, source=new_inverse_square_field())

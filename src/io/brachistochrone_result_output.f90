@@ -61,6 +61,14 @@ contains
         text = format_quad(x)
     end function format_real
 
+    !> The CSV header of a field: `csv_header`, with the field's coordinates first (`x,y`
+    !! for uniform gravity).
+    pure function field_csv_header(field) result(header)
+        class(brachistochrone_field), intent(in) :: field !! the field solved
+        character(len=:), allocatable :: header
+        header = field%coordinate(1)//','//field%coordinate(2)//csv_header(8:)
+    end function field_csv_header
+
     !> One CSV row: `rho,psi,arch,R,s,t,steps,status`; empty fields where a value does
     !! not exist (R and s in the sector of inaccessibility).
     pure function csv_row(solution) result(line)
@@ -80,8 +88,8 @@ contains
         class(brachistochrone_field), intent(in) :: field !! the field solved
         call out%put('# Brachistochrones from A = (1, 0) under '// &
             field%description()//exponent_note(field)//', '//field%units())
-        call out%put('# row  rho, psi -> arch, steps, status; then R-bar, s, t '// &
-            '(36 significant digits)')
+        call out%put('# row  '//coordinate(field, 1)//', '//coordinate(field, 2)// &
+            ' -> arch, steps, status; then R-bar, s, t (36 significant digits)')
     end subroutine write_table_header
 
     !> One endpoint as a block, like a row of Tee's Table 1.
@@ -91,8 +99,9 @@ contains
         integer, intent(in) :: row                      !! row number in the input
         type(endpoint_solution), intent(in) :: solution !! the solved endpoint
         call out%put('')
-        call out%put(integer_text(row)//'  rho = '//short_real(solution%rho)// &
-            '  psi = '//short_real(solution%psi)//'  ->  '//arch_word(solution%arch)// &
+        call out%put(integer_text(row)//'  '//coordinate(field, 1)//' = '// &
+            short_real(solution%rho)//'  '//coordinate(field, 2)//' = '// &
+            short_real(solution%psi)//'  ->  '//arch_word(solution%arch)// &
             ', steps = '//integer_text(solution%steps)//', '//status_word(solution%status))
         if (solution%has_apse_radius) call out%put('    R-bar = '// &
             format_real(solution%apse_radius))
@@ -170,15 +179,16 @@ contains
         call put('  force = '''//field%name()//'''')
         if (field%exponent() /= 0.0_qp) call put('  exponent = '//format_real(field%exponent()))
         if (.not. echo) then
-            call put('  ! rho, psi, r0, r1: '//integer_text(rows)//' rows, more than '// &
+            call put('  ! '//coordinate(field, 1)//', '//coordinate(field, 2)// &
+                     ', r0, r1: '//integer_text(rows)//' rows, more than '// &
                      integer_text(max_echoed_rows)//' are not echoed; the rows of this '// &
-                     'file carry rho and psi')
+                     'file carry '//coordinate(field, 1)//' and '//coordinate(field, 2))
         else
-            call put('  rho =')
+            call put('  '//coordinate(field, 1)//' =')
             do i = first, last
                 call put('    '//format_real(table%rho(i))//',')
             end do
-            call put('  psi =')
+            call put('  '//coordinate(field, 2)//' =')
             do i = first, last
                 call put('    '//format_real(table%psi(i))//',')
             end do
@@ -227,14 +237,14 @@ contains
             do k = 1, size(provenance)
                 call csv%put('# '//provenance(k)%text)
             end do
-            call csv%put(csv_header)
+            call csv%put(field_csv_header(field))
             call put_csv_rows(csv, solutions, first, last)
         end if
         if (nml%is_open()) then
             do k = 1, size(provenance)
                 call nml%put('! '//provenance(k)%text)
             end do
-            call write_results_namelist(nml, solutions)
+            call write_results_namelist(nml, field, solutions)
         end if
         if (text%is_open()) then
             do k = 1, size(provenance)
@@ -324,15 +334,16 @@ contains
     !! status), which `read(nml=)` gives back bit for bit: one value a line, reals with
     !! 36 significant digits (`format_real`). Where a value does not exist (R and s when
     !! inaccessible) it is written as 0; `status` and `arch` say so.
-    subroutine write_results_namelist(out, solutions)
+    subroutine write_results_namelist(out, field, solutions)
         type(safe_file), intent(inout) :: out               !! the output
+        class(brachistochrone_field), intent(in) :: field   !! the field solved (names)
         type(endpoint_solution), intent(in) :: solutions(:) !! solved endpoints
         integer :: k
         call out%put('&RESULTS')
         call out%put(' N='//integer_text(size(solutions))//',')
-        call out%put(' RHO=')
+        call out%put(' '//upper(coordinate(field, 1))//'=')
         call put_value_lines(out, solutions%rho, [(.true., k = 1, size(solutions))])
-        call out%put(' PSI=')
+        call out%put(' '//upper(coordinate(field, 2))//'=')
         call put_value_lines(out, solutions%psi, [(.true., k = 1, size(solutions))])
         call out%put(' ARCH=')
         do k = 1, size(solutions)
@@ -386,6 +397,26 @@ contains
             block_first = block_last + 1
         end do
     end subroutine put_value_lines
+
+    !> Name of the field's coordinate k (1 or 2): rho, psi or x, y.
+    pure function coordinate(field, k) result(name)
+        class(brachistochrone_field), intent(in) :: field !! the field
+        integer, intent(in) :: k                          !! which coordinate
+        character(len=:), allocatable :: name
+        name = field%coordinate(k)
+    end function coordinate
+
+    !> Uppercase copy of ASCII letters.
+    pure function upper(text) result(raised)
+        character(len=*), intent(in) :: text
+        character(len=len(text)) :: raised
+        integer :: k
+        raised = text
+        do k = 1, len(text)
+            if (text(k:k) >= 'a' .and. text(k:k) <= 'z') &
+                raised(k:k) = achar(iachar(text(k:k)) - 32)
+        end do
+    end function upper
 
     !> ` with n = ...` for fields with an exponent, '' for the others.
     pure function exponent_note(field) result(text)
