@@ -7,8 +7,10 @@
  * An endpoint B = (rho, psi): radius rho and angle psi (radians) from OA.
  *
  * force: "inverse_square" (0 < rho <= 1, the fast path), "power" (F = mu/r^n with
- * n = exponent > 1), "logarithmic" (F = mu/r), "harmonic" (inside a uniform planet,
- * Saitoh), "repulsive" (F = -mu/r^2, rho >= 1; the least-time brachistochrone).
+ * n = exponent, 1 < n <= 32), "logarithmic" (F = mu/r), "harmonic" (inside a uniform planet,
+ * Saitoh), "repulsive" (F = -mu/r^2, rho >= 1; the least-time brachistochrone),
+ * "uniform" (uniform gravity g = 1: rho and psi are then the Cartesian x >= 0 across
+ * and y >= 0 down from A, and apse_radius is the cycloid's rolling-circle radius).
  * exponent is used by "power" only (pass 0 otherwise).
  *
  * Results: apse_radius = R-bar (the minimum radius of the curve), arclength = s and

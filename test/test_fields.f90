@@ -8,6 +8,7 @@ module test_fields
             repulsive_radial_time, radial_time, kappa_time, status_ok, status_inaccessible, &
             status_unknown_field, status_bad_exponent, status_not_supported, &
             status_rho_below_start, status_rho_out_of_range, status_not_finite, &
+            status_above_start, &
             arch_first, arch_second, arch_complete, arch_radial, arch_unbounded, &
             arch_inaccessible, status_word, arch_word
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
@@ -17,8 +18,8 @@ module test_fields
 
     public :: run_field_tests
 
-    character(len=*), parameter :: names(5) = [character(len=14) :: 'inverse_square', &
-        'power', 'logarithmic', 'harmonic', 'repulsive']
+    character(len=*), parameter :: names(6) = [character(len=14) :: 'inverse_square', &
+        'power', 'logarithmic', 'harmonic', 'repulsive', 'uniform']
 
 contains
 
@@ -27,6 +28,7 @@ contains
         call inverse_square_table1()
         call harmonic_closed_forms()
         call repulsive_least_time()
+        call uniform_cycloids()
         call what_fields_support()
     end subroutine run_field_tests
 
@@ -155,6 +157,35 @@ contains
         call check(b%status == status_not_finite, 'rho = NaN: status_not_finite')
     end subroutine repulsive_least_time
 
+    !> Uniform gravity (g = 1): the cycloid x = a (phi - sin phi), y = a (1 - cos phi)
+    !! with t = phi sqrt(a), s = 8 a sin^2(phi/4): its lowest point (pi a, 2a), the
+    !! complete arch (2 pi a, 0), free fall (0, y): t = sqrt(2y).
+    subroutine uniform_cycloids()
+        class(brachistochrone_field), allocatable :: field
+        type(endpoint_solution) :: b
+        integer :: status
+        call section('fields: uniform gravity, the cycloid through B = (x, y)')
+        call new_field('uniform', 0.0_qp, field, status)
+        call check(field%coordinate(1) == 'x' .and. field%coordinate(2) == 'y', &
+                   'coordinates named x, y')
+        b = field%solve(3.0_qp*pi, 6.0_qp)
+        call check(b%status == status_ok .and. any(b%arch == [arch_first, arch_second]), &
+                   'lowest point of a = 3: solved')
+        call check_close(b%apse_radius, 3.0_qp, 4.0_qp, 'lowest point: a = 3')
+        call check_close(b%time, pi*sqrt(3.0_qp), 4.0_qp, 'lowest point: t = pi sqrt(a)')
+        call check_close(b%arclength, 12.0_qp, 4.0_qp, 'lowest point: s = 4 a')
+        b = field%solve(2.0_qp*pi, 0.0_qp)
+        call check(b%arch == arch_complete, 'level with A: the complete arch')
+        call check_close(b%apse_radius, 1.0_qp, 4.0_qp, 'complete arch: a = x/(2 pi)')
+        call check_close(b%time, 2.0_qp*pi, 4.0_qp, 'complete arch: t = 2 pi sqrt(a)')
+        call check_close(b%arclength, 8.0_qp, 4.0_qp, 'complete arch: s = 8 a')
+        b = field%solve(0.0_qp, 0.5_qp)
+        call check(b%arch == arch_radial, 'x = 0: free fall')
+        call check_close(b%time, 1.0_qp, 2.0_qp, 'free fall from y = 1/2: t = sqrt(2y) = 1')
+        b = field%solve(1.0_qp, -1.0_qp)
+        call check(b%status == status_above_start, 'y < 0: status_above_start')
+    end subroutine uniform_cycloids
+
     !> Curves are sampled by the inverse-square field; the others say they cannot.
     subroutine what_fields_support()
         class(brachistochrone_field), allocatable :: field
@@ -165,6 +196,7 @@ contains
         do k = 1, size(names)
             call new_field(trim(names(k)), 3.0_qp, field, status)
             b = field%solve(merge(2.0_qp, 0.5_qp, names(k) == 'repulsive'), 0.3_qp)
+            if (names(k) == 'uniform') cycle
             c = field%sample_curve(b, 11)
             if (names(k) == 'inverse_square') then
                 call check(c%n == 11 .and. c%status == status_ok, 'inverse square: 11 points')

@@ -127,7 +127,7 @@ contains
                    > 0, 'in line order')
         text = '&endpoints n = 1, rho = 0.5, psi = 1'//nl
         do k = 1, 40000
-            text = text//' x = 1'//nl
+            text = text//' q = 1'//nl
         end do
         t = table_of(text//'/')
         call check(t%problems == 40000 .and. size(t%errors) == 101 .and. &

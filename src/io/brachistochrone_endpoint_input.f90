@@ -57,7 +57,7 @@ module brachistochrone_endpoint_input
     character(len=*), parameter :: group_name = 'endpoints'
     !> Its variables (the names of `variables`, in messages).
     character(len=*), parameter :: variable_names = &
-        'n, rho, psi, r0, r1, secant_tolerance, curve_points, force, exponent'
+        'n, rho, psi, r0, r1, x, y, secant_tolerance, curve_points, force, exponent'
     !> The force fields `force` may name.
     character(len=*), parameter :: force_names = field_names
     !> Most points per curve (`curve_points`); the fewest is 2 (A and B).
@@ -100,6 +100,12 @@ module brachistochrone_endpoint_input
                       'use 2*pi - psi for an angle beyond pi)'), &
         variable_rule('r0', kind_real, .true., .false., 'r0 = 0.2, 0.4'), &
         variable_rule('r1', kind_real, .true., .false., 'r1 = 0.1, 0.2'), &
+        variable_rule('x', kind_real, .true., .false., 'x = 1.0, 3.14159', low=0.0_qp, &
+                      rule='must satisfy x >= 0 (force = ''uniform'': the horizontal '// &
+                      'distance of B from A)'), &
+        variable_rule('y', kind_real, .true., .false., 'y = 0.5, 2.0', low=0.0_qp, &
+                      rule='must satisfy y >= 0 (force = ''uniform'': the depth of B '// &
+                      'below A, y downward)'), &
         variable_rule('secant_tolerance', kind_real, .false., .false., &
                       'secant_tolerance = 1e-16', low=0.0_qp, low_open=.true., &
                       default=1.0e-16_qp, rule='must be a positive number, for example 1e-16'), &
@@ -215,7 +221,7 @@ contains
         type(group_scan) :: scan
         type(problem_list) :: problems
         type(scalar_values) :: s
-        type(row_values) :: rows(4)
+        type(row_values) :: rows(6)
         integer, allocatable :: variable_of(:)
         integer :: k
 
@@ -235,7 +241,7 @@ contains
                 call read_rows(text, scan, variable_of, k + 1, s, problems, rows(k))
             end do
             call check_counts(scan, s, rows, problems)
-            call check_force(scan, variable_of, s, rows(3), problems)
+            call check_force(scan, variable_of, s, rows, problems)
         end if
         call report(problems, shown_path(path), table)
         if (table%problems == 0 .and. s%have_n) call fill_table(s, rows, table)
@@ -587,10 +593,10 @@ contains
         do k = 1, size(rows)
             where = 'group &'//group_name//', variable '//trim(variables(k + 1)%name)
             if (.not. rows(k)%given) then
-                if (variables(k + 1)%required) call problems%add(scan%line, where// &
+                if (required_rows(k + 1, s)) call problems%add(scan%line, where// &
                     ': is missing; give n values, for example  '// &
                     trim(variables(k + 1)%example))
-            else if (variables(k + 1)%required .and. s%have_n .and. .not. rows(k)%broken) then
+            else if (required_rows(k + 1, s) .and. s%have_n .and. .not. rows(k)%broken) then
                 if (rows(k)%rows > 0) then
                     set = count(rows(k)%at(:min(rows(k)%rows, s%n)) /= 0)
                 else
@@ -618,6 +624,23 @@ contains
         end do
     end subroutine check_counts
 
+    !> The per-row variable v must be given: rho and psi for every field but 'uniform',
+    !! x and y for 'uniform' (while the field is unknown, as the table says).
+    pure logical function required_rows(v, s)
+        integer, intent(in) :: v
+        type(scalar_values), intent(in) :: s
+        logical :: uniform
+        uniform = s%force_ok .and. s%force == 'uniform'
+        select case (trim(variables(v)%name))
+        case ('rho', 'psi')
+            required_rows = .not. uniform
+        case ('x', 'y')
+            required_rows = uniform
+        case default
+            required_rows = variables(v)%required
+        end select
+    end function required_rows
+
     pure logical function row_set(r, i)
         type(row_values), intent(in) :: r
         integer, intent(in) :: i
@@ -627,11 +650,11 @@ contains
 
     !> The field and what goes with it: exponent only (and always) with 'power', the
     !! paper's secant method and curves only with 'inverse_square' (its fast path).
-    subroutine check_force(scan, variable_of, s, r0, problems)
+    subroutine check_force(scan, variable_of, s, rows, problems)
         type(group_scan), intent(in) :: scan
         integer, intent(in) :: variable_of(:)
         type(scalar_values), intent(in) :: s
-        type(row_values), intent(in) :: r0
+        type(row_values), intent(in) :: rows(:)       !! rho, psi, r0, r1, x, y
         type(problem_list), intent(inout) :: problems
         character(len=:), allocatable :: where
         integer :: line
@@ -648,13 +671,40 @@ contains
             call problems%add(line_of(scan, variable_of, index_of('exponent')), where// &
                               ', variable exponent: applies to force = ''power'' only')
         end if
+        call check_coordinates(s, rows, problems)
         if (s%force /= 'inverse_square') then
-            if (r0%count > 0) call problems%add(line, where//': r0, r1 (the paper''s '// &
+            if (rows(3)%count > 0) call problems%add(line, where//': r0, r1 (the paper''s '// &
                 'secant method) apply to force = ''inverse_square'' only; leave them out')
             if (s%value(index_of('curve_points')) /= 0.0_qp) call problems%add(line, &
                 where//': curve_points: curves are sampled for force = ''inverse_square'' only')
         end if
     end subroutine check_force
+
+    !> Cartesian x, y with force = 'uniform' only, and rho, psi with every other field:
+    !! the coordinates are never read as each other.
+    subroutine check_coordinates(s, rows, problems)
+        type(scalar_values), intent(in) :: s
+        type(row_values), intent(in) :: rows(:)       !! rho, psi, r0, r1, x, y
+        type(problem_list), intent(inout) :: problems
+        integer :: k
+        logical :: uniform
+        uniform = s%force == 'uniform'
+        do k = 1, size(rows)
+            if (.not. rows(k)%given) cycle
+            select case (trim(variables(k + 1)%name))
+            case ('rho', 'psi')
+                if (uniform) call problems%add(rows(k)%line, 'group &'//group_name// &
+                    ', variable '//trim(variables(k + 1)%name)//': force = ''uniform'' '// &
+                    'takes Cartesian endpoints: give x (across) and y (down from A), '// &
+                    'not rho and psi')
+            case ('x', 'y')
+                if (.not. uniform) call problems%add(rows(k)%line, 'group &'// &
+                    group_name//', variable '//trim(variables(k + 1)%name)//': x and y '// &
+                    'are the endpoints of force = ''uniform'' only; this field takes rho '// &
+                    'and psi')
+            end select
+        end do
+    end subroutine check_coordinates
 
     !> Line of the first assignment of variable v (0 if none).
     pure integer function line_of(scan, variable_of, v)
@@ -686,8 +736,14 @@ contains
             return
         end if
         table%n = n
-        table%rho = rows(1)%x(1:n)
-        table%psi = rows(2)%x(1:n)
+        if (s%force == 'uniform') then
+            ! the field's coordinates x, y (the outputs name them so)
+            table%rho = rows(5)%x(1:n)
+            table%psi = rows(6)%x(1:n)
+        else
+            table%rho = rows(1)%x(1:n)
+            table%psi = rows(2)%x(1:n)
+        end if
         do i = 1, n
             table%has_estimates(i) = row_set(rows(3), i)
             table%r0(i) = 0.0_qp

@@ -93,3 +93,50 @@ def test_repulsive_field_end_to_end(run, tmp_path):
     assert rows[2]["arch"] == "unbounded" and rows[2]["R"] == ""
     result, rows = solve(run, tmp_path, ["0.5"], ["1.0"], "force = 'repulsive'")
     assert result.returncode == 1 and "rho >= 1" in result.stderr
+
+
+def test_uniform_gravity_batch_against_the_cycloid(run, tmp_path):
+    """force = 'uniform' with Cartesian x, y (B below A, y downward, g = 1): the
+    rolling-circle radius a, s and t against the cycloid solved with mpmath at 50
+    digits (x = a (phi - sin phi), y = a (1 - cos phi), t = phi sqrt(a),
+    s = 8 a sin^2(phi/4)); the inputs are dyadic, so exact in binary128."""
+    points = [("1", "1"), ("2", "0.5"), ("0.25", "3"), ("10", "0.125"), ("3", "3"),
+              ("0.0078125", "1"), ("64", "1")]
+    nml = tmp_path / "u.nml"
+    nml.write_text("&endpoints n = %d, force = 'uniform', x = %s, y = %s /\n" % (
+        len(points), ", ".join(x for x, _ in points), ", ".join(y for _, y in points)))
+    out = tmp_path / "u.csv"
+    result = run(nml, "--csv", out, "--no-table")
+    assert result.returncode == 0, result.stderr
+    comments, header, rows = read_csv(out)
+    assert header == "x,y,arch,R,s,t,steps,status"
+    assert any(line.startswith("# field: uniform") for line in comments)
+    with mp.workdps(50):
+        for (xs, ys), row in zip(points, rows):
+            x, y = mp.mpf(xs), mp.mpf(ys)
+            # (phi - sin phi)/(1 - cos phi) increases from 0 to infinity on (0, 2 pi):
+            # bisection to far below 1e-40
+            lo, hi = mp.mpf(0), 2 * mp.pi
+            for _ in range(180):
+                mid = (lo + hi) / 2
+                if (mid - mp.sin(mid)) * y < (1 - mp.cos(mid)) * x:
+                    lo = mid
+                else:
+                    hi = mid
+            phi = (lo + hi) / 2
+            a = y / (1 - mp.cos(phi))
+            expected = {"R": a, "t": phi * mp.sqrt(a), "s": 8 * a * mp.sin(phi / 4) ** 2}
+            assert row["arch"] == ("first" if phi <= mp.pi else "second")
+            for key, value in expected.items():
+                assert abs(mp.mpf(row[key]) / value - 1) < mp.mpf("1e-32"), (xs, ys, key)
+
+
+def test_uniform_gravity_takes_x_y_only(run, tmp_path):
+    nml = tmp_path / "bad.nml"
+    nml.write_text("&endpoints n = 1, force = 'uniform', rho = 0.5, psi = 1 /\n")
+    result = run(nml, "--check")
+    assert result.returncode == 1
+    assert "give x (across) and y (down from A), not rho and psi" in result.stderr
+    nml.write_text("&endpoints n = 1, rho = 0.5, psi = 1, x = 1, y = 1 /\n")
+    result = run(nml, "--check")
+    assert result.returncode == 1 and "force = 'uniform' only" in result.stderr
