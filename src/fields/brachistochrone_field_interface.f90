@@ -42,6 +42,8 @@ module brachistochrone_field_interface
         !> The name of the endpoint's coordinate k (1 or 2): `rho`, `psi` (polar, A at
         !! radius 1), or `x`, `y` for uniform gravity; they name the outputs' columns.
         procedure :: coordinate => polar_coordinate
+        !> The start A in the field's coordinates: `(1, 0)` (polar), `(0, 0)` (uniform).
+        procedure :: start => polar_start
         !> Words after a time that is only a bound (inaccessible endpoints).
         procedure :: bound_note => default_bound_note
         !> The paper's secant method from estimates r0, r1 (default: not supported).
@@ -88,6 +90,12 @@ contains
         character(len=:), allocatable :: name
         name = merge('rho', 'psi', k == 1)
     end function polar_coordinate
+
+    pure function polar_start(self) result(text)
+        class(brachistochrone_field), intent(in) :: self
+        character(len=:), allocatable :: text
+        text = '(1, 0)'
+    end function polar_start
 
     pure function default_bound_note(self) result(text)
         class(brachistochrone_field), intent(in) :: self

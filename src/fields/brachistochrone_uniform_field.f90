@@ -28,6 +28,7 @@ module brachistochrone_uniform_field
         procedure :: region => uniform_region
         procedure :: units => uniform_units
         procedure :: coordinate => cartesian_coordinate
+        procedure :: start => origin
     end type uniform_field
 
 contains
@@ -86,6 +87,12 @@ contains
         character(len=:), allocatable :: text
         text = 'units g = 1 (any length unit; time in units of sqrt(length/g))'
     end function uniform_units
+
+    pure function origin(self) result(text)
+        class(uniform_field), intent(in) :: self
+        character(len=:), allocatable :: text
+        text = '(0, 0)'
+    end function origin
 
     pure function cartesian_coordinate(self, k) result(name)
         class(uniform_field), intent(in) :: self

@@ -86,7 +86,7 @@ contains
     subroutine write_table_header(out, field)
         type(safe_file), intent(inout) :: out             !! the output
         class(brachistochrone_field), intent(in) :: field !! the field solved
-        call out%put('# Brachistochrones from A = (1, 0) under '// &
+        call out%put('# Brachistochrones from A = '//field%start()//' under '// &
             field%description()//exponent_note(field)//', '//field%units())
         call out%put('# row  '//coordinate(field, 1)//', '//coordinate(field, 2)// &
             ' -> arch, steps, status; then R-bar, s, t (36 significant digits)')
