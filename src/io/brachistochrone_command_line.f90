@@ -242,7 +242,9 @@ contains
             'force names (Tee 1998):'
         write (unit, '(a)') '  '//field_names//';'
         write (unit, '(a)') '  default ''inverse_square'' (attractive, F = mu/r^2); '// &
-            '''power'' needs exponent = n > 1.'
+            '''power'' needs exponent = n, 1 < n <= 32;'
+        write (unit, '(a)') '  ''uniform'' (gravity g = 1) takes Cartesian x, y (down from A) '// &
+            'instead of rho, psi.'
         write (unit, '(a)') 'Prints a table; every output names the field it solved.'
         write (unit, '(a)') '  --csv OUT.csv       write rho,psi,arch,R,s,t,steps,status '// &
             '(OUT = - : stdout)'
