@@ -32,8 +32,11 @@ module brachistochrone_result_output
     character(len=*), parameter :: csv_header = 'rho,psi,arch,R,s,t,steps,status'
     !> Name of the namelist group of the namelist output.
     character(len=*), parameter :: results_group_name = 'results'
-    !> Rows formatted per parallel block of the CSV output, and room for one row.
+    !> Lines formatted per parallel block of an output, and room for one line.
     integer, parameter :: format_block = 8192, csv_row_length = 256
+    !> What `put_lines` writes: CSV rows, or the namelist values of one variable.
+    integer, parameter :: csv_rows = 0, value_rho = 1, value_psi = 2, &
+                          value_apse_radius = 3, value_arclength = 4, value_time = 5
     !> The effective input echoed into provenance lists its arrays up to this many rows.
     integer, parameter :: max_echoed_rows = 1000
 
@@ -238,7 +241,7 @@ contains
                 call csv%put('# '//provenance(k)%text)
             end do
             call csv%put(field_csv_header(field))
-            call put_csv_rows(csv, solutions, first, last)
+            call put_lines(csv, solutions(first:last), csv_rows)
         end if
         if (nml%is_open()) then
             do k = 1, size(provenance)
@@ -257,25 +260,26 @@ contains
         end if
     end subroutine write_outputs
 
-    !> The CSV rows first..last, formatted in parallel (OpenMP threads, `format_block`
-    !! rows at a time into fixed-length lines, so memory stays bounded) and written in row
-    !! order. The formatting allocates nothing (`csv_row_into`): deferred-length strings
-    !! built concurrently corrupt the heap with gfortran 12.
-    subroutine put_csv_rows(out, solutions, first, last)
-        type(safe_file), intent(inout) :: out                    !! the output
-        type(endpoint_solution), intent(in) :: solutions(first:) !! the solutions
-        integer, intent(in) :: first, last                       !! rows to write
+    !> One line per solution, formatted by the OpenMP threads `format_block` lines at a
+    !! time into fixed-length lines and written in order: the CSV rows (`csv_rows`) or
+    !! one namelist value per line (`value_rho` ... `value_time`). The formatting
+    !! allocates nothing: deferred-length strings built concurrently give wrong results
+    !! with gfortran 12.
+    subroutine put_lines(out, solutions, column)
+        type(safe_file), intent(inout) :: out                !! the output
+        type(endpoint_solution), intent(in) :: solutions(:)  !! the solutions
+        integer, intent(in) :: column                        !! what each line holds
         character(len=csv_row_length), allocatable :: lines(:)
         integer, allocatable :: lengths(:)
         integer :: block_first, block_last, k
         allocate (lines(format_block), lengths(format_block))
-        block_first = first
-        do while (block_first <= last)
-            block_last = min(last, block_first + format_block - 1)
+        block_first = 1
+        do while (block_first <= size(solutions))
+            block_last = min(size(solutions), block_first + format_block - 1)
             !$omp parallel do schedule(static) default(shared) private(k)
             do k = block_first, block_last
-                call csv_row_into(solutions(k), lines(k - block_first + 1), &
-                                  lengths(k - block_first + 1))
+                call format_line(solutions(k), column, lines(k - block_first + 1), &
+                                 lengths(k - block_first + 1))
             end do
             !$omp end parallel do
             do k = 1, block_last - block_first + 1
@@ -283,7 +287,34 @@ contains
             end do
             block_first = block_last + 1
         end do
-    end subroutine put_csv_rows
+    end subroutine put_lines
+
+    !> The line `column` of one solution: its CSV row, or `  x,` for one namelist value
+    !! (`  0,` where the value does not exist).
+    pure subroutine format_line(solution, column, line, length)
+        type(endpoint_solution), intent(in) :: solution !! the solved endpoint
+        integer, intent(in) :: column                   !! csv_rows or value_*
+        character(len=*), intent(inout) :: line         !! csv_row_length long
+        integer, intent(out) :: length                  !! characters used
+        if (column == csv_rows) then
+            call csv_row_into(solution, line, length)
+            return
+        end if
+        line(1:2) = '  '
+        length = 2
+        select case (column)
+        case (value_rho)
+            call put_value(.true., solution%rho, line, length)
+        case (value_psi)
+            call put_value(.true., solution%psi, line, length)
+        case (value_apse_radius)
+            call put_present(solution%has_apse_radius, solution%apse_radius, line, length)
+        case (value_arclength)
+            call put_present(solution%has_arclength, solution%arclength, line, length)
+        case default
+            call put_present(solution%has_time, solution%time, line, length)
+        end select
+    end subroutine format_line
 
     !> `csv_row` into a fixed-length line, without allocation: line(1:length).
     pure subroutine csv_row_into(solution, line, length)
@@ -318,6 +349,19 @@ contains
         length = length + 1
     end subroutine put_value
 
+    !> A namelist value and its comma: the value, or 0 where it does not exist.
+    pure subroutine put_present(exists, x, line, length)
+        logical, intent(in) :: exists             !! the value exists
+        real(qp), intent(in) :: x                 !! the value
+        character(len=*), intent(inout) :: line   !! the line so far
+        integer, intent(inout) :: length          !! its length
+        if (exists) then
+            call put_value(.true., x, line, length)
+        else
+            call put_word('0', line, length)
+        end if
+    end subroutine put_present
+
     !> A word (trailing blanks dropped) and a comma; ',' alone is just the comma.
     pure subroutine put_word(word, line, length)
         character(len=*), intent(in) :: word      !! the word, blank-padded
@@ -342,19 +386,19 @@ contains
         call out%put('&RESULTS')
         call out%put(' N='//integer_text(size(solutions))//',')
         call out%put(' '//upper(coordinate(field, 1))//'=')
-        call put_value_lines(out, solutions%rho, [(.true., k = 1, size(solutions))])
+        call put_lines(out, solutions, value_rho)
         call out%put(' '//upper(coordinate(field, 2))//'=')
-        call put_value_lines(out, solutions%psi, [(.true., k = 1, size(solutions))])
+        call put_lines(out, solutions, value_psi)
         call out%put(' ARCH=')
         do k = 1, size(solutions)
             call out%put('  "'//arch_word(solutions(k)%arch)//'",')
         end do
         call out%put(' R=')
-        call put_value_lines(out, solutions%apse_radius, solutions%has_apse_radius)
+        call put_lines(out, solutions, value_apse_radius)
         call out%put(' S=')
-        call put_value_lines(out, solutions%arclength, solutions%has_arclength)
+        call put_lines(out, solutions, value_arclength)
         call out%put(' T=')
-        call put_value_lines(out, solutions%time, solutions%has_time)
+        call put_lines(out, solutions, value_time)
         call out%put(' STEPS=')
         do k = 1, size(solutions)
             call out%put('  '//integer_text(solutions(k)%steps)//',')
@@ -366,37 +410,6 @@ contains
         call out%put(' /')
     end subroutine write_results_namelist
 
-    !> One namelist value a line, `  x,` (`  0,` where it does not exist), formatted in
-    !! parallel a block at a time without allocation and written in order.
-    subroutine put_value_lines(out, values, exists)
-        type(safe_file), intent(inout) :: out  !! the output
-        real(qp), intent(in) :: values(:)      !! the values
-        logical, intent(in) :: exists(:)       !! which exist
-        character(len=csv_row_length), allocatable :: lines(:)
-        integer, allocatable :: lengths(:)
-        integer :: block_first, block_last, k, j
-        allocate (lines(format_block), lengths(format_block))
-        block_first = 1
-        do while (block_first <= size(values))
-            block_last = min(size(values), block_first + format_block - 1)
-            !$omp parallel do schedule(static) default(shared) private(k, j)
-            do k = block_first, block_last
-                j = k - block_first + 1
-                lines(j)(1:2) = '  '
-                lengths(j) = 2
-                if (exists(k)) then
-                    call put_value(.true., values(k), lines(j), lengths(j))
-                else
-                    call put_word('0', lines(j), lengths(j))
-                end if
-            end do
-            !$omp end parallel do
-            do k = 1, block_last - block_first + 1
-                call out%put(lines(k)(1:lengths(k)))
-            end do
-            block_first = block_last + 1
-        end do
-    end subroutine put_value_lines
 
     !> Name of the field's coordinate k (1 or 2): rho, psi or x, y.
     pure function coordinate(field, k) result(name)
