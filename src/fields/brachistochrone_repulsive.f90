@@ -100,7 +100,8 @@ module brachistochrone_repulsive
     real(qp), parameter :: stretch = 64.0_qp, xi_stretch = asinh(stretch)
     integer, parameter :: want_angle = 1, want_length = 2, want_time = 3
     integer, parameter :: piece_start = 1, piece_below = 2, piece_above = 3, &
-                          piece_far = 4, piece_arch = 5, piece_apse = 6
+                          piece_far = 4, piece_arch = 5, piece_apse = 6, &
+                          piece_arch_start = 7
 
     !> One brachistochrone from A, by its parameter. Build it with a `curve_from_*`.
     type :: repulsive_curve
@@ -356,6 +357,16 @@ contains
                 point = 1.0_qp + xm1
                 w = (self%d + rmx)*(point + self%p)
                 jac = 1.0_qp
+            else if (self%piece == piece_arch_start) then
+                ! the same in mu = pi - nu (next to the start, where cos(nu/2) would lose
+                ! its relative accuracy): sin(nu/2) = cos(mu/2), cos(nu/2) = sin(mu/2)
+                sn = cos(0.5_qp*x)
+                cs = sin(0.5_qp*x)
+                rmx = self%rm1*sn*sn
+                xm1 = self%rm1*cs*cs
+                point = 1.0_qp + xm1
+                w = (self%d + rmx)*(point + self%p)
+                jac = 1.0_qp
             else
                 sn = sqrt(self%d/self%rm1)*sinh(x)
                 cs = sqrt((1.0_qp - sn)*(1.0_qp + sn))
@@ -433,6 +444,11 @@ contains
                 call add_piece(f, piece_apse, asinh(sqrt(r_gap/f%d)), xi_mid, rule, value, &
                                status)
                 call add_piece(f, piece_arch, nu_mid, pi, rule, value, status)
+            else if (nu_r > 0.5_qp*pi) then
+                ! r next to the start (r - 1 < R - r): in mu = pi - nu from 0, so that the
+                ! short interval keeps its relative accuracy as r -> 1
+                call add_piece(f, piece_arch_start, 0.0_qp, &
+                               2.0_qp*atan2(sqrt(r - 1.0_qp), sqrt(r_gap)), rule, value, status)
             else
                 call add_piece(f, piece_arch, nu_r, pi, rule, value, status)
             end if
