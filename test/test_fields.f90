@@ -151,6 +151,15 @@ contains
         call check(b%arch == arch_radial, 'psi = 0: radial')
         call check_close(b%time, repulsive_radial_time(3.0_qp), 4.0_qp, &
                          'psi = 0: the radial time in closed form')
+        ! next to the start, rho = 1 + 2^-112: a near-complete arch, locally the uniform
+        ! field's cycloid: angle pi (R - 1) (Tee sec. 6), so R - 1 ~ psi/pi
+        b = field%solve(nearest(1.0_qp, 2.0_qp), 1.0e-30_qp)
+        call check(b%status == status_ok .and. b%arch == arch_second, &
+                   'rho = 1 + 2^-112, psi = 1e-30: solved')
+        call check(abs((b%apse_radius - 1.0_qp)*pi/1.0e-30_qp - 1.0_qp) < 0.1_qp, &
+                   'rho = 1 + 2^-112: R - 1 close to psi/pi (the cycloid limit)')
+        b = field%solve(nearest(1.0_qp, 2.0_qp), 3.0_qp)
+        call check(b%status == status_ok, 'rho = 1 + 2^-112, psi = 3: solved')
         b = field%solve(0.5_qp, 1.0_qp)
         call check(b%status == status_rho_below_start, 'rho < 1: status_rho_below_start')
         b = field%solve(ieee_value(1.0_qp, ieee_quiet_nan), 1.0_qp)
