@@ -686,13 +686,16 @@ contains
     !! time. One solution per target angle (the branch through rho is monotone).
     !! Solutions that need g or 3 - 2R below `critical_floor` carry
     !! status_no_convergence.
-    pure subroutine solve_repulsive(rho, psi, max_windings, solutions, best, status)
+    pure subroutine solve_repulsive(rho, psi, max_windings, solutions, best, status, mirror)
         real(qp), intent(in) :: rho        !! endpoint radius, rho >= 1
         real(qp), intent(in) :: psi        !! endpoint angle, 0 <= psi <= pi
         integer, intent(in) :: max_windings !! largest m (>= 0)
         type(repulsive_solution), allocatable, intent(out) :: solutions(:) !! by angle
         integer, intent(out) :: best       !! index of the least time (0 if none)
         integer, intent(out) :: status     !! status_ok or the reason for bad input
+        !> Also the clockwise mirror images (default .true.); without them only the
+        !! anticlockwise targets psi + 2 pi m, which include the least time
+        logical, intent(in), optional :: mirror
         type(gauss_legendre_rule) :: rule
         real(qp) :: target, angle_critical, angle_apse
         integer :: m, sense, n
@@ -710,6 +713,7 @@ contains
         call branch_angles(rho, rule, angle_critical, angle_apse, status)
         if (status /= status_ok) return
         mirror_distinct = psi > 0.0_qp .and. psi < pi
+        if (present(mirror)) mirror_distinct = mirror_distinct .and. mirror
         deallocate (solutions)
         allocate (solutions(merge(2, 1, mirror_distinct)*(max_windings + 1)))
         n = 0

@@ -49,7 +49,9 @@ contains
         integer :: best, status
         solution%rho = rho
         solution%psi = psi
-        call solve_repulsive(rho, psi, 0, found, best, status)
+        ! the least time is the anticlockwise curve sweeping psi itself (module notes of
+        ! brachistochrone_repulsive, tested there): its mirror image need not be solved
+        call solve_repulsive(rho, psi, 0, found, best, status, mirror=.false.)
         solution%status = status
         if (status /= status_ok) return
         if (best == 0) then
