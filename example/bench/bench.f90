@@ -24,6 +24,7 @@ program bench
     use brachistochrone_arches, only: arch_first, arch_second, arch_complete
     use brachistochrone_format, only: format_quad, format_quad_by_write
     !$ use omp_lib, only: omp_set_num_threads
+    use brachistochrone_run_support, only: median
     implicit none
     type(endpoint_table) :: table
     class(brachistochrone_field), allocatable :: field
@@ -166,21 +167,5 @@ contains
             1.0e9_qp*median(slow)/real(max(formatted, 1), qp)
         if (sink < 0.0_qp) write (output_unit, '(a)') 'unreachable'
     end subroutine time_floor_and_format
-
-    function median(values) result(middle)
-        real(qp), intent(in) :: values(:)
-        real(qp) :: middle, sorted(size(values)), swap
-        integer :: a, b
-        sorted = values
-        do a = 2, size(sorted)
-            do b = a, 2, -1
-                if (sorted(b - 1) <= sorted(b)) exit
-                swap = sorted(b)
-                sorted(b) = sorted(b - 1)
-                sorted(b - 1) = swap
-            end do
-        end do
-        middle = sorted((size(sorted) + 1)/2)
-    end function median
 
 end program bench

@@ -18,6 +18,7 @@ program engine_timing
     use brachistochrone_two_point, only: solve_endpoint
     use brachistochrone_solution, only: endpoint_solution
     use brachistochrone_status, only: status_ok
+    use brachistochrone_run_support, only: median
     implicit none
     integer, parameter :: n_rho = 5, n_psi = 6
     type(central_force_model) :: general
@@ -85,20 +86,4 @@ program engine_timing
     write (output_unit, '(a,f8.2)') 'slowest endpoint / median endpoint = ', &
         maxval(worst)/median(worst)
     write (output_unit, '(a,i0)') 'endpoints not solved = ', failed
-contains
-    pure function median(values) result(m)
-        real(qp), intent(in) :: values(:)
-        real(qp) :: m, sorted(size(values)), swap
-        integer :: a, b
-        sorted = values
-        do a = 2, size(sorted)
-            do b = a, 2, -1
-                if (sorted(b - 1) <= sorted(b)) exit
-                swap = sorted(b)
-                sorted(b) = sorted(b - 1)
-                sorted(b - 1) = swap
-            end do
-        end do
-        m = sorted((size(sorted) + 1)/2)
-    end function median
 end program engine_timing

@@ -77,12 +77,10 @@ contains
     pure function csv_row(solution) result(line)
         type(endpoint_solution), intent(in) :: solution !! the solved endpoint
         character(len=:), allocatable :: line
-        line = format_real(solution%rho)//','//format_real(solution%psi)//','// &
-               arch_word(solution%arch)//','// &
-               optional_real(solution%has_apse_radius, solution%apse_radius)//','// &
-               optional_real(solution%has_arclength, solution%arclength)//','// &
-               optional_real(solution%has_time, solution%time)//','// &
-               integer_text(solution%steps)//','//status_word(solution%status)
+        character(len=csv_row_length) :: buffer
+        integer :: length
+        call csv_row_into(solution, buffer, length)
+        line = buffer(1:length)
     end function csv_row
 
     !> Header of the readable table: the field, its units.
@@ -438,19 +436,6 @@ contains
         text = ''
         if (field%exponent() /= 0.0_qp) text = ' with n = '//short_real(field%exponent())
     end function exponent_note
-
-    pure function optional_real(present_, x, absent) result(text)
-        logical, intent(in) :: present_
-        real(qp), intent(in) :: x
-        character(len=*), intent(in), optional :: absent   ! text when absent (default '')
-        character(len=:), allocatable :: text
-        if (present_) then
-            text = format_real(x)
-        else
-            text = ''
-            if (present(absent)) text = absent
-        end if
-    end function optional_real
 
     !> Shortest form of a value that reads back to the same binary128 number.
     pure function short_real(x) result(text)

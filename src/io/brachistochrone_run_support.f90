@@ -2,11 +2,12 @@
 module brachistochrone_run_support
     use, intrinsic :: iso_fortran_env, only: error_unit, int64
     use brachistochrone_version, only: program_name
+    use brachistochrone_kinds, only: qp
     use brachistochrone_strings, only: integer_text
     implicit none
     private
 
-    public :: timestamp, progress_type
+    public :: timestamp, progress_type, median
 
     !> Progress of a long loop, reported on stderr (never stdout): percent, rate, time
     !! left; the first report after 2 s, then every 5 s. Safe to step from OpenMP threads.
@@ -147,5 +148,23 @@ contains
             text = integer_text(whole)//'s'
         end if
     end function duration
+
+    !> The median of `values` (the upper middle one for an even count), for timings.
+    pure function median(values) result(middle)
+        real(qp), intent(in) :: values(:) !! at least one value
+        real(qp) :: middle
+        real(qp) :: sorted(size(values)), swap
+        integer :: a, b
+        sorted = values
+        do a = 2, size(sorted)
+            do b = a, 2, -1
+                if (sorted(b - 1) <= sorted(b)) exit
+                swap = sorted(b)
+                sorted(b) = sorted(b - 1)
+                sorted(b - 1) = swap
+            end do
+        end do
+        middle = sorted((size(sorted) + 1)/2)
+    end function median
 
 end module brachistochrone_run_support
