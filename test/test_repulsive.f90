@@ -13,7 +13,8 @@ module test_repulsive
     use brachistochrone_repulsive, only: repulsive_curve, repulsive_solution, curve_from_k2, &
                          curve_from_gap, curve_from_apse, curve_from_apse_gap, &
                          repulsive_values, critical_values, repulsive_radial_time, &
-                         solve_repulsive, critical_k2
+                         solve_repulsive, critical_k2, panel_values, panel_rules, &
+                         new_panel_rules
     use brachistochrone_arches, only: arch_unbounded, arch_first, arch_second
     use testing, only: check, check_close, check_digits, section, digits_of_agreement
     implicit none
@@ -30,6 +31,7 @@ contains
         call radial_closed_form()
         call critical_closed_form()
         call mpmath_reference()
+        call fixed_panels()
         call branch_structure()
         call two_point()
         call two_point_mpmath()
@@ -214,6 +216,55 @@ contains
                  28.93147691991151425235856530040171172032_qp)
         write (output_unit, '(a,f6.2)') '   fewest digits against mpmath: ', worst_reference
     end subroutine mpmath_reference
+
+    !> The solver's fixed Gauss panels (rules chosen from the located singularities)
+    !! against the adaptive integrals (themselves checked against mpmath above): every
+    !! kind of piece, unbounded g = 3 .. 3 2^-40, bounded 3 - 2R = 2^-40 .. 1, both
+    !! half-arches, radii from 1 + 1e-30 to 100; binary128 to a few eps, the hardware
+    !! precision angle to about 1e-18.
+    subroutine fixed_panels()
+        real(qp), parameter :: radii(9) = [1.0_qp + 1.0e-30_qp, 1.001_qp, 1.1_qp, 1.25_qp, &
+                                           1.4_qp, 1.499_qp, 2.0_qp, 5.0_qp, 100.0_qp]
+        type(panel_rules) :: rules
+        type(repulsive_curve) :: curve
+        real(qp) :: a(3), b(3), x(3), r, worst(3), worst_xp
+        integer :: i, j, kind, second, stat(3)
+        logical :: all_ok
+        call section('repulsive: fixed Gauss panels against the adaptive integrals')
+        rules = new_panel_rules()
+        worst = 0.0_qp
+        worst_xp = 0.0_qp
+        all_ok = .true.
+        do kind = 1, 2
+            do j = 0, 40, 2
+                if (kind == 1) then
+                    call curve_from_gap(3.0_qp*2.0_qp**(-j), curve, stat(1))
+                else
+                    call curve_from_apse_gap(0.999_qp*2.0_qp**(-j), curve, stat(1))
+                end if
+                do i = 1, size(radii)
+                    do second = 0, merge(1, 0, curve%bounded)
+                        r = radii(i)
+                        if (curve%bounded) r = min(r, curve%apse)
+                        call repulsive_values(curve, r, second == 1, a(1), a(2), a(3), &
+                                              stat(1))
+                        call panel_values(curve, r, second == 1, rules, .false., b, stat(2))
+                        call panel_values(curve, r, second == 1, rules, .true., x, stat(3))
+                        if (any(stat /= status_ok)) all_ok = .false.
+                        worst = max(worst, abs(a - b)/max(abs(a), tiny(1.0_qp))/eps_qp)
+                        worst_xp = max(worst_xp, abs(a(1) - x(1))/max(abs(a(1)), tiny(1.0_qp)))
+                    end do
+                end do
+            end do
+        end do
+        write (output_unit, '(a,3f7.2)') '   binary128 panels vs adaptive, worst theta, s, t '// &
+            'in eps: ', worst
+        write (output_unit, '(a,es10.2)') '   hardware-precision angle vs adaptive, worst '// &
+            'relative: ', worst_xp
+        call check(all_ok, 'fixed panels: every integral evaluated')
+        call check(all(worst <= 8.0_qp), 'fixed panels = adaptive to 8 eps')
+        call check(worst_xp <= 1.0e-17_qp, 'hardware-precision panels to 1e-17')
+    end subroutine fixed_panels
 
     !> theta(rho) along the branch of curves through rho is increasing: unbounded (g from 3
     !! down to 0), then for rho < 3/2 first half-arches (R from 3/2 down to rho) and second

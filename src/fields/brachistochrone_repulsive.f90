@@ -72,6 +72,9 @@ module brachistochrone_repulsive
     use brachistochrone_quad_math, only: expm1
     use brachistochrone_solution, only: endpoint_status, region_outside
     use brachistochrone_arches, only: arch_unbounded, arch_first, arch_second
+    use brachistochrone_repulsive_panels, only: panel_rules, new_panel_rules, panel_piece, &
+            panel_curve, panel_integrals, panel_angle_xp, max_pieces, piece_start, &
+            piece_below, piece_above, piece_far, piece_arch, piece_apse, piece_arch_start
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan, ieee_value, &
                                              ieee_positive_inf
     implicit none
@@ -82,6 +85,7 @@ module brachistochrone_repulsive
     public :: repulsive_values, critical_values, repulsive_radial_time
     public :: solve_repulsive
     public :: critical_k2, critical_floor
+    public :: panel_values, panel_rules, new_panel_rules
 
     !> K^2 of the critical brachistochrone.
     real(qp), parameter :: critical_k2 = 27.0_qp/8.0_qp
@@ -99,9 +103,6 @@ module brachistochrone_repulsive
     !! asinh(64) ~ 4.85, so a rounded xi costs a few eps, not xi*eps ~ 70 eps).
     real(qp), parameter :: stretch = 64.0_qp, xi_stretch = asinh(stretch)
     integer, parameter :: want_angle = 1, want_length = 2, want_time = 3
-    integer, parameter :: piece_start = 1, piece_below = 2, piece_above = 3, &
-                          piece_far = 4, piece_arch = 5, piece_apse = 6, &
-                          piece_arch_start = 7
 
     !> One brachistochrone from A, by its parameter. Build it with a `curve_from_*`.
     type :: repulsive_curve
@@ -404,7 +405,7 @@ contains
         call keep_first(status, stat)
     end subroutine add_piece
 
-    !> One integral (kind) from radius 1 to r along the first (half-)arch.
+    !> One integral (kind) from radius 1 to r along the first (half-)arch, adaptively.
     pure subroutine first_integral(curve, kind, r, rule, value, status)
         type(repulsive_curve), intent(in) :: curve
         integer, intent(in) :: kind
@@ -413,16 +414,38 @@ contains
         real(qp), intent(out) :: value
         integer, intent(out) :: status
         type(repulsive_integrand) :: f
-        real(qp) :: top, r_gap, c, xi_mid, nu_mid, nu_r
+        type(panel_piece) :: pieces(max_pieces)
+        integer :: n, i
         value = 0.0_qp
         status = status_ok
-        if (r == 1.0_qp) return
+        call plan_pieces(curve, r, pieces, n, f%span)
         f%kind = kind
         f%k = curve%k
         f%p = curve%p
+        f%rm1 = curve%apse_m1
+        f%d = curve%split
+        f%a = curve%centre
+        f%beta = curve%width2
+        do i = 1, n
+            f%stretched = pieces(i)%stretched
+            call add_piece(f, pieces(i)%kind, pieces(i)%lower, pieces(i)%upper, rule, value, &
+                           status)
+        end do
+    end subroutine first_integral
+
+    !> The pieces (variable and interval) of the integrals from radius 1 to r along the
+    !! first (half-)arch, and the start piece's span (unbounded). No piece when r = 1.
+    pure subroutine plan_pieces(curve, r, pieces, n, span)
+        type(repulsive_curve), intent(in) :: curve
+        real(qp), intent(in) :: r
+        type(panel_piece), intent(out) :: pieces(max_pieces)
+        integer, intent(out) :: n
+        real(qp), intent(out) :: span
+        real(qp) :: r_gap, c, xi_mid, nu_mid, nu_r
+        n = 0
+        span = 0.0_qp
+        if (r == 1.0_qp) return
         if (curve%bounded) then
-            f%rm1 = curve%apse_m1
-            f%d = curve%split
             ! R - r from 3 - 2r (exact near 3/2) and the stored 3 - 2R: R itself may not
             ! be representable next to 3/2 (R = 3/2 - d/2 with d below eps)
             if (r >= curve%apse) then
@@ -436,67 +459,66 @@ contains
             ! nu from nu_r to pi (x from r down to 1); within `stretch` widths sqrt(d) of
             ! the apse (and nu < pi/2) in xi, sin(nu/2) = c sinh(xi), c = sqrt(d/(R-1)),
             ! split at a float xi_mid so that both pieces meet at nu_mid to a few ulps
-            c = sqrt(f%d/f%rm1)
+            c = sqrt(curve%split/curve%apse_m1)
             xi_mid = min(xi_stretch, asinh(sqrt(0.5_qp)/c))
             nu_mid = 2.0_qp*asin(min(c*sinh(xi_mid), 1.0_qp))
             nu_r = 2.0_qp*atan2(sqrt(r_gap), sqrt(r - 1.0_qp))
             if (nu_r < nu_mid) then
-                call add_piece(f, piece_apse, asinh(sqrt(r_gap/f%d)), xi_mid, rule, value, &
-                               status)
-                call add_piece(f, piece_arch, nu_mid, pi, rule, value, status)
+                call add(pieces, n, piece_apse, .false., asinh(sqrt(r_gap/curve%split)), xi_mid)
+                call add(pieces, n, piece_arch, .false., nu_mid, pi)
             else if (nu_r > 0.5_qp*pi) then
                 ! r next to the start (r - 1 < R - r): in mu = pi - nu from 0, so that the
                 ! short interval keeps its relative accuracy as r -> 1
-                call add_piece(f, piece_arch_start, 0.0_qp, &
-                               2.0_qp*atan2(sqrt(r - 1.0_qp), sqrt(r_gap)), rule, value, status)
+                call add(pieces, n, piece_arch_start, .false., 0.0_qp, &
+                         2.0_qp*atan2(sqrt(r - 1.0_qp), sqrt(r_gap)))
             else
-                call add_piece(f, piece_arch, nu_r, pi, rule, value, status)
+                call add(pieces, n, piece_arch, .false., nu_r, pi)
             end if
             return
         end if
-        f%a = curve%centre
-        f%beta = curve%width2
-        top = min(r, start_end)
-        f%span = top - 1.0_qp
-        call add_piece(f, piece_start, 0.0_qp, 1.0_qp, rule, value, status)
+        span = min(r, start_end) - 1.0_qp
+        call add(pieces, n, piece_start, .false., 0.0_qp, 1.0_qp)
         if (r <= start_end) return
-        if (f%a > start_end) then
-            call peak_pieces(f, piece_below, f%a - min(r, f%a), f%a - start_end, value, status)
-        end if
-        if (r > f%a) then
-            call peak_pieces(f, piece_above, max(f%a, start_end) - f%a, &
-                             min(r, far_start) - f%a, value, status)
-        end if
-        if (r > far_start) then
-            call add_piece(f, piece_far, far_start/r, 1.0_qp, rule, value, status)
-        end if
+        associate (a => curve%centre)
+            if (a > start_end) call peak_pieces(pieces, n, piece_below, a - min(r, a), &
+                                                a - start_end)
+            if (r > a) call peak_pieces(pieces, n, piece_above, max(a, start_end) - a, &
+                                        min(r, far_start) - a)
+        end associate
+        if (r > far_start) call add(pieces, n, piece_far, .false., far_start/r, 1.0_qp)
     contains
         !> h from h_lo to h_hi (distance to the peak at a): in sinh variable up to
         !! `stretch` widths sqrt(beta) (the split point a float xi, so both pieces meet
         !! at the same h to a few ulps), plain h beyond.
-        pure subroutine peak_pieces(g, piece, h_lo, h_hi, total, stat)
-            type(repulsive_integrand), intent(inout) :: g
-            integer, intent(in) :: piece
+        pure subroutine peak_pieces(pieces, n, kind, h_lo, h_hi)
+            type(panel_piece), intent(inout) :: pieces(:)
+            integer, intent(inout) :: n
+            integer, intent(in) :: kind
             real(qp), intent(in) :: h_lo, h_hi
-            real(qp), intent(inout) :: total
-            integer, intent(inout) :: stat
             real(qp) :: width, h_mid
             if (.not. (h_hi > h_lo)) return
-            width = sqrt(g%beta)
-            if (g%beta > 0.0_qp .and. h_lo < stretch*width) then
+            width = sqrt(curve%width2)
+            if (curve%width2 > 0.0_qp .and. h_lo < stretch*width) then
                 h_mid = width*sinh(xi_stretch)
-                g%stretched = .true.
-                call add_piece(g, piece, asinh(h_lo/width), &
-                               merge(xi_stretch, asinh(h_hi/width), h_hi > h_mid), &
-                               rule, total, stat)
-                g%stretched = .false.
-                if (h_hi > h_mid) call add_piece(g, piece, h_mid, h_hi, rule, total, stat)
+                call add(pieces, n, kind, .true., asinh(h_lo/width), &
+                         merge(xi_stretch, asinh(h_hi/width), h_hi > h_mid))
+                if (h_hi > h_mid) call add(pieces, n, kind, .false., h_mid, h_hi)
             else
-                g%stretched = .false.
-                call add_piece(g, piece, h_lo, h_hi, rule, total, stat)
+                call add(pieces, n, kind, .false., h_lo, h_hi)
             end if
         end subroutine peak_pieces
-    end subroutine first_integral
+    end subroutine plan_pieces
+
+    pure subroutine add(pieces, n, kind, stretched, lower, upper)
+        type(panel_piece), intent(inout) :: pieces(:)
+        integer, intent(inout) :: n
+        integer, intent(in) :: kind
+        logical, intent(in) :: stretched
+        real(qp), intent(in) :: lower, upper
+        if (.not. (upper > lower)) return
+        n = n + 1
+        pieces(n) = panel_piece(kind=kind, stretched=stretched, lower=lower, upper=upper)
+    end subroutine add
 
     !> theta, s, t at radius r along `curve` from A. Unbounded curves (g >= 0): any
     !! 1 <= r <= +Infinity (theta converges; s and t are then +Infinity); the critical
@@ -545,6 +567,46 @@ contains
         end if
         status = first_failure(stat)
     end subroutine repulsive_values
+
+    !> theta, s, t at radius r as `repulsive_values` (same pieces), on fixed Gauss panels
+    !! chosen from the located singularities (`brachistochrone_repulsive_panels`); the
+    !! angle alone (`angle_only`) in hardware precision, about 19 digits. status:
+    !! status_ok or status_no_convergence (too many panels: integrate adaptively).
+    pure subroutine panel_values(curve, r, second, rules, angle_only, values, status)
+        type(repulsive_curve), intent(in) :: curve !! the curve
+        real(qp), intent(in) :: r                  !! radius, 1 <= r (<= R if bounded)
+        logical, intent(in) :: second              !! on the second half-arch (bounded)
+        type(panel_rules), intent(in) :: rules     !! the Gauss rules
+        logical, intent(in) :: angle_only          !! theta in hardware precision only
+        real(qp), intent(out) :: values(3)         !! theta, s, t (s, t: 0 if angle_only)
+        integer, intent(out) :: status             !! status_ok or the reason
+        real(qp) :: apse(3)
+        integer :: stat
+        call one_end(r, values, status)
+        if (second) then
+            call one_end(curve%apse, apse, stat)
+            call keep_first(status, stat)
+            values = 2.0_qp*apse - values
+        end if
+    contains
+        pure subroutine one_end(radius, v, st)
+            real(qp), intent(in) :: radius
+            real(qp), intent(out) :: v(3)
+            integer, intent(out) :: st
+            type(panel_piece) :: pieces(max_pieces)
+            type(panel_curve) :: c
+            integer :: n
+            v = 0.0_qp
+            c = panel_curve(bounded=curve%bounded, k=curve%k, p=curve%p, a=curve%centre, &
+                            beta=curve%width2, rm1=curve%apse_m1, d=curve%split)
+            call plan_pieces(curve, radius, pieces, n, c%span)
+            if (angle_only) then
+                call panel_angle_xp(rules, c, pieces(1:n), v(1), st)
+            else
+                call panel_integrals(rules, c, pieces(1:n), v, st)
+            end if
+        end subroutine one_end
+    end subroutine panel_values
 
     !> The critical brachistochrone K^2 = 27/8, Q = (x - 3/2)^2 (x + 3), in closed form
     !! (1 <= r < 3/2). With u = sqrt((r-1)/(r+3)) (so x = (1+3u^2)/(1-u^2)),
@@ -679,6 +741,142 @@ contains
         solution%status = status
     end subroutine solve_branch
 
+    !> theta(rho) - target on the curve of lambda, in hardware precision (fast panels).
+    pure subroutine mismatch_xp(rho, target, arch, rules, lambda, f, status)
+        real(qp), intent(in) :: rho, target, lambda
+        integer, intent(in) :: arch
+        type(panel_rules), intent(in) :: rules
+        real(qp), intent(out) :: f
+        integer, intent(out) :: status
+        type(repulsive_curve) :: curve
+        real(qp) :: values(3)
+        call curve_of_lambda(arch, lambda, curve)
+        call panel_values(curve, rho, arch == arch_second, rules, .true., values, status)
+        f = values(1) - target
+    end subroutine mismatch_xp
+
+    !> The fast path of `solve_branch`: the bracket and the root to about 1e-17 on
+    !! hardware-precision panels (regula falsi with the Anderson-Bjorck correction), the
+    !! slope and curvature there by central differences; then two binary128 evaluations
+    !! of theta, s, t: at that root x0 and at its Newton step x1. The secant through both
+    !! gives the root x; s and t are interpolated there. Certified when |f(x1)| <= 1e-6
+    !! |f(x0)| (the step converged as Newton's does) and the secant's and the
+    !! interpolation's error, curvature |x - x0| |x - x1|, is below a rounding of x.
+    !! `done` is false otherwise (or on any failure): the caller then solves adaptively.
+    pure subroutine solve_branch_fast(rho, target, arch, lambda_top, f_top, rules, &
+                                      solution, done)
+        real(qp), intent(in) :: rho, target, lambda_top, f_top
+        integer, intent(in) :: arch
+        type(panel_rules), intent(in) :: rules
+        type(repulsive_solution), intent(inout) :: solution
+        logical, intent(out) :: done
+        real(qp) :: lo, f_lo, hi, f_hi, x0, fx0, x1, x, h, f_plus, f_minus, slope
+        real(qp) :: curvature, v0(3), v1(3), f0, f1, floor, rate(3)
+        integer :: status, steps, stat(2)
+        type(repulsive_curve) :: curve
+        done = .false.
+        if (f_top == 0.0_qp) return
+        floor = log(critical_floor)
+        hi = lambda_top
+        f_hi = f_top
+        lo = hi
+        steps = 0
+        do
+            lo = max(lo - 4.0_qp, floor)
+            call mismatch_xp(rho, target, arch, rules, lo, f_lo, status)
+            steps = steps + 1
+            if (status /= status_ok) return
+            if ((f_lo > 0.0_qp) .neqv. (f_hi > 0.0_qp)) exit
+            if (lo <= floor) return
+            hi = lo
+            f_hi = f_lo
+        end do
+        call falsi_xp(rho, target, arch, rules, lo, f_lo, hi, f_hi, x0, fx0, steps, status)
+        if (status /= status_ok) return
+        h = min(1.0e-6_qp*max(1.0_qp, abs(x0)), 0.5_qp*(x0 - lo), 0.5_qp*(hi - x0))
+        if (.not. h > 0.0_qp) return
+        call mismatch_xp(rho, target, arch, rules, x0 + h, f_plus, stat(1))
+        call mismatch_xp(rho, target, arch, rules, x0 - h, f_minus, stat(2))
+        steps = steps + 2
+        if (any(stat /= status_ok)) return
+        slope = (f_plus - f_minus)/(2.0_qp*h)
+        curvature = abs(f_plus - 2.0_qp*fx0 + f_minus)/(h*h)/abs(2.0_qp*slope) + 1.0_qp
+        ! two binary128 evaluations
+        call curve_of_lambda(arch, x0, curve)
+        call panel_values(curve, rho, arch == arch_second, rules, .false., v0, stat(1))
+        f0 = v0(1) - target
+        x1 = x0 - f0/slope
+        call curve_of_lambda(arch, x1, curve)
+        call panel_values(curve, rho, arch == arch_second, rules, .false., v1, stat(2))
+        f1 = v1(1) - target
+        steps = steps + 2
+        if (any(stat /= status_ok) .or. .not. (x1 > lo .and. x1 < hi)) return
+        if (f1 == f0 .or. abs(x1 - x0) > 1.0e-12_qp*max(1.0_qp, abs(x0))) return
+        if (abs(f1) > 1.0e-6_qp*abs(f0) .and. abs(f1) > 4.0_qp*eps_qp*max(target, 1.0_qp)) &
+            return
+        rate = (v1 - v0)/(x1 - x0)
+        x = x1 - f1/rate(1)
+        if (curvature*abs(x - x0)*abs(x - x1) > eps_qp*max(abs(x), 1.0e-3_qp)) return
+        call curve_of_lambda(arch, x, solution%curve)
+        solution%arch = arch
+        solution%angle = v1(1) + rate(1)*(x - x1)
+        solution%arclength = v1(2) + rate(2)*(x - x1)
+        solution%time = v1(3) + rate(3)*(x - x1)
+        solution%steps = steps
+        solution%status = status_ok
+        done = .true.
+    end subroutine solve_branch_fast
+
+    !> Regula falsi (Anderson-Bjorck) on the hardware-precision mismatch from the bracket
+    !! [lo, hi], to 1e-17 of lambda or to the evaluations' noise; x, fx: the last iterate.
+    !! status: status_ok or an evaluation's failure (running out of steps is not one:
+    !! the result is only the start of the binary128 phase, which certifies).
+    pure subroutine falsi_xp(rho, target, arch, rules, lo, f_lo, hi, f_hi, x, fx, steps, &
+                             status)
+        real(qp), intent(in) :: rho, target, lo, f_lo, hi, f_hi
+        integer, intent(in) :: arch
+        type(panel_rules), intent(in) :: rules
+        real(qp), intent(out) :: x, fx
+        integer, intent(inout) :: steps
+        integer, intent(out) :: status
+        real(qp) :: a, b, fa, fb, scale
+        integer :: side, i
+        a = lo
+        b = hi
+        fa = f_lo
+        fb = f_hi
+        side = 0
+        status = status_ok
+        x = b
+        fx = fb
+        do i = 1, 60
+            x = (a*fb - b*fa)/(fb - fa)
+            if (.not. (x > min(a, b) .and. x < max(a, b))) x = 0.5_qp*(a + b)
+            call mismatch_xp(rho, target, arch, rules, x, fx, status)
+            steps = steps + 1
+            if (status /= status_ok) return
+            if (abs(fx) <= 1.0e-18_qp*max(target, 1.0_qp)) return
+            if ((fx > 0.0_qp) .eqv. (fb > 0.0_qp)) then
+                if (side == 1) then
+                    scale = 1.0_qp - fx/fb
+                    fa = fa*merge(scale, 0.5_qp, scale > 0.0_qp)
+                end if
+                b = x
+                fb = fx
+                side = 1
+            else
+                if (side == -1) then
+                    scale = 1.0_qp - fx/fa
+                    fb = fb*merge(scale, 0.5_qp, scale > 0.0_qp)
+                end if
+                a = x
+                fa = fx
+                side = -1
+            end if
+            if (abs(b - a) <= 1.0e-17_qp*max(abs(x), 1.0_qp)) return
+        end do
+    end subroutine falsi_xp
+
     !> The two-point problem: every brachistochrone from A = (1, 0) to B = (rho, psi)
     !! sweeping an angle psi + 2 pi m (anticlockwise) or 2 pi (m + 1) - psi (clockwise,
     !! the mirror image), m = 0..max_windings, in increasing order of the swept angle
@@ -686,7 +884,8 @@ contains
     !! time. One solution per target angle (the branch through rho is monotone).
     !! Solutions that need g or 3 - 2R below `critical_floor` carry
     !! status_no_convergence.
-    pure subroutine solve_repulsive(rho, psi, max_windings, solutions, best, status, mirror)
+    pure subroutine solve_repulsive(rho, psi, max_windings, solutions, best, status, mirror, &
+                                    rules)
         real(qp), intent(in) :: rho        !! endpoint radius, rho >= 1
         real(qp), intent(in) :: psi        !! endpoint angle, 0 <= psi <= pi
         integer, intent(in) :: max_windings !! largest m (>= 0)
@@ -696,7 +895,9 @@ contains
         !> Also the clockwise mirror images (default .true.); without them only the
         !! anticlockwise targets psi + 2 pi m, which include the least time
         logical, intent(in), optional :: mirror
-        type(gauss_legendre_rule) :: rule
+        !> Gauss rules of the fast panels (`new_panel_rules`; built here when absent)
+        type(panel_rules), intent(in), optional :: rules
+        type(panel_rules) :: own_rules
         real(qp) :: target, angle_critical, angle_apse
         integer :: m, sense, n
         logical :: mirror_distinct
@@ -709,8 +910,12 @@ contains
             status = status_invalid_argument
             return
         end if
-        rule = gauss_legendre(20)
-        call branch_angles(rho, rule, angle_critical, angle_apse, status)
+        if (.not. present(rules)) own_rules = new_panel_rules()
+        if (present(rules)) then
+            call branch_angles(rho, rules, angle_critical, angle_apse, status)
+        else
+            call branch_angles(rho, own_rules, angle_critical, angle_apse, status)
+        end if
         if (status /= status_ok) return
         mirror_distinct = psi > 0.0_qp .and. psi < pi
         if (present(mirror)) mirror_distinct = mirror_distinct .and. mirror
@@ -728,22 +933,29 @@ contains
                 solutions(n)%target = target
                 solutions(n)%winding = m
                 solutions(n)%clockwise = sense == 1
-                call solve_target(rho, target, angle_critical, angle_apse, solutions(n))
+                if (present(rules)) then
+                    call solve_target(rho, target, angle_critical, angle_apse, rules, &
+                                      solutions(n))
+                else
+                    call solve_target(rho, target, angle_critical, angle_apse, own_rules, &
+                                      solutions(n))
+                end if
             end do
         end do
         best = least_time(solutions)
     end subroutine solve_repulsive
 
     !> For 1 < rho < 3/2, the angles at rho of the critical curve and of the curve with
-    !! its apse at rho, which split the targets among the branches (0 otherwise).
+    !! its apse at rho, which split the targets among the branches (0 otherwise); the
+    !! latter in binary128 on the fast panels (adaptively if they fail).
     !! status: status_ok or the first failure of those integrals.
-    pure subroutine branch_angles(rho, rule, angle_critical, angle_apse, status)
+    pure subroutine branch_angles(rho, rules, angle_critical, angle_apse, status)
         real(qp), intent(in) :: rho
-        type(gauss_legendre_rule), intent(in) :: rule
+        type(panel_rules), intent(in) :: rules
         real(qp), intent(out) :: angle_critical, angle_apse
         integer, intent(out) :: status
         type(repulsive_curve) :: curve
-        real(qp) :: dummy(2)
+        real(qp) :: dummy(2), values(3)
         integer :: stat(3)
         angle_critical = 0.0_qp
         angle_apse = 0.0_qp
@@ -751,14 +963,20 @@ contains
         if (.not. (rho > 1.0_qp .and. rho < 1.5_qp)) return
         call critical_values(rho, angle_critical, dummy(1), dummy(2), stat(1))
         call curve_from_apse(rho, curve, stat(2))
-        call first_integral(curve, want_angle, rho, rule, angle_apse, stat(3))
+        call panel_values(curve, rho, .false., rules, .false., values, stat(3))
+        angle_apse = values(1)
+        if (stat(3) /= status_ok) then
+            call first_integral(curve, want_angle, rho, gauss_legendre(20), angle_apse, &
+                                stat(3))
+        end if
         status = first_failure(stat)
     end subroutine branch_angles
 
     !> The curve from A through (rho, target): the radial path for target 0, else the
     !! branch that holds the target (complete arches when rho = 1).
-    pure subroutine solve_target(rho, target, angle_critical, angle_apse, solution)
+    pure subroutine solve_target(rho, target, angle_critical, angle_apse, rules, solution)
         real(qp), intent(in) :: rho, target, angle_critical, angle_apse
+        type(panel_rules), intent(in) :: rules
         type(repulsive_solution), intent(inout) :: solution
         integer :: stat_values
         if (target == 0.0_qp) then
@@ -770,17 +988,31 @@ contains
             solution%status = stat_values
         else if (rho == 1.0_qp) then
             ! complete arches: lambda = log(3 - 2R) up to 0 (R -> 1, angle -> 0)
-            call solve_branch(rho, target, arch_second, 0.0_qp, -target, solution)
+            call solve_fast_or_slow(rho, target, arch_second, 0.0_qp, -target, &
+                                    rules, solution)
         else if (rho >= 1.5_qp .or. target < angle_critical) then
-            call solve_branch(rho, target, arch_unbounded, log(3.0_qp), -target, solution)
+            call solve_fast_or_slow(rho, target, arch_unbounded, log(3.0_qp), -target, &
+                                    rules, solution)
         else if (target <= angle_apse) then
-            call solve_branch(rho, target, arch_first, log(3.0_qp - 2.0_qp*rho), &
-                              angle_apse - target, solution)
+            call solve_fast_or_slow(rho, target, arch_first, log(3.0_qp - 2.0_qp*rho), &
+                                    angle_apse - target, rules, solution)
         else
-            call solve_branch(rho, target, arch_second, log(3.0_qp - 2.0_qp*rho), &
-                              angle_apse - target, solution)
+            call solve_fast_or_slow(rho, target, arch_second, log(3.0_qp - 2.0_qp*rho), &
+                                    angle_apse - target, rules, solution)
         end if
     end subroutine solve_target
+
+    !> One target on one branch: the fast path, else the adaptive one.
+    pure subroutine solve_fast_or_slow(rho, target, arch, lambda_top, f_top, rules, &
+                                       solution)
+        real(qp), intent(in) :: rho, target, lambda_top, f_top
+        integer, intent(in) :: arch
+        type(panel_rules), intent(in) :: rules
+        type(repulsive_solution), intent(inout) :: solution
+        logical :: done
+        call solve_branch_fast(rho, target, arch, lambda_top, f_top, rules, solution, done)
+        if (.not. done) call solve_branch(rho, target, arch, lambda_top, f_top, solution)
+    end subroutine solve_fast_or_slow
 
     !> Index of the solved curve of least time (the first of equal times; 0 if none).
     pure function least_time(solutions) result(best)

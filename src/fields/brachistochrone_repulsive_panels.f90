@@ -1,0 +1,454 @@
+!> Fixed Gauss-Legendre panels for the repulsive field's integrals (the fast evaluator of
+!! `brachistochrone_repulsive`).
+!!
+!! The pieces of an integral (variable, interval) are laid out by
+!! `brachistochrone_repulsive`; their substitutions make every integrand analytic on the
+!! interval, with singularities at known complex points: the zeros of Q (0 is a pole of
+!! theta's integrand, -P and the near-double pair a +- i sqrt(beta) or r2 = R + d branch
+!! points), x = 1 where sqrt(x - 1) is not removed, and those of the maps themselves
+!! (sin(nu/2) = +-1 in the apse's sinh map, z = 0 in the far map). Mapped into the piece's
+!! variable they fix, for each panel, the Bernstein ellipse rho of Gauss convergence
+!! (error about rho^(-2n) for n nodes), so the rule is chosen once per curve, in double
+!! precision, before any integrand is evaluated (as on the inverse-square fast path). A
+!! panel that would need more than `max_nodes` nodes is bisected: near a singularity
+!! at one end this makes a geometric mesh. More than `max_panels` panels for one integral
+!! is a failure (the caller then integrates adaptively).
+!!
+!! Two precisions: all three integrals (theta, s, t) in binary128 aiming at 36 digits,
+!! and theta alone in the widest hardware precision (`xp`, x87 extended where there is
+!! one) aiming at 20 digits, for the root finder's early phase.
+module brachistochrone_repulsive_panels
+    use brachistochrone_kinds, only: qp, pi
+    use brachistochrone_status, only: status_ok, status_no_convergence
+    use brachistochrone_quadrature, only: gauss_legendre_rule, gauss_legendre
+    use, intrinsic :: iso_fortran_env, only: real64
+    implicit none
+    private
+
+    public :: xp, panel_rules, new_panel_rules, panel_piece, panel_curve
+    public :: panel_integrals, panel_angle_xp
+    public :: piece_start, piece_below, piece_above, piece_far, piece_arch, piece_apse, &
+              piece_arch_start, max_pieces
+
+    !> The widest hardware real kind below quad (x87 extended on x86-64, else double).
+    integer, parameter :: xp_candidate = selected_real_kind(18, 4931)
+    integer, parameter :: xp = merge(xp_candidate, real64, &
+                                     xp_candidate > 0 .and. xp_candidate /= qp)
+
+    !> Piece kinds (the variable of each): sigma from the start, h = |x - a| below/above the
+    !! peak (`stretched`: h = sqrt(beta) sinh(xi)), z = 4/x far out, nu of the bounded arch,
+    !! xi of the apse's sinh map, mu = pi - nu next to the start.
+    integer, parameter :: piece_start = 1, piece_below = 2, piece_above = 3, &
+                          piece_far = 4, piece_arch = 5, piece_apse = 6, &
+                          piece_arch_start = 7
+    integer, parameter :: max_pieces = 6
+    !> The ladder of rules and the most panels for one integral.
+    integer, parameter :: ladder(*) = [6, 8, 10, 12, 16, 20, 24, 28, 32, 40, 48]
+    integer, parameter :: max_nodes = 48, max_panels = 64
+    !> Digits aimed at: binary128 (with a margin over 34) and the hardware phase.
+    real(real64), parameter :: quad_digits = 37.0_real64, hardware_digits = 20.5_real64
+    real(qp), parameter :: sqrt2 = sqrt(2.0_qp), far_start = 4.0_qp
+
+    !> One Gauss-Legendre rule on [0, 1]: nodes and weights in both precisions.
+    type :: panel_rule
+        integer :: n = 0
+        real(qp), allocatable :: node(:), weight(:)
+        real(xp), allocatable :: node_xp(:), weight_xp(:)
+    end type panel_rule
+
+    !> The rules of `ladder`, built once (`new_panel_rules`) and then read only.
+    type :: panel_rules
+        type(panel_rule) :: rule(size(ladder))
+    end type panel_rules
+
+    !> One piece of an integral: its kind, its interval in its variable.
+    type :: panel_piece
+        integer :: kind = piece_start
+        logical :: stretched = .false.
+        real(qp) :: lower = 0.0_qp, upper = 0.0_qp
+    end type panel_piece
+
+    !> The curve's numbers the integrands need (see `brachistochrone_repulsive`).
+    type :: panel_curve
+        logical :: bounded = .false.
+        real(qp) :: k = 0.0_qp, p = 0.0_qp     !! K, P
+        real(qp) :: a = 0.0_qp, beta = 0.0_qp  !! unbounded: Q = (x + P)((x - a)^2 + beta)
+        real(qp) :: span = 0.0_qp              !! unbounded: start piece x - 1 = span sigma^2
+        real(qp) :: rm1 = 0.0_qp, d = 0.0_qp   !! bounded: R - 1, r2 - R
+    end type panel_curve
+
+contains
+
+    !> The rules of the ladder (about a millisecond: build once, share).
+    pure function new_panel_rules() result(rules)
+        type(panel_rules) :: rules
+        type(gauss_legendre_rule) :: g
+        integer :: j
+        do j = 1, size(ladder)
+            g = gauss_legendre(ladder(j))
+            rules%rule(j)%n = ladder(j)
+            rules%rule(j)%node = 0.5_qp*(1.0_qp + g%node)
+            rules%rule(j)%weight = 0.5_qp*g%weight
+            rules%rule(j)%node_xp = real(rules%rule(j)%node, xp)
+            rules%rule(j)%weight_xp = real(rules%rule(j)%weight, xp)
+        end do
+    end function new_panel_rules
+
+    !> theta, s, t (values(1:3)) over the pieces, in binary128. status: status_ok, or
+    !! status_no_convergence when a piece needs more than `max_panels` panels.
+    pure subroutine panel_integrals(rules, curve, pieces, values, status)
+        type(panel_rules), intent(in) :: rules
+        type(panel_curve), intent(in) :: curve
+        type(panel_piece), intent(in) :: pieces(:)
+        real(qp), intent(out) :: values(3)
+        integer, intent(out) :: status
+        real(qp) :: lo(max_panels), hi(max_panels), width, y(3), sums(3)
+        integer :: which(max_panels), count, i, j, m
+        values = 0.0_qp
+        status = status_ok
+        do i = 1, size(pieces)
+            call plan_panels(curve, pieces(i), quad_digits, lo, hi, which, count, status)
+            if (status /= status_ok) return
+            do j = 1, count
+                width = hi(j) - lo(j)
+                sums = 0.0_qp
+                associate (r => rules%rule(which(j)))
+                    do m = 1, r%n
+                        call integrands(curve, pieces(i), lo(j) + width*r%node(m), y)
+                        sums = sums + r%weight(m)*y
+                    end do
+                end associate
+                values = values + width*sums
+            end do
+        end do
+    end subroutine panel_integrals
+
+    !> theta over the pieces in hardware precision (about 19 digits). status as for
+    !! `panel_integrals`.
+    pure subroutine panel_angle_xp(rules, curve, pieces, value, status)
+        type(panel_rules), intent(in) :: rules
+        type(panel_curve), intent(in) :: curve
+        type(panel_piece), intent(in) :: pieces(:)
+        real(qp), intent(out) :: value
+        integer, intent(out) :: status
+        real(qp) :: lo(max_panels), hi(max_panels)
+        real(xp) :: c(7), width, start, total, sum
+        integer :: which(max_panels), count, i, j, m
+        value = 0.0_qp
+        status = status_ok
+        c = real([curve%k, curve%p, curve%a, curve%beta, curve%span, curve%rm1, curve%d], xp)
+        total = 0.0_xp
+        do i = 1, size(pieces)
+            call plan_panels(curve, pieces(i), hardware_digits, lo, hi, which, count, status)
+            if (status /= status_ok) return
+            do j = 1, count
+                start = real(lo(j), xp)
+                width = real(hi(j) - lo(j), xp)
+                sum = 0.0_xp
+                associate (r => rules%rule(which(j)))
+                    do m = 1, r%n
+                        sum = sum + r%weight_xp(m)*angle_xp(c, pieces(i)%kind, &
+                                  pieces(i)%stretched, start + width*r%node_xp(m))
+                    end do
+                end associate
+                total = total + width*sum
+            end do
+        end do
+        value = real(total, qp)
+    end subroutine panel_angle_xp
+
+    !> The panels of one piece and the rule (index into the ladder) of each, aiming at
+    !! `digits`: bisection until every panel's Bernstein ellipse allows the digits with
+    !! at most `max_nodes` nodes. status_no_convergence past `max_panels`.
+    pure subroutine plan_panels(curve, piece, digits, lo, hi, which, count, status)
+        type(panel_curve), intent(in) :: curve
+        type(panel_piece), intent(in) :: piece
+        real(real64), intent(in) :: digits
+        real(qp), intent(out) :: lo(max_panels), hi(max_panels)
+        integer, intent(out) :: which(max_panels), count, status
+        complex(real64) :: points(12)
+        real(qp) :: stack_lo(max_panels), stack_hi(max_panels), a, b
+        integer :: top, n, j, np
+        count = 0
+        status = status_ok
+        if (.not. (piece%upper > piece%lower)) return
+        call singular_points(curve, piece, points, np)
+        top = 1
+        stack_lo(1) = piece%lower
+        stack_hi(1) = piece%upper
+        do while (top > 0)
+            a = stack_lo(top)
+            b = stack_hi(top)
+            top = top - 1
+            n = nodes_for(points(1:np), real(a, real64), real(b, real64), digits)
+            if (n <= max_nodes .or. b - a <= 1.0e-3_qp*epsilon(1.0_real64)*abs(b)) then
+                if (count >= max_panels) then
+                    status = status_no_convergence
+                    return
+                end if
+                count = count + 1
+                lo(count) = a
+                hi(count) = b
+                which(count) = size(ladder)
+                do j = size(ladder), 1, -1
+                    if (ladder(j) >= n) which(count) = j
+                end do
+            else
+                if (top + 2 > max_panels) then
+                    status = status_no_convergence
+                    return
+                end if
+                ! the half nearer the start is integrated first (pushed last)
+                stack_lo(top + 1) = 0.5_qp*(a + b)
+                stack_hi(top + 1) = b
+                stack_lo(top + 2) = a
+                stack_hi(top + 2) = 0.5_qp*(a + b)
+                top = top + 2
+            end if
+        end do
+    end subroutine plan_panels
+
+    !> Gauss nodes for `digits` on [a, b] given the singular points (huge if none fits).
+    pure function nodes_for(points, a, b, digits) result(n)
+        complex(real64), intent(in) :: points(:)
+        real(real64), intent(in) :: a, b, digits
+        integer :: n
+        complex(real64) :: z, root
+        real(real64) :: rho, rho_min
+        integer :: k
+        rho_min = huge(1.0_real64)
+        do k = 1, size(points)
+            z = (2.0_real64*points(k) - (a + b))/(b - a)
+            root = sqrt(z - 1.0_real64)*sqrt(z + 1.0_real64)
+            rho = max(abs(z + root), abs(z - root))
+            rho_min = min(rho_min, rho)
+        end do
+        if (rho_min <= 1.0_real64 + 1.0e-9_real64) then
+            n = huge(1)
+        else if (rho_min > 1.0e30_real64) then
+            n = ladder(1)
+        else
+            n = ceiling(digits*log(10.0_real64)/(2.0_real64*log(rho_min)))
+            n = max(n, ladder(1))
+        end if
+    end function nodes_for
+
+    !> The singular points of the piece's integrands in its variable (double precision).
+    pure subroutine singular_points(curve, piece, points, np)
+        type(panel_curve), intent(in) :: curve
+        type(panel_piece), intent(in) :: piece
+        complex(real64), intent(out) :: points(12)
+        integer, intent(out) :: np
+        complex(real64) :: x(4), c, i1
+        real(real64) :: a, p, w, rm1, d, s(3)
+        integer :: k
+        i1 = (0.0_real64, 1.0_real64)
+        np = 0
+        points = (0.0_real64, 0.0_real64)
+        p = real(curve%p, real64)
+        if (.not. curve%bounded) then
+            a = real(curve%a, real64)
+            w = sqrt(real(curve%beta, real64))
+            ! the zeros of x Q(x)
+            x = [(0.0_real64, 0.0_real64), cmplx(-p, 0.0_real64, real64), a + i1*w, a - i1*w]
+            select case (piece%kind)
+            case (piece_start)
+                do k = 1, 4
+                    c = sqrt((x(k) - 1.0_real64)/real(curve%span, real64))
+                    call add(points, np, c)
+                    call add(points, np, -c)
+                end do
+            case (piece_far)
+                call add(points, np, (0.0_real64, 0.0_real64))
+                call add(points, np, cmplx(4.0_real64, 0.0_real64, real64))
+                do k = 2, 4
+                    if (abs(x(k)) > 0.0_real64) call add(points, np, 4.0_real64/x(k))
+                end do
+            case default
+                ! h = -+(x - a): the zeros 0, -P and x = 1 (sqrt(x - 1)); the pair at
+                ! h = +-i w is cancelled by the sinh map, else a singularity of the jacobian
+                x(4) = (1.0_real64, 0.0_real64)
+                do k = 1, 4
+                    if (k == 3) cycle
+                    c = merge(-1.0_real64, 1.0_real64, piece%kind == piece_below)*(x(k) - a)
+                    if (piece%stretched) then
+                        c = asinh(c/w)
+                        call add(points, np, c)
+                        call add(points, np, i1*pi_64() - c)
+                        call add(points, np, -i1*pi_64() - c)
+                    else
+                        call add(points, np, c)
+                    end if
+                end do
+                if (.not. piece%stretched) then
+                    call add(points, np, i1*w)
+                    call add(points, np, -i1*w)
+                end if
+            end select
+            return
+        end if
+        rm1 = real(curve%rm1, real64)
+        d = real(curve%d, real64)
+        if (piece%kind == piece_apse) then
+            ! sin(nu/2) = sqrt(d/(R-1)) sinh(xi) = +-1; x + P = 0; x = 0
+            s = [sqrt(rm1/d), sqrt((1.0_real64 + rm1 + p)/d), sqrt((1.0_real64 + rm1)/d)]
+            do k = 1, 3
+                c = asinh(cmplx(s(k), 0.0_real64, real64))
+                call add(points, np, c)
+                call add(points, np, -c)
+                call add(points, np, i1*pi_64() - c)
+                call add(points, np, i1*pi_64() + c)
+            end do
+            return
+        end if
+        ! nu: cos(nu) = 2 (x - 1)/(R - 1) - 1 at x = R + d, 0, -P
+        x(1:3) = [cmplx(1.0_real64 + rm1 + d, 0.0_real64, real64), (0.0_real64, 0.0_real64), &
+                  cmplx(-p, 0.0_real64, real64)]
+        do k = 1, 3
+            c = acos(2.0_real64*(x(k) - 1.0_real64)/rm1 - 1.0_real64)
+            if (piece%kind == piece_arch_start) then
+                call add(points, np, pi_64() - c)
+                call add(points, np, pi_64() + c)
+                call add(points, np, -pi_64() + c)
+            else
+                call add(points, np, c)
+                call add(points, np, -c)
+                call add(points, np, 2.0_real64*pi_64() - c)
+            end if
+        end do
+    end subroutine singular_points
+
+    pure subroutine add(points, np, point)
+        complex(real64), intent(inout) :: points(:)
+        integer, intent(inout) :: np
+        complex(real64), intent(in) :: point
+        if (np < size(points)) then
+            np = np + 1
+            points(np) = point
+        end if
+    end subroutine add
+
+    pure real(real64) function pi_64()
+        pi_64 = real(pi, real64)
+    end function pi_64
+
+    !> theta, s, t integrands (binary128) at the piece variable v; the formulas of
+    !! `brachistochrone_repulsive`'s integrand (see its notes).
+    pure subroutine integrands(c, piece, v, y)
+        type(panel_curve), intent(in) :: c
+        type(panel_piece), intent(in) :: piece
+        real(qp), intent(in) :: v
+        real(qp), intent(out) :: y(3)
+        real(qp) :: point, xm1, h, jac, w, sn, cs, rw, rp
+        select case (piece%kind)
+        case (piece_start)
+            xm1 = c%span*v*v
+            point = 1.0_qp + xm1
+            rw = 1.0_qp/sqrt((point + c%p)*((point - c%a)**2 + c%beta))
+            rp = sqrt(point)
+            y(1) = c%k*sqrt2*2.0_qp*c%span*sqrt(c%span)*v*v/point*rw
+            y(2) = 2.0_qp*c%span*v*point*rp*rw
+            y(3) = sqrt2*sqrt(c%span)*point*point*rw
+        case (piece_below, piece_above)
+            if (piece%stretched) then
+                h = sqrt(c%beta)*sinh(v)
+                jac = 1.0_qp
+            else
+                h = v
+                jac = 1.0_qp/sqrt(h*h + c%beta)
+            end if
+            if (piece%kind == piece_below) h = -h
+            point = c%a + h
+            xm1 = (c%a - 1.0_qp) + h
+            rw = jac/sqrt(point + c%p)
+            rp = sqrt(xm1)
+            y(1) = c%k*sqrt2*rp/point*rw
+            y(2) = point*sqrt(point)*rw
+            y(3) = point*point/(sqrt2*rp)*rw
+        case (piece_far)
+            point = far_start/v
+            xm1 = point - 1.0_qp
+            rw = far_start/(v*v)/sqrt((point + c%p)*((point - c%a)**2 + c%beta))
+            rp = sqrt(xm1)
+            y(1) = c%k*sqrt2*rp/point*rw
+            y(2) = point*sqrt(point)*rw
+            y(3) = point*point/(sqrt2*rp)*rw
+        case default
+            if (piece%kind == piece_apse) then
+                sn = sqrt(c%d/c%rm1)*sinh(v)
+                cs = sqrt((1.0_qp - sn)*(1.0_qp + sn))
+                xm1 = c%rm1*cs*cs
+                point = 1.0_qp + xm1
+                rw = 2.0_qp/(sqrt(c%rm1)*cs)/sqrt(point + c%p)
+            else
+                if (piece%kind == piece_arch) then
+                    sn = sin(0.5_qp*v)
+                    cs = cos(0.5_qp*v)
+                else
+                    sn = cos(0.5_qp*v)
+                    cs = sin(0.5_qp*v)
+                end if
+                xm1 = c%rm1*cs*cs
+                point = 1.0_qp + xm1
+                rw = 1.0_qp/sqrt((c%d + c%rm1*sn*sn)*(point + c%p))
+            end if
+            y(1) = c%k*sqrt2*xm1/point*rw
+            y(2) = point*sqrt(point)*sqrt(xm1)*rw
+            y(3) = point*point/sqrt2*rw
+        end select
+    end subroutine integrands
+
+    !> theta's integrand in hardware precision; c = [K, P, a, beta, span, R - 1, d].
+    pure function angle_xp(c, kind, stretched, v) result(y)
+        real(xp), intent(in) :: c(7)
+        integer, intent(in) :: kind
+        logical, intent(in) :: stretched
+        real(xp), intent(in) :: v
+        real(xp) :: y
+        real(xp), parameter :: root2 = sqrt(2.0_xp)
+        real(xp) :: point, xm1, h, jac, sn, cs
+        select case (kind)
+        case (piece_start)
+            xm1 = c(5)*v*v
+            point = 1.0_xp + xm1
+            y = c(1)*root2*2.0_xp*c(5)*sqrt(c(5))*v*v/(point* &
+                sqrt((point + c(2))*((point - c(3))**2 + c(4))))
+        case (piece_below, piece_above)
+            if (stretched) then
+                h = sqrt(c(4))*sinh(v)
+                jac = 1.0_xp
+            else
+                h = v
+                jac = 1.0_xp/sqrt(h*h + c(4))
+            end if
+            if (kind == piece_below) h = -h
+            point = c(3) + h
+            xm1 = (c(3) - 1.0_xp) + h
+            y = c(1)*root2*sqrt(xm1)/(point*sqrt(point + c(2)))*jac
+        case (piece_far)
+            point = 4.0_xp/v
+            y = c(1)*root2*sqrt(point - 1.0_xp)/(point* &
+                sqrt((point + c(2))*((point - c(3))**2 + c(4))))*4.0_xp/(v*v)
+        case default
+            if (kind == piece_apse) then
+                sn = sqrt(c(7)/c(6))*sinh(v)
+                cs = sqrt((1.0_xp - sn)*(1.0_xp + sn))
+                xm1 = c(6)*cs*cs
+                point = 1.0_xp + xm1
+                y = c(1)*root2*xm1/(point*sqrt(point + c(2)))*2.0_xp/(sqrt(c(6))*cs)
+            else
+                if (kind == piece_arch) then
+                    sn = sin(0.5_xp*v)
+                    cs = cos(0.5_xp*v)
+                else
+                    sn = cos(0.5_xp*v)
+                    cs = sin(0.5_xp*v)
+                end if
+                xm1 = c(6)*cs*cs
+                point = 1.0_xp + xm1
+                y = c(1)*root2*xm1/(point*sqrt((c(7) + c(6)*sn*sn)*(point + c(2))))
+            end if
+        end select
+    end function angle_xp
+
+end module brachistochrone_repulsive_panels
