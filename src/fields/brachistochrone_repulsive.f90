@@ -73,7 +73,7 @@ module brachistochrone_repulsive
     use brachistochrone_solution, only: endpoint_status, region_outside
     use brachistochrone_arches, only: arch_unbounded, arch_first, arch_second
     use brachistochrone_repulsive_panels, only: panel_rules, new_panel_rules, panel_piece, &
-            panel_curve, panel_integrals, panel_angle_xp, max_pieces, piece_start, &
+            panel_curve, panel_integrals, panel_angle_xp, integrands, max_pieces, piece_start, &
             piece_below, piece_above, piece_far, piece_arch, piece_apse, piece_arch_start
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan, ieee_value, &
                                              ieee_positive_inf
@@ -101,7 +101,7 @@ module brachistochrone_repulsive
     integer, parameter :: max_steps = 300
     !> The sinh maps reach `stretch` widths from the near-double root (xi up to
     !! asinh(64) ~ 4.85, so a rounded xi costs a few eps, not xi*eps ~ 70 eps).
-    real(qp), parameter :: stretch = 64.0_qp, xi_stretch = asinh(stretch)
+    real(qp), parameter :: stretch = 8.0_qp
     integer, parameter :: want_angle = 1, want_length = 2, want_time = 3
 
     !> One brachistochrone from A, by its parameter. Build it with a `curve_from_*`.
@@ -286,106 +286,17 @@ contains
         curve%k = sqrt(curve%k2)
     end subroutine set_bounded
 
+    !> The integrand of one piece (`brachistochrone_repulsive_panels%integrands`).
     pure function integrand_evaluate(self, x) result(y)
         class(repulsive_integrand), intent(in) :: self
         real(qp), intent(in) :: x          ! the piece's variable
         real(qp) :: y
-        real(qp) :: point, xm1, q, jac, h, sn, cs, rmx, w
-        select case (self%piece)
-        case (piece_start)
-            ! point = 1 + L sigma^2, sigma = x: the 1/sqrt(x - 1) of t is cancelled
-            xm1 = self%span*x*x
-            point = 1.0_qp + xm1
-            q = (point + self%p)*((point - self%a)**2 + self%beta)
-            select case (self%kind)
-            case (want_angle)
-                y = self%k*sqrt2*2.0_qp*self%span*sqrt(self%span)*x*x/(point*sqrt(q))
-            case (want_length)
-                y = 2.0_qp*self%span*x*point*sqrt(point)/sqrt(q)
-            case default
-                y = sqrt2*sqrt(self%span)*point**2/sqrt(q)
-            end select
-        case (piece_below, piece_above)
-            ! point = a -+ h; stretched (beta > 0, within `stretch` widths of the peak):
-            ! h = sqrt(beta) sinh(x), the peak cancelled exactly; otherwise h = x
-            if (self%stretched) then
-                h = sqrt(self%beta)*sinh(x)
-                jac = 1.0_qp
-            else
-                h = x
-                jac = 1.0_qp/sqrt(h*h + self%beta)
-            end if
-            if (self%piece == piece_below) then
-                point = self%a - h
-                xm1 = (self%a - 1.0_qp) - h
-            else
-                point = self%a + h
-                xm1 = (self%a - 1.0_qp) + h
-            end if
-            ! jac = dx/sqrt((x - a)^2 + beta) per unit of the variable
-            w = point + self%p
-            select case (self%kind)
-            case (want_angle)
-                y = self%k*sqrt2*sqrt(xm1)/(point*sqrt(w))*jac
-            case (want_length)
-                y = point*sqrt(point)/sqrt(w)*jac
-            case default
-                y = point**2/(sqrt2*sqrt(xm1)*sqrt(w))*jac
-            end select
-        case (piece_far)
-            ! point = 4/z, z = x in (0, 1]: theta's integrand tends to K sqrt2/4 at z = 0
-            point = far_start/x
-            xm1 = point - 1.0_qp
-            q = (point + self%p)*((point - self%a)**2 + self%beta)
-            jac = far_start/(x*x)
-            select case (self%kind)
-            case (want_angle)
-                y = self%k*sqrt2*sqrt(xm1)/(point*sqrt(q))*jac
-            case (want_length)
-                y = point*sqrt(point)/sqrt(q)*jac
-            case default
-                y = point**2/(sqrt2*sqrt(xm1)*sqrt(q))*jac
-            end select
-        case default
-            ! bounded: R - x = (R-1) sn^2, x - 1 = (R-1) cs^2 (sn = sin(nu/2) or, near the
-            ! apse, sqrt(d/(R-1)) sinh(xi)); w = (r2 - x)(x + P) without its r2 - x factor
-            ! when that is cancelled against d nu/d xi (piece_apse)
-            if (self%piece == piece_arch) then
-                sn = sin(0.5_qp*x)
-                cs = cos(0.5_qp*x)
-                rmx = self%rm1*sn*sn
-                xm1 = self%rm1*cs*cs
-                point = 1.0_qp + xm1
-                w = (self%d + rmx)*(point + self%p)
-                jac = 1.0_qp
-            else if (self%piece == piece_arch_start) then
-                ! the same in mu = pi - nu (next to the start, where cos(nu/2) would lose
-                ! its relative accuracy): sin(nu/2) = cos(mu/2), cos(nu/2) = sin(mu/2)
-                sn = cos(0.5_qp*x)
-                cs = sin(0.5_qp*x)
-                rmx = self%rm1*sn*sn
-                xm1 = self%rm1*cs*cs
-                point = 1.0_qp + xm1
-                w = (self%d + rmx)*(point + self%p)
-                jac = 1.0_qp
-            else
-                sn = sqrt(self%d/self%rm1)*sinh(x)
-                cs = sqrt((1.0_qp - sn)*(1.0_qp + sn))
-                rmx = self%rm1*sn*sn
-                xm1 = self%rm1*cs*cs
-                point = 1.0_qp + xm1
-                w = point + self%p
-                jac = 2.0_qp/(sqrt(self%rm1)*cs)
-            end if
-            select case (self%kind)
-            case (want_angle)
-                y = self%k*sqrt2*xm1/(point*sqrt(w))*jac
-            case (want_length)
-                y = point*sqrt(point)*sqrt(xm1)/sqrt(w)*jac
-            case default
-                y = point**2/(sqrt2*sqrt(w))*jac
-            end select
-        end select
+        real(qp) :: values(3)
+        call integrands(panel_curve(bounded=self%piece >= piece_arch, k=self%k, p=self%p, &
+                                    a=self%a, beta=self%beta, span=self%span, rm1=self%rm1, &
+                                    d=self%d), &
+                        panel_piece(kind=self%piece, stretched=self%stretched), x, values)
+        y = values(self%kind)
     end function integrand_evaluate
 
     pure subroutine add_piece(f, piece, lower, upper, rule, total, status)
@@ -441,7 +352,7 @@ contains
         type(panel_piece), intent(out) :: pieces(max_pieces)
         integer, intent(out) :: n
         real(qp), intent(out) :: span
-        real(qp) :: r_gap, c, xi_mid, nu_mid, nu_r
+        real(qp) :: r_gap, c, s_mid, sin_mid, v_mid, v_r, big
         n = 0
         span = 0.0_qp
         if (r == 1.0_qp) return
@@ -456,23 +367,28 @@ contains
                 r_gap = curve%apse_m1 - (r - 1.0_qp)
             end if
             r_gap = max(r_gap, 0.0_qp)
-            ! nu from nu_r to pi (x from r down to 1); within `stretch` widths sqrt(d) of
-            ! the apse (and nu < pi/2) in xi, sin(nu/2) = c sinh(xi), c = sqrt(d/(R-1)),
-            ! split at a float xi_mid so that both pieces meet at nu_mid to a few ulps
+            ! nu from nu_r to pi (x from r down to 1), in v = tan(nu/4) from v_r to 1;
+            ! within `stretch` widths sqrt(d) of the apse (and nu < pi/2) the sinh map
+            ! sin(nu/2) = c sinh(xi), c = sqrt(d/(R-1)), in w = tanh(xi/2), split where
+            ! sinh(xi) = s_mid, so that both pieces meet at the same point to a few ulps
             c = sqrt(curve%split/curve%apse_m1)
-            xi_mid = min(xi_stretch, asinh(sqrt(0.5_qp)/c))
-            nu_mid = 2.0_qp*asin(min(c*sinh(xi_mid), 1.0_qp))
-            nu_r = 2.0_qp*atan2(sqrt(r_gap), sqrt(r - 1.0_qp))
-            if (nu_r < nu_mid) then
-                call add(pieces, n, piece_apse, .false., asinh(sqrt(r_gap/curve%split)), xi_mid)
-                call add(pieces, n, piece_arch, .false., nu_mid, pi)
-            else if (nu_r > 0.5_qp*pi) then
-                ! r next to the start (r - 1 < R - r): in mu = pi - nu from 0, so that the
-                ! short interval keeps its relative accuracy as r -> 1
+            s_mid = min(stretch, sqrt(0.5_qp)/c)
+            sin_mid = min(c*s_mid, 1.0_qp)
+            v_mid = sin_mid/(1.0_qp + sqrt((1.0_qp - sin_mid)*(1.0_qp + sin_mid)))
+            ! tan(nu_r/4) = tan(phi/2), phi = atan2(sqrt(r_gap), sqrt(r - 1))
+            big = sqrt(r_gap + (r - 1.0_qp))
+            v_r = sqrt(r_gap)/(sqrt(r - 1.0_qp) + big)
+            if (v_r < v_mid) then
+                call add(pieces, n, piece_apse, .false., half_tanh(sqrt(r_gap/curve%split)), &
+                         half_tanh(s_mid))
+                call add(pieces, n, piece_arch, .false., v_mid, 1.0_qp)
+            else if (r - 1.0_qp < r_gap) then
+                ! r next to the start: in mu = pi - nu from 0, so that the short interval
+                ! keeps its relative accuracy as r -> 1
                 call add(pieces, n, piece_arch_start, .false., 0.0_qp, &
-                         2.0_qp*atan2(sqrt(r - 1.0_qp), sqrt(r_gap)))
+                         sqrt(r - 1.0_qp)/(sqrt(r_gap) + big))
             else
-                call add(pieces, n, piece_arch, .false., nu_r, pi)
+                call add(pieces, n, piece_arch, .false., v_r, 1.0_qp)
             end if
             return
         end if
@@ -487,9 +403,9 @@ contains
         end associate
         if (r > far_start) call add(pieces, n, piece_far, .false., far_start/r, 1.0_qp)
     contains
-        !> h from h_lo to h_hi (distance to the peak at a): in sinh variable up to
-        !! `stretch` widths sqrt(beta) (the split point a float xi, so both pieces meet
-        !! at the same h to a few ulps), plain h beyond.
+        !> h from h_lo to h_hi (distance to the peak at a): in the sinh map
+        !! h = sqrt(beta) sinh(xi), in t = tanh(xi/2), up to `stretch` widths
+        !! sqrt(beta), plain h beyond.
         pure subroutine peak_pieces(pieces, n, kind, h_lo, h_hi)
             type(panel_piece), intent(inout) :: pieces(:)
             integer, intent(inout) :: n
@@ -499,15 +415,22 @@ contains
             if (.not. (h_hi > h_lo)) return
             width = sqrt(curve%width2)
             if (curve%width2 > 0.0_qp .and. h_lo < stretch*width) then
-                h_mid = width*sinh(xi_stretch)
-                call add(pieces, n, kind, .true., asinh(h_lo/width), &
-                         merge(xi_stretch, asinh(h_hi/width), h_hi > h_mid))
+                h_mid = width*stretch
+                call add(pieces, n, kind, .true., half_tanh(h_lo/width), &
+                         half_tanh(min(h_hi/width, stretch)))
                 if (h_hi > h_mid) call add(pieces, n, kind, .false., h_mid, h_hi)
             else
                 call add(pieces, n, kind, .false., h_lo, h_hi)
             end if
         end subroutine peak_pieces
     end subroutine plan_pieces
+
+    !> tanh(asinh(s)/2) = s/(1 + sqrt(1 + s^2)), s >= 0.
+    elemental function half_tanh(s) result(t)
+        real(qp), intent(in) :: s
+        real(qp) :: t
+        t = s/(1.0_qp + sqrt(1.0_qp + s*s))
+    end function half_tanh
 
     pure subroutine add(pieces, n, kind, stretched, lower, upper)
         type(panel_piece), intent(inout) :: pieces(:)

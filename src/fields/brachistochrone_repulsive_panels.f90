@@ -21,12 +21,13 @@ module brachistochrone_repulsive_panels
     use brachistochrone_kinds, only: qp, pi
     use brachistochrone_status, only: status_ok, status_no_convergence
     use brachistochrone_quadrature, only: gauss_legendre_rule, gauss_legendre
+    use brachistochrone_fast_math, only: inverse_sqrt
     use, intrinsic :: iso_fortran_env, only: real64
     implicit none
     private
 
     public :: xp, panel_rules, new_panel_rules, panel_piece, panel_curve
-    public :: panel_integrals, panel_angle_xp
+    public :: panel_integrals, panel_angle_xp, integrands
     public :: piece_start, piece_below, piece_above, piece_far, piece_arch, piece_apse, &
               piece_arch_start, max_pieces
 
@@ -166,7 +167,7 @@ contains
         real(real64), intent(in) :: digits
         real(qp), intent(out) :: lo(max_panels), hi(max_panels)
         integer, intent(out) :: which(max_panels), count, status
-        complex(real64) :: points(12)
+        complex(real64) :: points(16)
         real(qp) :: stack_lo(max_panels), stack_hi(max_panels), a, b
         integer :: top, n, j, np
         count = 0
@@ -237,7 +238,7 @@ contains
     pure subroutine singular_points(curve, piece, points, np)
         type(panel_curve), intent(in) :: curve
         type(panel_piece), intent(in) :: piece
-        complex(real64), intent(out) :: points(12)
+        complex(real64), intent(out) :: points(16)
         integer, intent(out) :: np
         complex(real64) :: x(4), c, i1
         real(real64) :: a, p, w, rm1, d, s(3)
@@ -273,14 +274,17 @@ contains
                     c = merge(-1.0_real64, 1.0_real64, piece%kind == piece_below)*(x(k) - a)
                     if (piece%stretched) then
                         c = asinh(c/w)
-                        call add(points, np, c)
-                        call add(points, np, i1*pi_64() - c)
-                        call add(points, np, -i1*pi_64() - c)
+                        call add(points, np, tanh(0.5_real64*c))
+                        call add(points, np, tanh(0.5_real64*(i1*pi_64() - c)))
                     else
                         call add(points, np, c)
                     end if
                 end do
-                if (.not. piece%stretched) then
+                if (piece%stretched) then
+                    ! the map's poles t = +-1
+                    call add(points, np, (1.0_real64, 0.0_real64))
+                    call add(points, np, (-1.0_real64, 0.0_real64))
+                else
                     call add(points, np, i1*w)
                     call add(points, np, -i1*w)
                 end if
@@ -292,30 +296,32 @@ contains
         if (piece%kind == piece_apse) then
             ! sin(nu/2) = sqrt(d/(R-1)) sinh(xi) = +-1; x + P = 0; x = 0
             s = [sqrt(rm1/d), sqrt((1.0_real64 + rm1 + p)/d), sqrt((1.0_real64 + rm1)/d)]
+            ! in w = tanh(xi/2); the map's poles w = +-1
             do k = 1, 3
                 c = asinh(cmplx(s(k), 0.0_real64, real64))
-                call add(points, np, c)
-                call add(points, np, -c)
-                call add(points, np, i1*pi_64() - c)
-                call add(points, np, i1*pi_64() + c)
+                call add(points, np, tanh(0.5_real64*c))
+                call add(points, np, tanh(-0.5_real64*c))
+                call add(points, np, tanh(0.5_real64*(i1*pi_64() - c)))
             end do
+            call add(points, np, (1.0_real64, 0.0_real64))
+            call add(points, np, (-1.0_real64, 0.0_real64))
             return
         end if
         ! nu: cos(nu) = 2 (x - 1)/(R - 1) - 1 at x = R + d, 0, -P
         x(1:3) = [cmplx(1.0_real64 + rm1 + d, 0.0_real64, real64), (0.0_real64, 0.0_real64), &
                   cmplx(-p, 0.0_real64, real64)]
+        ! in v = tan(nu/4) (or tan(mu/4), mu = pi - nu); the map's poles v = +-i
         do k = 1, 3
             c = acos(2.0_real64*(x(k) - 1.0_real64)/rm1 - 1.0_real64)
-            if (piece%kind == piece_arch_start) then
-                call add(points, np, pi_64() - c)
-                call add(points, np, pi_64() + c)
-                call add(points, np, -pi_64() + c)
-            else
-                call add(points, np, c)
-                call add(points, np, -c)
-                call add(points, np, 2.0_real64*pi_64() - c)
-            end if
+            if (piece%kind == piece_arch_start) c = pi_64() - c
+            ! nu + 2 pi k: tan(nu/4) and -cot(nu/4)
+            call add(points, np, tan(0.25_real64*c))
+            call add(points, np, tan(-0.25_real64*c))
+            call add(points, np, -1.0_real64/tan(0.25_real64*c))
+            call add(points, np, 1.0_real64/tan(0.25_real64*c))
         end do
+        call add(points, np, i1)
+        call add(points, np, -i1)
     end subroutine singular_points
 
     pure subroutine add(points, np, point)
@@ -333,72 +339,82 @@ contains
     end function pi_64
 
     !> theta, s, t integrands (binary128) at the piece variable v; the formulas of
-    !! `brachistochrone_repulsive`'s integrand (see its notes).
+    !! `brachistochrone_repulsive` (see its notes), with the maps in rational form:
+    !! stretched h = sqrt(beta) 2t/(1 - t^2) (t = tanh(xi/2), dxi = 2 dt/(1 - t^2));
+    !! bounded sin(nu/2) = 2v/(1 + v^2), cos(nu/2) = (1 - v^2)/(1 + v^2) (v = tan(nu/4),
+    !! dnu = 4 dv/(1 + v^2); swapped for mu = pi - nu); apse sin(nu/2) = c 2w/(1 - w^2).
+    !! No elementary function but square roots (`inverse_sqrt`, within 2 ulp).
     pure subroutine integrands(c, piece, v, y)
-        type(panel_curve), intent(in) :: c
-        type(panel_piece), intent(in) :: piece
-        real(qp), intent(in) :: v
-        real(qp), intent(out) :: y(3)
-        real(qp) :: point, xm1, h, jac, w, sn, cs, rw, rp
+        type(panel_curve), intent(in) :: c   !! the curve's numbers
+        type(panel_piece), intent(in) :: piece !! kind (and stretched) of the piece
+        real(qp), intent(in) :: v            !! the piece's variable
+        real(qp), intent(out) :: y(3)        !! theta, s, t integrands
+        real(qp) :: point, xm1, h, jac, sn, cs, rw, rp, rx, inv, one_minus
         select case (piece%kind)
         case (piece_start)
             xm1 = c%span*v*v
             point = 1.0_qp + xm1
-            rw = 1.0_qp/sqrt((point + c%p)*((point - c%a)**2 + c%beta))
-            rp = sqrt(point)
+            rw = inverse_sqrt((point + c%p)*((point - c%a)**2 + c%beta))
+            rp = point*inverse_sqrt(point)
             y(1) = c%k*sqrt2*2.0_qp*c%span*sqrt(c%span)*v*v/point*rw
             y(2) = 2.0_qp*c%span*v*point*rp*rw
             y(3) = sqrt2*sqrt(c%span)*point*point*rw
         case (piece_below, piece_above)
             if (piece%stretched) then
-                h = sqrt(c%beta)*sinh(v)
-                jac = 1.0_qp
+                one_minus = (1.0_qp - v)*(1.0_qp + v)
+                h = sqrt(c%beta)*2.0_qp*v/one_minus
+                jac = 2.0_qp/one_minus
+                point = c%a + merge(-h, h, piece%kind == piece_below)
+                rw = jac*inverse_sqrt(point + c%p)
             else
+                h = merge(-v, v, piece%kind == piece_below)
+                point = c%a + h
+                rw = inverse_sqrt((v*v + c%beta)*(point + c%p))
                 h = v
-                jac = 1.0_qp/sqrt(h*h + c%beta)
             end if
-            if (piece%kind == piece_below) h = -h
-            point = c%a + h
-            xm1 = (c%a - 1.0_qp) + h
-            rw = jac/sqrt(point + c%p)
-            rp = sqrt(xm1)
-            y(1) = c%k*sqrt2*rp/point*rw
-            y(2) = point*sqrt(point)*rw
-            y(3) = point*point/(sqrt2*rp)*rw
+            xm1 = (c%a - 1.0_qp) + merge(-h, h, piece%kind == piece_below)
+            rx = inverse_sqrt(xm1)
+            inv = 1.0_qp/point
+            y(1) = c%k*sqrt2*(xm1*rx)*inv*rw
+            y(2) = point*(point*inverse_sqrt(point))*rw
+            y(3) = point*point/sqrt2*rx*rw
         case (piece_far)
             point = far_start/v
             xm1 = point - 1.0_qp
-            rw = far_start/(v*v)/sqrt((point + c%p)*((point - c%a)**2 + c%beta))
-            rp = sqrt(xm1)
-            y(1) = c%k*sqrt2*rp/point*rw
-            y(2) = point*sqrt(point)*rw
-            y(3) = point*point/(sqrt2*rp)*rw
+            rw = far_start/(v*v)*inverse_sqrt((point + c%p)*((point - c%a)**2 + c%beta))
+            rx = inverse_sqrt(xm1)
+            y(1) = c%k*sqrt2*(xm1*rx)/point*rw
+            y(2) = point*(point*inverse_sqrt(point))*rw
+            y(3) = point*point/sqrt2*rx*rw
         case default
             if (piece%kind == piece_apse) then
-                sn = sqrt(c%d/c%rm1)*sinh(v)
+                one_minus = (1.0_qp - v)*(1.0_qp + v)
+                sn = sqrt(c%d/c%rm1)*2.0_qp*v/one_minus
                 cs = sqrt((1.0_qp - sn)*(1.0_qp + sn))
                 xm1 = c%rm1*cs*cs
                 point = 1.0_qp + xm1
-                rw = 2.0_qp/(sqrt(c%rm1)*cs)/sqrt(point + c%p)
+                rw = 4.0_qp/(sqrt(c%rm1)*cs*one_minus)*inverse_sqrt(point + c%p)
             else
-                if (piece%kind == piece_arch) then
-                    sn = sin(0.5_qp*v)
-                    cs = cos(0.5_qp*v)
-                else
-                    sn = cos(0.5_qp*v)
-                    cs = sin(0.5_qp*v)
+                inv = 1.0_qp/(1.0_qp + v*v)
+                sn = 2.0_qp*v*inv
+                cs = (1.0_qp - v)*(1.0_qp + v)*inv
+                if (piece%kind == piece_arch_start) then
+                    h = sn
+                    sn = cs
+                    cs = h
                 end if
                 xm1 = c%rm1*cs*cs
                 point = 1.0_qp + xm1
-                rw = 1.0_qp/sqrt((c%d + c%rm1*sn*sn)*(point + c%p))
+                rw = 4.0_qp*inv*inverse_sqrt((c%d + c%rm1*sn*sn)*(point + c%p))
             end if
             y(1) = c%k*sqrt2*xm1/point*rw
-            y(2) = point*sqrt(point)*sqrt(xm1)*rw
+            y(2) = point*(point*inverse_sqrt(point))*(sqrt(c%rm1)*cs)*rw
             y(3) = point*point/sqrt2*rw
         end select
     end subroutine integrands
 
-    !> theta's integrand in hardware precision; c = [K, P, a, beta, span, R - 1, d].
+    !> theta's integrand in hardware precision (the maps of `integrands`);
+    !! c = [K, P, a, beta, span, R - 1, d].
     pure function angle_xp(c, kind, stretched, v) result(y)
         real(xp), intent(in) :: c(7)
         integer, intent(in) :: kind
@@ -406,7 +422,7 @@ contains
         real(xp), intent(in) :: v
         real(xp) :: y
         real(xp), parameter :: root2 = sqrt(2.0_xp)
-        real(xp) :: point, xm1, h, jac, sn, cs
+        real(xp) :: point, xm1, h, jac, sn, cs, inv, one_minus
         select case (kind)
         case (piece_start)
             xm1 = c(5)*v*v
@@ -415,8 +431,9 @@ contains
                 sqrt((point + c(2))*((point - c(3))**2 + c(4))))
         case (piece_below, piece_above)
             if (stretched) then
-                h = sqrt(c(4))*sinh(v)
-                jac = 1.0_xp
+                one_minus = (1.0_xp - v)*(1.0_xp + v)
+                h = sqrt(c(4))*2.0_xp*v/one_minus
+                jac = 2.0_xp/one_minus
             else
                 h = v
                 jac = 1.0_xp/sqrt(h*h + c(4))
@@ -431,22 +448,24 @@ contains
                 sqrt((point + c(2))*((point - c(3))**2 + c(4))))*4.0_xp/(v*v)
         case default
             if (kind == piece_apse) then
-                sn = sqrt(c(7)/c(6))*sinh(v)
+                one_minus = (1.0_xp - v)*(1.0_xp + v)
+                sn = sqrt(c(7)/c(6))*2.0_xp*v/one_minus
                 cs = sqrt((1.0_xp - sn)*(1.0_xp + sn))
                 xm1 = c(6)*cs*cs
                 point = 1.0_xp + xm1
-                y = c(1)*root2*xm1/(point*sqrt(point + c(2)))*2.0_xp/(sqrt(c(6))*cs)
+                y = c(1)*root2*xm1/(point*sqrt(point + c(2)))*4.0_xp/(sqrt(c(6))*cs*one_minus)
             else
-                if (kind == piece_arch) then
-                    sn = sin(0.5_xp*v)
-                    cs = cos(0.5_xp*v)
-                else
-                    sn = cos(0.5_xp*v)
-                    cs = sin(0.5_xp*v)
+                inv = 1.0_xp/(1.0_xp + v*v)
+                sn = 2.0_xp*v*inv
+                cs = (1.0_xp - v)*(1.0_xp + v)*inv
+                if (kind == piece_arch_start) then
+                    h = sn
+                    sn = cs
+                    cs = h
                 end if
                 xm1 = c(6)*cs*cs
                 point = 1.0_xp + xm1
-                y = c(1)*root2*xm1/(point*sqrt((c(7) + c(6)*sn*sn)*(point + c(2))))
+                y = c(1)*root2*xm1/(point*sqrt((c(7) + c(6)*sn*sn)*(point + c(2))))*4.0_xp*inv
             end if
         end select
     end function angle_xp
