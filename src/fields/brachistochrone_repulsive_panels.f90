@@ -78,7 +78,31 @@ module brachistochrone_repulsive_panels
         real(qp) :: rm1 = 0.0_qp, d = 0.0_qp   !! bounded: R - 1, r2 - R
     end type panel_curve
 
+    !> Per-curve constants of the integrands (`prepare`).
+    type :: prepared_curve
+        type(panel_curve) :: c
+        real(qp) :: k_root2 = 0.0_qp, root_span = 0.0_qp, span_root_span = 0.0_qp
+        real(qp) :: root_beta = 0.0_qp, root_ratio = 0.0_qp, root_rm1 = 0.0_qp
+        real(qp) :: a_m1 = 0.0_qp
+    end type prepared_curve
+
 contains
+
+    !> The constants of `integrands` for one curve.
+    pure function prepare(c) result(pc)
+        type(panel_curve), intent(in) :: c
+        type(prepared_curve) :: pc
+        pc%c = c
+        pc%k_root2 = c%k*sqrt2
+        pc%root_span = sqrt(c%span)
+        pc%span_root_span = c%span*pc%root_span
+        pc%root_beta = sqrt(c%beta)
+        pc%a_m1 = c%a - 1.0_qp
+        if (c%bounded) then
+            pc%root_rm1 = sqrt(c%rm1)
+            pc%root_ratio = sqrt(c%d/c%rm1)
+        end if
+    end function prepare
 
     !> The rules of the ladder (about a millisecond: build once, share).
     pure function new_panel_rules() result(rules)
@@ -104,9 +128,11 @@ contains
         real(qp), intent(out) :: values(3)
         integer, intent(out) :: status
         real(qp) :: lo(max_panels), hi(max_panels), width, y(3), sums(3)
+        type(prepared_curve) :: pc
         integer :: which(max_panels), count, i, j, m
         values = 0.0_qp
         status = status_ok
+        pc = prepare(curve)
         do i = 1, size(pieces)
             call plan_panels(curve, pieces(i), quad_digits, lo, hi, which, count, status)
             if (status /= status_ok) return
@@ -115,8 +141,9 @@ contains
                 sums = 0.0_qp
                 associate (r => rules%rule(which(j)))
                     do m = 1, r%n
-                        call integrands(curve, pieces(i), lo(j) + width*r%node(m), y)
-                        sums = sums + r%weight(m)*y
+                        call weighted_integrands(pc, pieces(i)%kind, pieces(i)%stretched, &
+                                                 lo(j) + width*r%node(m), r%weight(m), y)
+                        sums = sums + y
                     end do
                 end associate
                 values = values + width*sums
@@ -349,69 +376,85 @@ contains
         type(panel_piece), intent(in) :: piece !! kind (and stretched) of the piece
         real(qp), intent(in) :: v            !! the piece's variable
         real(qp), intent(out) :: y(3)        !! theta, s, t integrands
-        real(qp) :: point, xm1, h, jac, sn, cs, rw, rp, rx, inv, one_minus
-        select case (piece%kind)
+        call weighted_integrands(prepare(c), piece%kind, piece%stretched, v, 1.0_qp, y)
+    end subroutine integrands
+
+    !> `integrands` times the weight w, with the curve's constants prepared.
+    pure subroutine weighted_integrands(pc, kind, stretched, v, w, y)
+        type(prepared_curve), intent(in) :: pc
+        integer, intent(in) :: kind
+        logical, intent(in) :: stretched
+        real(qp), intent(in) :: v, w
+        real(qp), intent(out) :: y(3)
+        real(qp), parameter :: half_root2 = 0.5_qp*sqrt2
+        real(qp) :: point, xm1, h, sn, cs, rw, rx, ip, inv, one_minus, p2
+        associate (c => pc%c)
+        select case (kind)
         case (piece_start)
             xm1 = c%span*v*v
             point = 1.0_qp + xm1
-            rw = inverse_sqrt((point + c%p)*((point - c%a)**2 + c%beta))
-            rp = point*inverse_sqrt(point)
-            y(1) = c%k*sqrt2*2.0_qp*c%span*sqrt(c%span)*v*v/point*rw
-            y(2) = 2.0_qp*c%span*v*point*rp*rw
-            y(3) = sqrt2*sqrt(c%span)*point*point*rw
+            rw = w*inverse_sqrt((point + c%p)*((point - c%a)**2 + c%beta))
+            ip = inverse_sqrt(point)
+            p2 = point*point
+            y(1) = pc%k_root2*2.0_qp*pc%span_root_span*v*v*(ip*ip)*rw
+            y(2) = 2.0_qp*c%span*v*p2*ip*rw
+            y(3) = sqrt2*pc%root_span*p2*rw
+            return
         case (piece_below, piece_above)
-            if (piece%stretched) then
+            if (stretched) then
                 one_minus = (1.0_qp - v)*(1.0_qp + v)
-                h = sqrt(c%beta)*2.0_qp*v/one_minus
-                jac = 2.0_qp/one_minus
-                point = c%a + merge(-h, h, piece%kind == piece_below)
-                rw = jac*inverse_sqrt(point + c%p)
+                inv = 2.0_qp/one_minus
+                h = pc%root_beta*v*inv
+                point = c%a + merge(-h, h, kind == piece_below)
+                rw = w*inv*inverse_sqrt(point + c%p)
             else
-                h = merge(-v, v, piece%kind == piece_below)
-                point = c%a + h
-                rw = inverse_sqrt((v*v + c%beta)*(point + c%p))
                 h = v
+                point = c%a + merge(-h, h, kind == piece_below)
+                rw = w*inverse_sqrt((v*v + c%beta)*(point + c%p))
             end if
-            xm1 = (c%a - 1.0_qp) + merge(-h, h, piece%kind == piece_below)
-            rx = inverse_sqrt(xm1)
-            inv = 1.0_qp/point
-            y(1) = c%k*sqrt2*(xm1*rx)*inv*rw
-            y(2) = point*(point*inverse_sqrt(point))*rw
-            y(3) = point*point/sqrt2*rx*rw
+            xm1 = pc%a_m1 + merge(-h, h, kind == piece_below)
         case (piece_far)
             point = far_start/v
             xm1 = point - 1.0_qp
-            rw = far_start/(v*v)*inverse_sqrt((point + c%p)*((point - c%a)**2 + c%beta))
-            rx = inverse_sqrt(xm1)
-            y(1) = c%k*sqrt2*(xm1*rx)/point*rw
-            y(2) = point*(point*inverse_sqrt(point))*rw
-            y(3) = point*point/sqrt2*rx*rw
+            rw = w*far_start/(v*v)*inverse_sqrt((point + c%p)*((point - c%a)**2 + c%beta))
         case default
-            if (piece%kind == piece_apse) then
+            if (kind == piece_apse) then
                 one_minus = (1.0_qp - v)*(1.0_qp + v)
-                sn = sqrt(c%d/c%rm1)*2.0_qp*v/one_minus
+                inv = 2.0_qp/one_minus
+                sn = pc%root_ratio*v*inv
                 cs = sqrt((1.0_qp - sn)*(1.0_qp + sn))
                 xm1 = c%rm1*cs*cs
                 point = 1.0_qp + xm1
-                rw = 4.0_qp/(sqrt(c%rm1)*cs*one_minus)*inverse_sqrt(point + c%p)
+                rw = w*2.0_qp*inv/(pc%root_rm1*cs)*inverse_sqrt(point + c%p)
             else
                 inv = 1.0_qp/(1.0_qp + v*v)
                 sn = 2.0_qp*v*inv
                 cs = (1.0_qp - v)*(1.0_qp + v)*inv
-                if (piece%kind == piece_arch_start) then
+                if (kind == piece_arch_start) then
                     h = sn
                     sn = cs
                     cs = h
                 end if
                 xm1 = c%rm1*cs*cs
                 point = 1.0_qp + xm1
-                rw = 4.0_qp*inv*inverse_sqrt((c%d + c%rm1*sn*sn)*(point + c%p))
+                rw = w*4.0_qp*inv*inverse_sqrt((c%d + c%rm1*sn*sn)*(point + c%p))
             end if
-            y(1) = c%k*sqrt2*xm1/point*rw
-            y(2) = point*(point*inverse_sqrt(point))*(sqrt(c%rm1)*cs)*rw
-            y(3) = point*point/sqrt2*rw
+            ip = inverse_sqrt(point)
+            p2 = point*point
+            y(1) = pc%k_root2*xm1*(ip*ip)*rw
+            y(2) = p2*ip*(pc%root_rm1*cs)*rw
+            y(3) = half_root2*p2*rw
+            return
         end select
-    end subroutine integrands
+        ! unbounded pieces beyond the start: sqrt(x - 1) and sqrt(x) explicit
+        rx = inverse_sqrt(xm1)
+        ip = inverse_sqrt(point)
+        p2 = point*point
+        y(1) = pc%k_root2*(xm1*rx)*(ip*ip)*rw
+        y(2) = p2*ip*rw
+        y(3) = half_root2*p2*rx*rw
+        end associate
+    end subroutine weighted_integrands
 
     !> theta's integrand in hardware precision (the maps of `integrands`);
     !! c = [K, P, a, beta, span, R - 1, d].
