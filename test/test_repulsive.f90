@@ -219,24 +219,26 @@ contains
 
     !> The solver's fixed Gauss panels (rules chosen from the located singularities)
     !! against the adaptive integrals (themselves checked against mpmath above): every
-    !! kind of piece, unbounded g = 3 .. 3 2^-40, bounded 3 - 2R = 2^-40 .. 1, both
-    !! half-arches, radii from 1 + 1e-30 to 100; binary128 to a few eps, the hardware
-    !! precision angle to about 1e-18.
+    !! kind of piece, unbounded g = 3 .. 3 2^-160, bounded 3 - 2R = 2^-160 .. 1, both
+    !! half-arches, radii from 1 + 1e-30 to 100 (3/2 exactly, where the peak sits at the
+    !! endpoint); binary128 to a few eps, the hardware precision angle to about 1e-18.
+    !! A curve too close to the critical one for `max_panels` must say so (the solver
+    !! then integrates adaptively), never return a wrong value: checked down to g and
+    !! 3 - 2R of 2^-160; it must not happen above 1e-36.
     subroutine fixed_panels()
-        real(qp), parameter :: radii(9) = [1.0_qp + 1.0e-30_qp, 1.001_qp, 1.1_qp, 1.25_qp, &
-                                           1.4_qp, 1.499_qp, 2.0_qp, 5.0_qp, 100.0_qp]
+        real(qp), parameter :: radii(10) = [1.0_qp + 1.0e-30_qp, 1.001_qp, 1.1_qp, 1.25_qp, &
+                                           1.4_qp, 1.499_qp, 1.5_qp, 2.0_qp, 5.0_qp, 100.0_qp]
         type(panel_rules) :: rules
         type(repulsive_curve) :: curve
-        real(qp) :: a(3), b(3), x(3), r, worst(3), worst_xp
+        real(qp) :: a(3), b(3), x(3), r, worst(3), worst_xp, smallest_failed
         integer :: i, j, kind, second, stat(3)
-        logical :: all_ok
         call section('repulsive: fixed Gauss panels against the adaptive integrals')
         rules = new_panel_rules()
         worst = 0.0_qp
         worst_xp = 0.0_qp
-        all_ok = .true.
+        smallest_failed = 0.0_qp
         do kind = 1, 2
-            do j = 0, 40, 2
+            do j = 0, 160, 4
                 if (kind == 1) then
                     call curve_from_gap(3.0_qp*2.0_qp**(-j), curve, stat(1))
                 else
@@ -250,7 +252,10 @@ contains
                                               stat(1))
                         call panel_values(curve, r, second == 1, rules, .false., b, stat(2))
                         call panel_values(curve, r, second == 1, rules, .true., x, stat(3))
-                        if (any(stat /= status_ok)) all_ok = .false.
+                        if (stat(2) /= status_ok .or. stat(3) /= status_ok) then
+                            smallest_failed = max(smallest_failed, 2.0_qp**(-j))
+                            cycle
+                        end if
                         worst = max(worst, abs(a - b)/max(abs(a), tiny(1.0_qp))/eps_qp)
                         worst_xp = max(worst_xp, abs(a(1) - x(1))/max(abs(a(1)), tiny(1.0_qp)))
                     end do
@@ -261,7 +266,9 @@ contains
             'in eps: ', worst
         write (output_unit, '(a,es10.2)') '   hardware-precision angle vs adaptive, worst '// &
             'relative: ', worst_xp
-        call check(all_ok, 'fixed panels: every integral evaluated')
+        write (output_unit, '(a,es10.2)') '   largest g or 3 - 2R (/3) the panels decline: ', &
+            smallest_failed
+        call check(smallest_failed < 1.0e-36_qp, 'fixed panels: evaluated down to 1e-36')
         call check(all(worst <= 8.0_qp), 'fixed panels = adaptive to 8 eps')
         call check(worst_xp <= 1.0e-17_qp, 'hardware-precision panels to 1e-17')
     end subroutine fixed_panels
@@ -321,7 +328,7 @@ contains
                                            5.0_qp]
         real(qp), parameter :: psis(4) = [0.0_qp, 0.4_qp, 1.0_qp, 3.0_qp]
         type(repulsive_solution), allocatable :: sol(:)
-        real(qp) :: worst, residual, apse(3)
+        real(qp) :: worst, residual, apse(3), angle, length, time
         type(repulsive_curve) :: curve
         integer :: i, j, k, best, status, arches(0:6)
         logical :: ordered, all_ok
@@ -337,7 +344,10 @@ contains
                 ordered = .true.
                 do k = 1, size(sol)
                     if (sol(k)%status /= status_ok) all_ok = .false.
-                    residual = abs(sol(k)%angle - sol(k)%target)/max(sol(k)%target, 1.0_qp)
+                    ! theta(rho) recomputed on the solved curve by the adaptive integrals
+                    call repulsive_values(sol(k)%curve, rhos(i), sol(k)%arch == arch_second, &
+                                          angle, length, time, status)
+                    residual = abs(angle - sol(k)%target)/max(sol(k)%target, 1.0_qp)
                     worst = max(worst, residual/eps_qp)
                     arches(sol(k)%arch) = arches(sol(k)%arch) + 1
                     if (k > 1) then

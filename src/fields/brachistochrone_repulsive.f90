@@ -73,7 +73,8 @@ module brachistochrone_repulsive
     use brachistochrone_solution, only: endpoint_status, region_outside
     use brachistochrone_arches, only: arch_unbounded, arch_first, arch_second
     use brachistochrone_repulsive_panels, only: panel_rules, new_panel_rules, panel_piece, &
-            panel_curve, panel_integrals, panel_angle_xp, integrands, max_pieces, piece_start, &
+            panel_curve, panel_integrals, panel_angle_xp, integrands, panel_slopes_xp, xp, &
+            max_pieces, piece_start, &
             piece_below, piece_above, piece_far, piece_arch, piece_apse, piece_arch_start
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan, ieee_value, &
                                              ieee_positive_inf
@@ -395,11 +396,13 @@ contains
         span = min(r, start_end) - 1.0_qp
         call add(pieces, n, piece_start, .false., 0.0_qp, 1.0_qp)
         if (r <= start_end) return
-        associate (a => curve%centre)
-            if (a > start_end) call peak_pieces(pieces, n, piece_below, a - min(r, a), &
-                                                a - start_end)
-            if (r > a) call peak_pieces(pieces, n, piece_above, max(a, start_end) - a, &
-                                        min(r, far_start) - a)
+        ! distances to the peak a = 3/2 - g/2 formed from 3/2 - r (exact near 3/2) and g,
+        ! never from a rounded a: the peak's height 1/sqrt(beta) would amplify that
+        associate (g2 => 0.5_qp*curve%gap)
+            if (g2 < 0.25_qp) call peak_pieces(pieces, n, piece_below, &
+                                               max((1.5_qp - r) - g2, 0.0_qp), 0.25_qp - g2)
+            if ((1.5_qp - r) - g2 < 0.0_qp) call peak_pieces(pieces, n, piece_above, &
+                    max(g2 - 0.25_qp, 0.0_qp), (min(r, far_start) - 1.5_qp) + g2)
         end associate
         if (r > far_start) call add(pieces, n, piece_far, .false., far_start/r, 1.0_qp)
     contains
@@ -678,6 +681,179 @@ contains
         f = values(1) - target
     end subroutine mismatch_xp
 
+    !> d theta/d lambda and d s/d lambda at radius r (second half-arch: 2 F(R) - F(r))
+    !! on the curve of lambda, by the complex step in hardware precision (about 18
+    !! digits; `panel_slopes_xp`). status: status_ok or a failure.
+    pure subroutine lambda_slopes(arch, curve, r, rules, slopes, status)
+        integer, intent(in) :: arch
+        type(repulsive_curve), intent(in) :: curve
+        real(qp), intent(in) :: r
+        type(panel_rules), intent(in) :: rules
+        real(qp), intent(out) :: slopes(2)
+        integer, intent(out) :: status
+        real(qp) :: apse(2)
+        integer :: stat
+        call one_end(r, slopes, status)
+        if (arch == arch_second) then
+            call one_end(curve%apse, apse, stat)
+            call keep_first(status, stat)
+            slopes = 2.0_qp*apse - slopes
+        end if
+    contains
+        pure subroutine one_end(radius, v, st)
+            real(qp), intent(in) :: radius
+            real(qp), intent(out) :: v(2)
+            integer, intent(out) :: st
+            real(xp), parameter :: h = 1.0e-40_xp
+            type(panel_piece) :: pieces(max_pieces)
+            type(panel_curve) :: c
+            complex(xp) :: cc(7), lower_c(max_pieces), upper_c(max_pieces)
+            integer :: n
+            v = 0.0_qp
+            c = panel_curve(bounded=curve%bounded, k=curve%k, p=curve%p, a=curve%centre, &
+                            beta=curve%width2, rm1=curve%apse_m1, d=curve%split)
+            call plan_pieces(curve, radius, pieces, n, c%span)
+            call complex_step(curve, radius, h, c%span, pieces(1:n), cc, lower_c, upper_c)
+            call panel_slopes_xp(rules, c, pieces(1:n), lower_c(1:n), upper_c(1:n), cc, h, &
+                                 v, st)
+        end subroutine one_end
+    end subroutine lambda_slopes
+
+    !> The curve's numbers [K, P, a, beta, span, R - 1, d] and the ends of its pieces
+    !! (`plan_pieces`) at radius r as complex hardware numbers x + i h dx/dlambda, the
+    !! unknown lambda = log g (unbounded) or log(3 - 2R) (bounded) moved by i h.
+    pure subroutine complex_step(curve, r, h, span, pieces, cc, lower_c, upper_c)
+        type(repulsive_curve), intent(in) :: curve
+        real(qp), intent(in) :: r, span
+        real(xp), intent(in) :: h
+        type(panel_piece), intent(in) :: pieces(:)
+        complex(xp), intent(out) :: cc(7), lower_c(:), upper_c(:)
+        complex(xp) :: g, p, big_r, rm1, e, d, rg, c, s_mid, sin_mid, big, a, width
+        real(xp) :: sg, se
+        integer :: i
+        ! every real part is the binary128 value rounded (differences near the peak or
+        ! the apse are formed there); the complex operations only carry the derivatives
+        cc = (0.0_xp, 0.0_xp)
+        if (.not. curve%bounded) then
+            sg = real(curve%gap, xp)
+            g = cmplx(sg, sg*h, xp)
+            p = cmplx(real(curve%p, xp), -sg*h, xp)
+            a = 0.5_xp*p
+            width = sqrt(p*p*g/(4.0_xp*(p + 1.0_xp)))
+            cc = [sqrt(p**3/(2.0_xp*(1.0_xp + p))), p, a, width*width, &
+                  cmplx(real(span, xp), 0.0_xp, xp), (0.0_xp, 0.0_xp), (0.0_xp, 0.0_xp)]
+            cc(1:4) = real_part(cc(1:4), [curve%k, curve%p, curve%centre, curve%width2])
+            width = real_part(width, sqrt(curve%width2))
+            do i = 1, size(pieces)
+                select case (pieces(i)%kind)
+                case (piece_start)
+                    lower_c(i) = 0.0_xp
+                    upper_c(i) = 1.0_xp
+                case (piece_far)
+                    lower_c(i) = real(far_start/r, xp)
+                    upper_c(i) = 1.0_xp
+                case default
+                    call peak_ends(pieces(i)%kind, pieces(i)%stretched, &
+                                   i > 1 .and. pieces(max(i - 1, 1))%stretched .and. &
+                                   pieces(max(i - 1, 1))%kind == pieces(i)%kind, &
+                                   lower_c(i), upper_c(i))
+                end select
+            end do
+            lower_c(1:size(pieces)) = real_part(lower_c(1:size(pieces)), pieces%lower)
+            upper_c(1:size(pieces)) = real_part(upper_c(1:size(pieces)), pieces%upper)
+            return
+        end if
+        se = real(curve%apse_gap, xp)
+        e = cmplx(se, se*h, xp)
+        rm1 = cmplx(real(curve%apse_m1, xp), -0.5_xp*se*h, xp)
+        big_r = 1.0_xp + rm1
+        d = 2.0_xp*big_r*e/(rm1*(sqrt((big_r + 3.0_xp)/rm1) + 3.0_xp))
+        d = real_part(d, curve%split)
+        cc = [sqrt(big_r**3/(2.0_xp*rm1)), 2.0_xp*big_r + d, (0.0_xp, 0.0_xp), &
+              (0.0_xp, 0.0_xp), (0.0_xp, 0.0_xp), rm1, d]
+        cc(1:2) = [real_part(cc(1), curve%k), real_part(cc(2), curve%p)]
+        ! as in plan_pieces (R - r with its binary128 real part)
+        if (r >= curve%apse) then
+            rg = 0.0_xp
+        else if (r > start_end) then
+            rg = real_part(-0.5_xp*e, 0.5_qp*((3.0_qp - 2.0_qp*r) - curve%apse_gap))
+        else
+            rg = real_part(rm1, curve%apse_m1 - (r - 1.0_qp))
+        end if
+        if (.not. real(rg) > 0.0_xp) rg = 0.0_xp
+        c = sqrt(d/rm1)
+        s_mid = sqrt(0.5_xp)/c
+        if (real(s_mid) > real(stretch, xp)) s_mid = real(stretch, xp)
+        sin_mid = c*s_mid
+        if (real(sin_mid) > 1.0_xp) sin_mid = 1.0_xp
+        big = sqrt(rg + real(r - 1.0_qp, xp))
+        do i = 1, size(pieces)
+            upper_c(i) = 1.0_xp
+            select case (pieces(i)%kind)
+            case (piece_apse)
+                lower_c(i) = half_tanh_c(sqrt(rg/d))
+                upper_c(i) = half_tanh_c(s_mid)
+            case (piece_arch_start)
+                lower_c(i) = 0.0_xp
+                upper_c(i) = sqrt(real(r - 1.0_qp, xp))/(sqrt(rg) + big)
+            case default
+                if (i > 1) then
+                    lower_c(i) = sin_mid/(1.0_xp + sqrt((1.0_xp - sin_mid)*(1.0_xp + sin_mid)))
+                else
+                    lower_c(i) = sqrt(rg)/(sqrt(real(r - 1.0_qp, xp)) + big)
+                end if
+            end select
+        end do
+        lower_c(1:size(pieces)) = real_part(lower_c(1:size(pieces)), pieces%lower)
+        upper_c(1:size(pieces)) = real_part(upper_c(1:size(pieces)), pieces%upper)
+    contains
+        !> The ends of a piece below or above the peak (`plan_pieces`' peak_pieces).
+        pure subroutine peak_ends(kind, stretched, after_stretched, lower, upper)
+            integer, intent(in) :: kind
+            logical, intent(in) :: stretched, after_stretched
+            complex(xp), intent(out) :: lower, upper
+            complex(xp) :: h_lo, h_hi
+            real(qp) :: ac
+            ac = 0.5_qp*curve%gap   ! 3/2 - a, as in plan_pieces
+            if (kind == piece_below) then
+                h_lo = 0.0_xp
+                if ((1.5_qp - r) - ac > 0.0_qp) h_lo = real_part(a, (1.5_qp - r) - ac)
+                h_hi = real_part(a, 0.25_qp - ac)
+            else
+                h_lo = 0.0_xp
+                if (ac > 0.25_qp) h_lo = real_part(-a, ac - 0.25_qp)
+                h_hi = real_part(-a, (min(r, far_start) - 1.5_qp) + ac)
+            end if
+            if (stretched) then
+                lower = half_tanh_c(h_lo/width)
+                upper = h_hi/width
+                if (real(upper) > real(stretch, xp)) upper = real(stretch, xp)
+                upper = half_tanh_c(upper)
+            else if (after_stretched) then
+                lower = width*real(stretch, xp)
+                upper = h_hi
+            else
+                lower = h_lo
+                upper = h_hi
+            end if
+        end subroutine peak_ends
+    end subroutine complex_step
+
+    !> The complex number with the imaginary part of z and the real part x (rounded).
+    elemental function real_part(z, x) result(w)
+        complex(xp), intent(in) :: z
+        real(qp), intent(in) :: x
+        complex(xp) :: w
+        w = cmplx(real(x, xp), aimag(z), xp)
+    end function real_part
+
+    !> tanh(asinh(s)/2) = s/(1 + sqrt(1 + s^2)) in complex hardware precision.
+    elemental function half_tanh_c(s) result(t)
+        complex(xp), intent(in) :: s
+        complex(xp) :: t
+        t = s/(1.0_xp + sqrt(1.0_xp + s*s))
+    end function half_tanh_c
+
     !> The fast path of `solve_branch`: the bracket and the root to about 1e-17 on
     !! hardware-precision panels (regula falsi with the Anderson-Bjorck correction), the
     !! slope and curvature there by central differences; then two binary128 evaluations
@@ -694,7 +870,7 @@ contains
         type(repulsive_solution), intent(inout) :: solution
         logical, intent(out) :: done
         real(qp) :: lo, f_lo, hi, f_hi, x0, fx0, x1, x, h, f_plus, f_minus, slope
-        real(qp) :: curvature, v0(3), v1(3), f0, f1, floor, rate(3)
+        real(qp) :: curvature, v0(3), v1(3), f0, f1, floor, rate(3), slopes(2), dx, conserved
         integer :: status, steps, stat(2)
         type(repulsive_curve) :: curve
         done = .false.
@@ -724,10 +900,34 @@ contains
         if (any(stat /= status_ok)) return
         slope = (f_plus - f_minus)/(2.0_qp*h)
         curvature = abs(f_plus - 2.0_qp*fx0 + f_minus)/(h*h)/abs(2.0_qp*slope) + 1.0_qp
-        ! two binary128 evaluations
+        ! one binary128 evaluation, the Newton step on the complex-step slopes
         call curve_of_lambda(arch, x0, curve)
         call panel_values(curve, rho, arch == arch_second, rules, .false., v0, stat(1))
         f0 = v0(1) - target
+        call lambda_slopes(arch, curve, rho, rules, slopes, stat(2))
+        if (any(stat /= status_ok)) return
+        steps = steps + 1
+        if (abs(slopes(1) - slope) <= 1.0e-6_qp*abs(slopes(1))) then
+            dx = -f0/slopes(1)
+            x = x0 + dx
+            if (x > lo .and. x < hi .and. 1.0e-17_qp*abs(dx) + curvature*dx*dx <= &
+                2.0_qp*eps_qp*abs(x) + tiny(1.0_qp)) then
+                call curve_of_lambda(arch, x0 + 0.5_qp*dx, curve)
+                conserved = curve%k
+                call curve_of_lambda(arch, x, solution%curve)
+                solution%arch = arch
+                solution%angle = v0(1) + slopes(1)*dx
+                solution%arclength = v0(2) + slopes(2)*dx
+                ! Hamilton-Jacobi: at fixed rho, dt/dtheta = K, the conserved momentum
+                solution%time = v0(3) - conserved*f0
+                solution%steps = steps
+                solution%status = status_ok
+                done = .true.
+                return
+            end if
+            slope = slopes(1)
+        end if
+        ! else a second binary128 evaluation at the Newton step, and the secant
         x1 = x0 - f0/slope
         call curve_of_lambda(arch, x1, curve)
         call panel_values(curve, rho, arch == arch_second, rules, .false., v1, stat(2))

@@ -27,7 +27,7 @@ module brachistochrone_repulsive_panels
     private
 
     public :: xp, panel_rules, new_panel_rules, panel_piece, panel_curve
-    public :: panel_integrals, panel_angle_xp, integrands
+    public :: panel_integrals, panel_angle_xp, integrands, panel_slopes_xp
     public :: piece_start, piece_below, piece_above, piece_far, piece_arch, piece_apse, &
               piece_arch_start, max_pieces
 
@@ -48,6 +48,8 @@ module brachistochrone_repulsive_panels
     integer, parameter :: max_nodes = 48, max_panels = 64
     !> Digits aimed at: binary128 (with a margin over 34) and the hardware phase.
     real(real64), parameter :: quad_digits = 37.0_real64, hardware_digits = 20.5_real64
+    !> Digits aimed at by the complex-step slopes (used only through a step below 1e-17)
+    real(real64), parameter :: slope_digits = 22.0_real64
     real(qp), parameter :: sqrt2 = sqrt(2.0_qp), far_start = 4.0_qp
 
     !> One Gauss-Legendre rule on [0, 1]: nodes and weights in both precisions.
@@ -185,6 +187,113 @@ contains
         value = real(total, qp)
     end subroutine panel_angle_xp
 
+    !> The derivatives of theta and s over the pieces with respect to the solver's
+    !! unknown, by the complex step in hardware precision: the curve's numbers `cc`
+    !! (order of `angle_xp`'s c) and the pieces' ends `lower_c`, `upper_c` carry
+    !! h d/dlambda in their imaginary parts; the panels and rules are those of the real
+    !! pieces, their ends moved with the pieces'. slopes = Im(theta, s)/h, to about the
+    !! hardware precision (no cancellation). status as for `panel_integrals`.
+    pure subroutine panel_slopes_xp(rules, curve, pieces, lower_c, upper_c, cc, h, slopes, &
+                                    status)
+        type(panel_rules), intent(in) :: rules
+        type(panel_curve), intent(in) :: curve
+        type(panel_piece), intent(in) :: pieces(:)
+        complex(xp), intent(in) :: lower_c(:), upper_c(:), cc(7)
+        real(xp), intent(in) :: h
+        real(qp), intent(out) :: slopes(2)
+        integer, intent(out) :: status
+        real(qp) :: lo(max_panels), hi(max_panels), length
+        complex(xp) :: a, b, width, total(2), sum(2)
+        integer :: which(max_panels), count, i, j, m
+        slopes = 0.0_qp
+        status = status_ok
+        total = (0.0_xp, 0.0_xp)
+        do i = 1, size(pieces)
+            call plan_panels(curve, pieces(i), slope_digits, lo, hi, which, count, status)
+            if (status /= status_ok) return
+            length = pieces(i)%upper - pieces(i)%lower
+            do j = 1, count
+                a = lower_c(i) + real((lo(j) - pieces(i)%lower)/length, xp)* &
+                    (upper_c(i) - lower_c(i))
+                b = lower_c(i) + real((hi(j) - pieces(i)%lower)/length, xp)* &
+                    (upper_c(i) - lower_c(i))
+                width = b - a
+                sum = (0.0_xp, 0.0_xp)
+                associate (r => rules%rule(which(j)))
+                    do m = 1, r%n
+                        sum = sum + r%weight_xp(m)*angle_length_c(cc, pieces(i)%kind, &
+                                  pieces(i)%stretched, a + width*r%node_xp(m))
+                    end do
+                end associate
+                total = total + width*sum
+            end do
+        end do
+        slopes = real(aimag(total)/h, qp)
+    end subroutine panel_slopes_xp
+
+    !> theta's and s's integrands in complex hardware precision (the maps of
+    !! `integrands`); c = [K, P, a, beta, span, R - 1, d].
+    pure function angle_length_c(c, kind, stretched, v) result(y)
+        complex(xp), intent(in) :: c(7)
+        integer, intent(in) :: kind
+        logical, intent(in) :: stretched
+        complex(xp), intent(in) :: v
+        complex(xp) :: y(2)
+        real(xp), parameter :: root2 = sqrt(2.0_xp)
+        complex(xp) :: point, xm1, h, jac, sn, cs, inv, one_minus, rq
+        select case (kind)
+        case (piece_start)
+            xm1 = c(5)*v*v
+            point = 1.0_xp + xm1
+            rq = 1.0_xp/sqrt((point + c(2))*((point - c(3))**2 + c(4)))
+            y(1) = c(1)*root2*2.0_xp*c(5)*sqrt(c(5))*v*v/point*rq
+            y(2) = 2.0_xp*c(5)*v*point*sqrt(point)*rq
+        case (piece_below, piece_above)
+            if (stretched) then
+                one_minus = (1.0_xp - v)*(1.0_xp + v)
+                h = sqrt(c(4))*2.0_xp*v/one_minus
+                jac = 2.0_xp/one_minus
+            else
+                h = v
+                jac = 1.0_xp/sqrt(h*h + c(4))
+            end if
+            if (kind == piece_below) h = -h
+            point = c(3) + h
+            xm1 = (c(3) - 1.0_xp) + h
+            rq = jac/sqrt(point + c(2))
+            y(1) = c(1)*root2*sqrt(xm1)/point*rq
+            y(2) = point*sqrt(point)*rq
+        case (piece_far)
+            point = 4.0_xp/v
+            rq = 4.0_xp/(v*v)/sqrt((point + c(2))*((point - c(3))**2 + c(4)))
+            y(1) = c(1)*root2*sqrt(point - 1.0_xp)/point*rq
+            y(2) = point*sqrt(point)*rq
+        case default
+            if (kind == piece_apse) then
+                one_minus = (1.0_xp - v)*(1.0_xp + v)
+                sn = sqrt(c(7)/c(6))*2.0_xp*v/one_minus
+                cs = sqrt((1.0_xp - sn)*(1.0_xp + sn))
+                xm1 = c(6)*cs*cs
+                point = 1.0_xp + xm1
+                rq = 4.0_xp/(sqrt(c(6))*cs*one_minus)/sqrt(point + c(2))
+            else
+                inv = 1.0_xp/(1.0_xp + v*v)
+                sn = 2.0_xp*v*inv
+                cs = (1.0_xp - v)*(1.0_xp + v)*inv
+                if (kind == piece_arch_start) then
+                    h = sn
+                    sn = cs
+                    cs = h
+                end if
+                xm1 = c(6)*cs*cs
+                point = 1.0_xp + xm1
+                rq = 4.0_xp*inv/sqrt((c(7) + c(6)*sn*sn)*(point + c(2)))
+            end if
+            y(1) = c(1)*root2*xm1/point*rq
+            y(2) = point*sqrt(point)*(sqrt(c(6))*cs)*rq
+        end select
+    end function angle_length_c
+
     !> The panels of one piece and the rule (index into the ladder) of each, aiming at
     !! `digits`: bisection until every panel's Bernstein ellipse allows the digits with
     !! at most `max_nodes` nodes. status_no_convergence past `max_panels`.
@@ -236,29 +345,29 @@ contains
         end do
     end subroutine plan_panels
 
-    !> Gauss nodes for `digits` on [a, b] given the singular points (huge if none fits).
+    !> Gauss nodes for `digits` on [a, b] given the singular points (huge if more than
+    !! `max_nodes`). z -+ 1 are formed from the distances to the ends, so that a point
+    !! next to an end keeps its relative distance.
     pure function nodes_for(points, a, b, digits) result(n)
         complex(real64), intent(in) :: points(:)
         real(real64), intent(in) :: a, b, digits
         integer :: n
-        complex(real64) :: z, root
-        real(real64) :: rho, rho_min
+        complex(real64) :: z_plus, z_minus, root
+        real(real64) :: rho, rho_min, wanted
         integer :: k
         rho_min = huge(1.0_real64)
         do k = 1, size(points)
-            z = (2.0_real64*points(k) - (a + b))/(b - a)
-            root = sqrt(z - 1.0_real64)*sqrt(z + 1.0_real64)
-            rho = max(abs(z + root), abs(z - root))
+            z_plus = 2.0_real64*(points(k) - a)/(b - a)
+            z_minus = 2.0_real64*(points(k) - b)/(b - a)
+            root = sqrt(z_minus)*sqrt(z_plus)
+            rho = max(abs(z_plus - 1.0_real64 + root), abs(z_plus - 1.0_real64 - root))
             rho_min = min(rho_min, rho)
         end do
-        if (rho_min <= 1.0_real64 + 1.0e-9_real64) then
-            n = huge(1)
-        else if (rho_min > 1.0e30_real64) then
-            n = ladder(1)
-        else
-            n = ceiling(digits*log(10.0_real64)/(2.0_real64*log(rho_min)))
-            n = max(n, ladder(1))
-        end if
+        n = huge(1)
+        if (.not. rho_min == rho_min .or. rho_min <= 1.0_real64) return
+        wanted = digits*log(10.0_real64)/(2.0_real64*log(rho_min))
+        if (wanted > real(max_nodes, real64)) return
+        n = max(ceiling(wanted), ladder(1))
     end function nodes_for
 
     !> The singular points of the piece's integrands in its variable (double precision).
@@ -334,12 +443,14 @@ contains
             call add(points, np, (-1.0_real64, 0.0_real64))
             return
         end if
-        ! nu: cos(nu) = 2 (x - 1)/(R - 1) - 1 at x = R + d, 0, -P
-        x(1:3) = [cmplx(1.0_real64 + rm1 + d, 0.0_real64, real64), (0.0_real64, 0.0_real64), &
-                  cmplx(-p, 0.0_real64, real64)]
+        ! nu: cos(nu) = 2 (x - 1)/(R - 1) - 1 at x = R + d (1 + 2 d/(R-1)), 0 and -P
+        ! (-(1 + 2 (1 + P)/(R-1))): nu = 2i asinh(sqrt(d/(R-1))) and
+        ! pi + 2i asinh(sqrt(1/(R-1))), pi + 2i asinh(sqrt((1 + P)/(R-1)))
+        s = [sqrt(d/rm1), sqrt(1.0_real64/rm1), sqrt((1.0_real64 + p)/rm1)]
         ! in v = tan(nu/4) (or tan(mu/4), mu = pi - nu); the map's poles v = +-i
         do k = 1, 3
-            c = acos(2.0_real64*(x(k) - 1.0_real64)/rm1 - 1.0_real64)
+            c = 2.0_real64*i1*asinh(s(k))
+            if (k > 1) c = c + pi_64()
             if (piece%kind == piece_arch_start) c = pi_64() - c
             ! nu + 2 pi k: tan(nu/4) and -cot(nu/4)
             call add(points, np, tan(0.25_real64*c))
@@ -355,6 +466,8 @@ contains
         complex(real64), intent(inout) :: points(:)
         integer, intent(inout) :: np
         complex(real64), intent(in) :: point
+        ! points at infinity (or not finite) bound nothing
+        if (.not. abs(point) < huge(1.0_real64)) return
         if (np < size(points)) then
             np = np + 1
             points(np) = point
