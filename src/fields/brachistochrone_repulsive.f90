@@ -70,6 +70,7 @@ module brachistochrone_repulsive
             gauss_legendre, integrate_adaptive
     use brachistochrone_roots, only: root_function, bracketed_secant
     use brachistochrone_quad_math, only: expm1
+    use brachistochrone_fast_math, only: inverse_sqrt
     use brachistochrone_solution, only: endpoint_status, region_outside
     use brachistochrone_arches, only: arch_unbounded, arch_first, arch_second
     use brachistochrone_repulsive_panels, only: panel_rules, new_panel_rules, panel_piece, &
@@ -372,22 +373,22 @@ contains
             ! within `stretch` widths sqrt(d) of the apse (and nu < pi/2) the sinh map
             ! sin(nu/2) = c sinh(xi), c = sqrt(d/(R-1)), in w = tanh(xi/2), split where
             ! sinh(xi) = s_mid, so that both pieces meet at the same point to a few ulps
-            c = sqrt(curve%split/curve%apse_m1)
-            s_mid = min(stretch, sqrt(0.5_qp)/c)
+            c = root(curve%split/curve%apse_m1)
+            s_mid = min(stretch, root(0.5_qp)/c)
             sin_mid = min(c*s_mid, 1.0_qp)
-            v_mid = sin_mid/(1.0_qp + sqrt((1.0_qp - sin_mid)*(1.0_qp + sin_mid)))
+            v_mid = sin_mid/(1.0_qp + root((1.0_qp - sin_mid)*(1.0_qp + sin_mid)))
             ! tan(nu_r/4) = tan(phi/2), phi = atan2(sqrt(r_gap), sqrt(r - 1))
-            big = sqrt(r_gap + (r - 1.0_qp))
-            v_r = sqrt(r_gap)/(sqrt(r - 1.0_qp) + big)
+            big = root(r_gap + (r - 1.0_qp))
+            v_r = root(r_gap)/(root(r - 1.0_qp) + big)
             if (v_r < v_mid) then
-                call add(pieces, n, piece_apse, .false., half_tanh(sqrt(r_gap/curve%split)), &
+                call add(pieces, n, piece_apse, .false., half_tanh(root(r_gap/curve%split)), &
                          half_tanh(s_mid))
                 call add(pieces, n, piece_arch, .false., v_mid, 1.0_qp)
             else if (r - 1.0_qp < r_gap) then
                 ! r next to the start: in mu = pi - nu from 0, so that the short interval
                 ! keeps its relative accuracy as r -> 1
                 call add(pieces, n, piece_arch_start, .false., 0.0_qp, &
-                         sqrt(r - 1.0_qp)/(sqrt(r_gap) + big))
+                         root(r - 1.0_qp)/(root(r_gap) + big))
             else
                 call add(pieces, n, piece_arch, .false., v_r, 1.0_qp)
             end if
@@ -416,7 +417,7 @@ contains
             real(qp), intent(in) :: h_lo, h_hi
             real(qp) :: width, h_mid
             if (.not. (h_hi > h_lo)) return
-            width = sqrt(curve%width2)
+            width = root(curve%width2)
             if (curve%width2 > 0.0_qp .and. h_lo < stretch*width) then
                 h_mid = width*stretch
                 call add(pieces, n, kind, .true., half_tanh(h_lo/width), &
@@ -432,8 +433,17 @@ contains
     elemental function half_tanh(s) result(t)
         real(qp), intent(in) :: s
         real(qp) :: t
-        t = s/(1.0_qp + sqrt(1.0_qp + s*s))
+        t = s/(1.0_qp + root(1.0_qp + s*s))
     end function half_tanh
+
+    !> sqrt(x) for x >= 0 within 2 ulp, from `inverse_sqrt` (a third of sqrt's cost): for
+    !! the pieces' ends, where it is formed many times per endpoint.
+    elemental function root(x) result(y)
+        real(qp), intent(in) :: x
+        real(qp) :: y
+        y = 0.0_qp
+        if (x > 0.0_qp) y = x*inverse_sqrt(x)
+    end function root
 
     pure subroutine add(pieces, n, kind, stretched, lower, upper)
         type(panel_piece), intent(inout) :: pieces(:)
@@ -1070,8 +1080,8 @@ contains
 
     !> For 1 < rho < 3/2, the angles at rho of the critical curve and of the curve with
     !! its apse at rho, which split the targets among the branches (0 otherwise); the
-    !! latter in binary128 on the fast panels (adaptively if they fail).
-    !! status: status_ok or the first failure of those integrals.
+    !! latter in hardware precision (`solve_target` takes it in binary128 when a target
+    !! is within 1e-15 of it). status: status_ok or the first failure of those integrals.
     pure subroutine branch_angles(rho, rules, angle_critical, angle_apse, status)
         real(qp), intent(in) :: rho
         type(panel_rules), intent(in) :: rules
@@ -1086,22 +1096,47 @@ contains
         if (.not. (rho > 1.0_qp .and. rho < 1.5_qp)) return
         call critical_values(rho, angle_critical, dummy(1), dummy(2), stat(1))
         call curve_from_apse(rho, curve, stat(2))
-        call panel_values(curve, rho, .false., rules, .false., values, stat(3))
+        call panel_values(curve, rho, .false., rules, .true., values, stat(3))
         angle_apse = values(1)
-        if (stat(3) /= status_ok) then
-            call first_integral(curve, want_angle, rho, gauss_legendre(20), angle_apse, &
-                                stat(3))
-        end if
+        if (stat(3) /= status_ok) call apse_angle_exact(rho, rules, angle_apse, stat(3))
         status = first_failure(stat)
     end subroutine branch_angles
 
+    !> Theta(rho, rho) of the curve with its apse at rho, in binary128: fast panels, or
+    !! adaptively when they decline. status: status_ok or the integral's failure.
+    pure subroutine apse_angle_exact(rho, rules, angle_apse, status)
+        real(qp), intent(in) :: rho
+        type(panel_rules), intent(in) :: rules
+        real(qp), intent(out) :: angle_apse
+        integer, intent(out) :: status
+        type(repulsive_curve) :: curve
+        real(qp) :: values(3)
+        call curve_from_apse(rho, curve, status)
+        call panel_values(curve, rho, .false., rules, .false., values, status)
+        angle_apse = values(1)
+        if (status /= status_ok) then
+            call first_integral(curve, want_angle, rho, gauss_legendre(20), angle_apse, &
+                                status)
+        end if
+    end subroutine apse_angle_exact
+
     !> The curve from A through (rho, target): the radial path for target 0, else the
     !! branch that holds the target (complete arches when rho = 1).
-    pure subroutine solve_target(rho, target, angle_critical, angle_apse, rules, solution)
-        real(qp), intent(in) :: rho, target, angle_critical, angle_apse
+    pure subroutine solve_target(rho, target, angle_critical, angle_apse_xp, rules, solution)
+        real(qp), intent(in) :: rho, target, angle_critical, angle_apse_xp
         type(panel_rules), intent(in) :: rules
         type(repulsive_solution), intent(inout) :: solution
         integer :: stat_values
+        real(qp) :: angle_apse
+        angle_apse = angle_apse_xp
+        if (rho > 1.0_qp .and. rho < 1.5_qp .and. &
+            abs(target - angle_apse) <= 1.0e-15_qp*target) then
+            call apse_angle_exact(rho, rules, angle_apse, stat_values)
+            if (stat_values /= status_ok) then
+                solution%status = stat_values
+                return
+            end if
+        end if
         if (target == 0.0_qp) then
             ! psi = 0, m = 0: the radial path (K = 0); B = A when rho = 1
             call set_from_gap(3.0_qp, solution%curve)

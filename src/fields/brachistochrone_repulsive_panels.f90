@@ -47,7 +47,7 @@ module brachistochrone_repulsive_panels
     integer, parameter :: ladder(*) = [6, 8, 10, 12, 16, 20, 24, 28, 32, 40, 48]
     integer, parameter :: max_nodes = 48, max_panels = 64
     !> Digits aimed at: binary128 (with a margin over 34) and the hardware phase.
-    real(real64), parameter :: quad_digits = 37.0_real64, hardware_digits = 20.5_real64
+    real(real64), parameter :: quad_digits = 35.0_real64, hardware_digits = 20.5_real64
     !> Digits aimed at by the complex-step slopes (used only through a step below 1e-17)
     real(real64), parameter :: slope_digits = 22.0_real64
     real(qp), parameter :: sqrt2 = sqrt(2.0_qp), far_start = 4.0_qp
@@ -535,10 +535,12 @@ contains
                 one_minus = (1.0_qp - v)*(1.0_qp + v)
                 inv = 2.0_qp/one_minus
                 sn = pc%root_ratio*v*inv
-                cs = sqrt((1.0_qp - sn)*(1.0_qp + sn))
-                xm1 = c%rm1*cs*cs
+                one_minus = (1.0_qp - sn)*(1.0_qp + sn)
+                rx = inverse_sqrt(one_minus)
+                cs = one_minus*rx
+                xm1 = c%rm1*one_minus
                 point = 1.0_qp + xm1
-                rw = w*2.0_qp*inv/(pc%root_rm1*cs)*inverse_sqrt(point + c%p)
+                rw = w*2.0_qp*inv*rx/pc%root_rm1*inverse_sqrt(point + c%p)
             else
                 inv = 1.0_qp/(1.0_qp + v*v)
                 sn = 2.0_qp*v*inv
