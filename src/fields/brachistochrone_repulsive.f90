@@ -902,7 +902,7 @@ contains
         end do
         call falsi_xp(rho, target, arch, rules, lo, f_lo, hi, f_hi, x0, fx0, steps, status)
         if (status /= status_ok) return
-        h = min(1.0e-6_qp*max(1.0_qp, abs(x0)), 0.5_qp*(x0 - lo), 0.5_qp*(hi - x0))
+        h = min(1.0e-6_qp*lambda_scale(arch, x0), 0.5_qp*(x0 - lo), 0.5_qp*(hi - x0))
         if (.not. h > 0.0_qp) return
         call mismatch_xp(rho, target, arch, rules, x0 + h, f_plus, stat(1))
         call mismatch_xp(rho, target, arch, rules, x0 - h, f_minus, stat(2))
@@ -921,7 +921,7 @@ contains
             dx = -f0/slopes(1)
             x = x0 + dx
             if (x > lo .and. x < hi .and. 1.0e-17_qp*abs(dx) + curvature*dx*dx <= &
-                2.0_qp*eps_qp*abs(x) + tiny(1.0_qp)) then
+                2.0_qp*eps_qp*lambda_scale(arch, x)) then
                 call curve_of_lambda(arch, x0 + 0.5_qp*dx, curve)
                 conserved = curve%k
                 call curve_of_lambda(arch, x, solution%curve)
@@ -944,12 +944,12 @@ contains
         f1 = v1(1) - target
         steps = steps + 2
         if (any(stat /= status_ok) .or. .not. (x1 > lo .and. x1 < hi)) return
-        if (f1 == f0 .or. abs(x1 - x0) > 1.0e-12_qp*max(1.0_qp, abs(x0))) return
-        if (abs(f1) > 1.0e-6_qp*abs(f0) .and. abs(f1) > 4.0_qp*eps_qp*max(target, 1.0_qp)) &
+        if (f1 == f0 .or. abs(x1 - x0) > 1.0e-12_qp*lambda_scale(arch, x0)) return
+        if (abs(f1) > 1.0e-6_qp*abs(f0) .and. abs(f1) > 4.0_qp*eps_qp*target) &
             return
         rate = (v1 - v0)/(x1 - x0)
         x = x1 - f1/rate(1)
-        if (curvature*abs(x - x0)*abs(x - x1) > eps_qp*max(abs(x), 1.0e-3_qp)) return
+        if (curvature*abs(x - x0)*abs(x - x1) > eps_qp*lambda_scale(arch, x)) return
         call curve_of_lambda(arch, x, solution%curve)
         solution%arch = arch
         solution%angle = v1(1) + rate(1)*(x - x1)
@@ -959,6 +959,17 @@ contains
         solution%status = status_ok
         done = .true.
     end subroutine solve_branch_fast
+
+    !> The scale of lambda's absolute error: 1 for unbounded curves (g = exp(lambda));
+    !! on bounded ones R - 1 = -expm1(lambda)/2 is relative to lambda as R -> 1, so
+    !! min(1, |lambda|).
+    elemental function lambda_scale(arch, lambda) result(scale)
+        integer, intent(in) :: arch
+        real(qp), intent(in) :: lambda
+        real(qp) :: scale
+        scale = 1.0_qp
+        if (arch /= arch_unbounded) scale = max(min(1.0_qp, abs(lambda)), tiny(1.0_qp))
+    end function lambda_scale
 
     !> Regula falsi (Anderson-Bjorck) on the hardware-precision mismatch from the bracket
     !! [lo, hi], to 1e-17 of lambda or to the evaluations' noise; x, fx: the last iterate.
@@ -988,7 +999,7 @@ contains
             call mismatch_xp(rho, target, arch, rules, x, fx, status)
             steps = steps + 1
             if (status /= status_ok) return
-            if (abs(fx) <= 1.0e-18_qp*max(target, 1.0_qp)) return
+            if (abs(fx) <= 1.0e-18_qp*target) return
             if ((fx > 0.0_qp) .eqv. (fb > 0.0_qp)) then
                 if (side == 1) then
                     scale = 1.0_qp - fx/fb
@@ -1006,7 +1017,7 @@ contains
                 fa = fx
                 side = -1
             end if
-            if (abs(b - a) <= 1.0e-17_qp*max(abs(x), 1.0_qp)) return
+            if (abs(b - a) <= 1.0e-17_qp*lambda_scale(arch, x)) return
         end do
     end subroutine falsi_xp
 
