@@ -105,6 +105,9 @@ module brachistochrone_repulsive
     !! asinh(64) ~ 4.85, so a rounded xi costs a few eps, not xi*eps ~ 70 eps).
     real(qp), parameter :: stretch = 8.0_qp
     integer, parameter :: want_angle = 1, want_length = 2, want_time = 3
+    !> The radius argument that means the apse of a bounded curve (R itself may round to
+    !! 1 when R - 1 is below binary128's spacing there)
+    real(qp), parameter :: the_apse = -1.0_qp
 
     !> One brachistochrone from A, by its parameter. Build it with a `curve_from_*`.
     type :: repulsive_curve
@@ -361,7 +364,7 @@ contains
         if (curve%bounded) then
             ! R - r from 3 - 2r (exact near 3/2) and the stored 3 - 2R: R itself may not
             ! be representable next to 3/2 (R = 3/2 - d/2 with d below eps)
-            if (r >= curve%apse) then
+            if (r == the_apse .or. r >= curve%apse) then
                 r_gap = 0.0_qp    ! the apse (R itself may be rounded: r = R is the apse)
             else if (r > start_end) then
                 r_gap = 0.5_qp*((3.0_qp - 2.0_qp*r) - curve%apse_gap)
@@ -378,8 +381,12 @@ contains
             sin_mid = min(c*s_mid, 1.0_qp)
             v_mid = sin_mid/(1.0_qp + root((1.0_qp - sin_mid)*(1.0_qp + sin_mid)))
             ! tan(nu_r/4) = tan(phi/2), phi = atan2(sqrt(r_gap), sqrt(r - 1))
-            big = root(r_gap + (r - 1.0_qp))
-            v_r = root(r_gap)/(root(r - 1.0_qp) + big)
+            big = 0.0_qp
+            v_r = 0.0_qp
+            if (r_gap > 0.0_qp) then
+                big = root(r_gap + (r - 1.0_qp))
+                v_r = root(r_gap)/(root(r - 1.0_qp) + big)
+            end if
             if (v_r < v_mid) then
                 call add(pieces, n, piece_apse, .false., half_tanh(root(r_gap/curve%split)), &
                          half_tanh(s_mid))
@@ -494,9 +501,9 @@ contains
         end if
         stat(4:6) = status_ok
         if (second) then
-            call first_integral(curve, want_angle, curve%apse, rule, apse(1), stat(4))
-            call first_integral(curve, want_length, curve%apse, rule, apse(2), stat(5))
-            call first_integral(curve, want_time, curve%apse, rule, apse(3), stat(6))
+            call first_integral(curve, want_angle, the_apse, rule, apse(1), stat(4))
+            call first_integral(curve, want_length, the_apse, rule, apse(2), stat(5))
+            call first_integral(curve, want_time, the_apse, rule, apse(3), stat(6))
             angle = 2.0_qp*apse(1) - angle
             length = 2.0_qp*apse(2) - length
             time = 2.0_qp*apse(3) - time
@@ -520,7 +527,7 @@ contains
         integer :: stat
         call one_end(r, values, status)
         if (second) then
-            call one_end(curve%apse, apse, stat)
+            call one_end(the_apse, apse, stat)
             call keep_first(status, stat)
             values = 2.0_qp*apse - values
         end if
@@ -615,7 +622,7 @@ contains
         call curve_of_lambda(self%arch, x, curve)
         call first_integral(curve, want_angle, self%rho, self%rule, angle, status)
         if (self%arch == arch_second) then
-            call first_integral(curve, want_angle, curve%apse, self%rule, apse, stat)
+            call first_integral(curve, want_angle, the_apse, self%rule, apse, stat)
             angle = 2.0_qp*apse - angle
             call keep_first(status, stat)
         end if
@@ -705,7 +712,7 @@ contains
         integer :: stat
         call one_end(r, slopes, status)
         if (arch == arch_second) then
-            call one_end(curve%apse, apse, stat)
+            call one_end(the_apse, apse, stat)
             call keep_first(status, stat)
             slopes = 2.0_qp*apse - slopes
         end if
@@ -783,7 +790,7 @@ contains
               (0.0_xp, 0.0_xp), (0.0_xp, 0.0_xp), rm1, d]
         cc(1:2) = [real_part(cc(1), curve%k), real_part(cc(2), curve%p)]
         ! as in plan_pieces (R - r with its binary128 real part)
-        if (r >= curve%apse) then
+        if (r == the_apse .or. r >= curve%apse) then
             rg = 0.0_xp
         else if (r > start_end) then
             rg = real_part(-0.5_xp*e, 0.5_qp*((3.0_qp - 2.0_qp*r) - curve%apse_gap))
@@ -796,7 +803,8 @@ contains
         if (real(s_mid) > real(stretch, xp)) s_mid = real(stretch, xp)
         sin_mid = c*s_mid
         if (real(sin_mid) > 1.0_xp) sin_mid = 1.0_xp
-        big = sqrt(rg + real(r - 1.0_qp, xp))
+        big = 0.0_xp
+        if (real(rg) > 0.0_xp) big = sqrt(rg + real(r - 1.0_qp, xp))
         do i = 1, size(pieces)
             upper_c(i) = 1.0_xp
             select case (pieces(i)%kind)
