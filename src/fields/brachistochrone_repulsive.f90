@@ -60,6 +60,21 @@
 !! extra turn costs asymptotically 2 pi sqrt(27/8) = 11.5429... in time, and g shrinks
 !! by exp(-2 pi sqrt3) per turn;
 !! both limits are approached like O(g) (measured in test_repulsive).
+!!
+!! **The solver** (`solve_repulsive`; the unknown lambda = log g or log(3 - 2R) of each
+!! branch). The pieces above are integrated on fixed Gauss-Legendre panels chosen once
+!! per curve from the located singularities (`brachistochrone_repulsive_panels`; the sinh
+!! and nu maps in rational form, so a node needs square roots only). The root is found
+!! in hardware precision (x87 extended, about 19 digits: the bracket walked down from the
+!! branch's top, then regula falsi), then one binary128 evaluation of theta, s, t at that
+!! root x0 and a Newton step on the slopes d theta/d lambda, d s/d lambda obtained by
+!! the complex step in hardware precision (curve, pieces' ends and panels all carried
+!! through x + i h dx/dlambda); t by Hamilton-Jacobi, dt/d theta = K at fixed rho. The
+!! step is accepted when its error, 1e-17 |dx| + curvature dx^2 (the curvature and a
+!! cross-check of the slope from central differences), is below a rounding of lambda;
+!! else a second binary128 evaluation and the secant through both (certified by the
+!! residual's decrease), else the adaptive solver (`solve_branch`), which also takes
+!! the curves whose panels decline (g or 3 - 2R below about 1e-41).
 module brachistochrone_repulsive
     use brachistochrone_kinds, only: qp, pi, eps_qp
     use brachistochrone_status, only: status_ok, status_psi_out_of_range, &
@@ -101,8 +116,9 @@ module brachistochrone_repulsive
     !> Breakpoints of the unbounded integrals: start piece up to x = 5/4, far piece beyond 4.
     real(qp), parameter :: start_end = 1.25_qp, far_start = 4.0_qp
     integer, parameter :: max_steps = 300
-    !> The sinh maps reach `stretch` widths from the near-double root (xi up to
-    !! asinh(64) ~ 4.85, so a rounded xi costs a few eps, not xi*eps ~ 70 eps).
+    !> The sinh maps reach `stretch` widths from the near-double root; they are taken in
+    !! t = tanh(xi/2), where 1 - t (rounded absolutely) stays above 1/9, so that a node
+    !! costs a few eps at most
     real(qp), parameter :: stretch = 8.0_qp
     integer, parameter :: want_angle = 1, want_length = 2, want_time = 3
     !> The radius argument that means the apse of a bounded curve (R itself may round to
