@@ -120,6 +120,9 @@ module brachistochrone_repulsive
     !! t = tanh(xi/2), where 1 - t (rounded absolutely) stays above 1/9, so that a node
     !! costs a few eps at most
     real(qp), parameter :: stretch = 8.0_qp
+    !> sin(nu/2) where the apse's sinh map hands over to the nu map (the map's own
+    !! singularity is at sin(nu/2) = 1: at 1/2 its rule needs a third fewer nodes)
+    real(qp), parameter :: apse_split = 0.5_qp
     integer, parameter :: want_angle = 1, want_length = 2, want_time = 3
     !> The radius argument that means the apse of a bounded curve (R itself may round to
     !! 1 when R - 1 is below binary128's spacing there)
@@ -389,11 +392,11 @@ contains
             end if
             r_gap = max(r_gap, 0.0_qp)
             ! nu from nu_r to pi (x from r down to 1), in v = tan(nu/4) from v_r to 1;
-            ! within `stretch` widths sqrt(d) of the apse (and nu < pi/2) the sinh map
+            ! within `stretch` widths sqrt(d) of the apse (and nu < pi/3) the sinh map
             ! sin(nu/2) = c sinh(xi), c = sqrt(d/(R-1)), in w = tanh(xi/2), split where
             ! sinh(xi) = s_mid, so that both pieces meet at the same point to a few ulps
             c = root(curve%split/curve%apse_m1)
-            s_mid = min(stretch, root(0.5_qp)/c)
+            s_mid = min(stretch, apse_split/c)
             sin_mid = min(c*s_mid, 1.0_qp)
             v_mid = sin_mid/(1.0_qp + root((1.0_qp - sin_mid)*(1.0_qp + sin_mid)))
             ! tan(nu_r/4) = tan(phi/2), phi = atan2(sqrt(r_gap), sqrt(r - 1))
@@ -832,7 +835,7 @@ contains
         end if
         if (.not. real(rg) > 0.0_xp) rg = 0.0_xp
         c = sqrt(d/rm1)
-        s_mid = sqrt(0.5_xp)/c
+        s_mid = real(apse_split, xp)/c
         if (real(s_mid) > real(stretch, xp)) s_mid = real(stretch, xp)
         sin_mid = c*s_mid
         if (real(sin_mid) > 1.0_xp) sin_mid = 1.0_xp
