@@ -127,6 +127,9 @@ module brachistochrone_repulsive
     !> The radius argument that means the apse of a bounded curve (R itself may round to
     !! 1 when R - 1 is below binary128's spacing there)
     real(qp), parameter :: the_apse = -1.0_qp
+    !> Added to arch_first, arch_second: the solver's unknown is mu = log(R - rho) (next
+    !! to the apse, where R - rho would be formed by cancellation from lambda)
+    integer, parameter :: near_apse = 100
 
     !> One brachistochrone from A, by its parameter. Build it with a `curve_from_*`.
     type :: repulsive_curve
@@ -141,6 +144,10 @@ module brachistochrone_repulsive
         real(qp) :: apse_m1 = 0.0_qp   !! R - 1 (bounded)
         real(qp) :: apse_gap = 0.0_qp  !! 3 - 2R (bounded)
         real(qp) :: split = 0.0_qp     !! d = r2 - R (bounded)
+        !> R - r for the radius r = r_gap_radius when the curve was made from it (exact;
+        !! -1: none, R - r is then formed from 3 - 2R or R - 1)
+        real(qp) :: r_gap = -1.0_qp
+        real(qp) :: r_gap_radius = 0.0_qp  !! the radius r of r_gap
     end type repulsive_curve
 
     !> One brachistochrone of the two-point problem.
@@ -385,6 +392,8 @@ contains
             ! be representable next to 3/2 (R = 3/2 - d/2 with d below eps)
             if (r == the_apse .or. r >= curve%apse) then
                 r_gap = 0.0_qp    ! the apse (R itself may be rounded: r = R is the apse)
+            else if (curve%r_gap >= 0.0_qp .and. r == curve%r_gap_radius) then
+                r_gap = curve%r_gap
             else if (r > start_end) then
                 r_gap = 0.5_qp*((3.0_qp - 2.0_qp*r) - curve%apse_gap)
             else
@@ -618,27 +627,42 @@ contains
 
     !> The curve of the solver's unknown lambda: unbounded g = exp(lambda); bounded
     !! 3 - 2R = exp(lambda), R - 1 = -expm1(lambda)/2 (accurate as R -> 1 too).
-    pure subroutine curve_of_lambda(arch, lambda, curve)
+    pure subroutine curve_of_lambda(arch, lambda, curve, rho)
         integer, intent(in) :: arch
         real(qp), intent(in) :: lambda
         type(repulsive_curve), intent(out) :: curve
-        if (arch == arch_unbounded) then
+        real(qp), intent(in), optional :: rho !! the endpoint (arch + near_apse only)
+        if (arch > near_apse) then
+            call set_near_apse(rho, exp(lambda), curve)
+        else if (arch == arch_unbounded) then
             call set_from_gap(exp(lambda), curve)
         else
             call set_bounded(-0.5_qp*expm1(lambda), exp(lambda), curve)
         end if
     end subroutine curve_of_lambda
 
+    !> The bounded curve with apse R = rho + r_gap, R - rho kept exactly.
+    pure subroutine set_near_apse(rho, r_gap, curve)
+        real(qp), intent(in) :: rho, r_gap
+        type(repulsive_curve), intent(out) :: curve
+        call set_bounded((rho - 1.0_qp) + r_gap, (3.0_qp - 2.0_qp*rho) - 2.0_qp*r_gap, curve)
+        curve%r_gap = r_gap
+        curve%r_gap_radius = rho
+    end subroutine set_near_apse
+
     !> `curve_of_lambda` with exp and expm1 in hardware precision (about 1e-19): for
     !! the hardware-precision evaluations, at a fraction of binary128's cost.
-    pure subroutine rough_curve_of_lambda(arch, lambda, curve)
+    pure subroutine rough_curve_of_lambda(arch, lambda, curve, rho)
         integer, intent(in) :: arch
         real(qp), intent(in) :: lambda
         type(repulsive_curve), intent(out) :: curve
+        real(qp), intent(in) :: rho
         real(xp) :: x, e
         x = real(lambda, xp)
         e = exp(x)
-        if (arch == arch_unbounded) then
+        if (arch > near_apse) then
+            call set_near_apse(rho, real(e, qp), curve)
+        else if (arch == arch_unbounded) then
             call set_from_gap(real(e, qp), curve)
         else
             ! expm1(x) = 2 sinh(x/2) exp(x/2), accurate as x -> 0
@@ -729,8 +753,9 @@ contains
         integer, intent(out) :: status
         type(repulsive_curve) :: curve
         real(qp) :: values(3)
-        call rough_curve_of_lambda(arch, lambda, curve)
-        call panel_values(curve, rho, arch == arch_second, rules, .true., values, status)
+        call rough_curve_of_lambda(arch, lambda, curve, rho)
+        call panel_values(curve, rho, mod(arch, near_apse) == arch_second, rules, .true., &
+                          values, status)
         f = values(1) - target
     end subroutine mismatch_xp
 
@@ -747,7 +772,7 @@ contains
         real(qp) :: apse(2)
         integer :: stat
         call one_end(r, slopes, status)
-        if (arch == arch_second) then
+        if (mod(arch, near_apse) == arch_second) then
             call one_end(the_apse, apse, stat)
             call keep_first(status, stat)
             slopes = 2.0_qp*apse - slopes
@@ -819,6 +844,12 @@ contains
         se = real(curve%apse_gap, xp)
         e = cmplx(se, se*h, xp)
         rm1 = cmplx(real(curve%apse_m1, xp), -0.5_xp*se*h, xp)
+        if (curve%r_gap >= 0.0_qp) then
+            ! the unknown is log(R - rho): d(R - rho) = dR = (R - rho) dmu
+            sg = real(curve%r_gap, xp)
+            e = cmplx(se, -2.0_xp*sg*h, xp)
+            rm1 = cmplx(real(curve%apse_m1, xp), sg*h, xp)
+        end if
         big_r = 1.0_xp + rm1
         d = 2.0_xp*big_r*e/(rm1*(sqrt((big_r + 3.0_xp)/rm1) + 3.0_xp))
         d = real_part(d, curve%split)
@@ -828,6 +859,8 @@ contains
         ! as in plan_pieces (R - r with its binary128 real part)
         if (r == the_apse .or. r >= curve%apse) then
             rg = 0.0_xp
+        else if (curve%r_gap >= 0.0_qp .and. r == curve%r_gap_radius) then
+            rg = cmplx(real(curve%r_gap, xp), real(curve%r_gap, xp)*h, xp)
         else if (r > start_end) then
             rg = real_part(-0.5_xp*e, 0.5_qp*((3.0_qp - 2.0_qp*r) - curve%apse_gap))
         else
@@ -934,16 +967,22 @@ contains
         f_hi = f_top
         lo = hi
         steps = 0
-        do
-            lo = max(lo - 4.0_qp, floor)
-            call mismatch_xp(rho, target, arch, rules, lo, f_lo, status)
-            steps = steps + 1
+        if (arch > near_apse) then
+            call near_apse_bracket(rho, target, arch, f_top, rules, lo, f_lo, hi, f_hi, &
+                                   steps, status)
             if (status /= status_ok) return
-            if ((f_lo > 0.0_qp) .neqv. (f_hi > 0.0_qp)) exit
-            if (lo <= floor) return
-            hi = lo
-            f_hi = f_lo
-        end do
+        else
+            do
+                lo = max(lo - 4.0_qp, floor)
+                call mismatch_xp(rho, target, arch, rules, lo, f_lo, status)
+                steps = steps + 1
+                if (status /= status_ok) return
+                if ((f_lo > 0.0_qp) .neqv. (f_hi > 0.0_qp)) exit
+                if (lo <= floor) return
+                hi = lo
+                f_hi = f_lo
+            end do
+        end if
         call falsi_xp(rho, target, arch, rules, lo, f_lo, hi, f_hi, x0, fx0, steps, status)
         if (status /= status_ok) return
         h = min(1.0e-6_qp*lambda_scale(arch, x0), 0.5_qp*(x0 - lo), 0.5_qp*(hi - x0))
@@ -955,8 +994,8 @@ contains
         slope = (f_plus - f_minus)/(2.0_qp*h)
         curvature = abs(f_plus - 2.0_qp*fx0 + f_minus)/(h*h)/abs(2.0_qp*slope) + 1.0_qp
         ! one binary128 evaluation, the Newton step on the complex-step slopes
-        call curve_of_lambda(arch, x0, curve)
-        call panel_values(curve, rho, arch == arch_second, rules, .false., v0, stat(1))
+        call curve_of_lambda(arch, x0, curve, rho)
+        call panel_values(curve, rho, mod(arch, near_apse) == arch_second, rules, .false., v0, stat(1))
         f0 = v0(1) - target
         call lambda_slopes(arch, curve, rho, rules, slopes, stat(2))
         if (any(stat /= status_ok)) return
@@ -966,10 +1005,10 @@ contains
             x = x0 + dx
             if (x > lo .and. x < hi .and. 1.0e-17_qp*abs(dx) + curvature*dx*dx <= &
                 2.0_qp*eps_qp*lambda_scale(arch, x)) then
-                call curve_of_lambda(arch, x0 + 0.5_qp*dx, curve)
+                call curve_of_lambda(arch, x0 + 0.5_qp*dx, curve, rho)
                 conserved = curve%k
-                call curve_of_lambda(arch, x, solution%curve)
-                solution%arch = arch
+                call curve_of_lambda(arch, x, solution%curve, rho)
+                solution%arch = mod(arch, near_apse)
                 solution%angle = v0(1) + slopes(1)*dx
                 solution%arclength = v0(2) + slopes(2)*dx
                 ! Hamilton-Jacobi: at fixed rho, dt/dtheta = K, the conserved momentum
@@ -983,8 +1022,8 @@ contains
         end if
         ! else a second binary128 evaluation at the Newton step, and the secant
         x1 = x0 - f0/slope
-        call curve_of_lambda(arch, x1, curve)
-        call panel_values(curve, rho, arch == arch_second, rules, .false., v1, stat(2))
+        call curve_of_lambda(arch, x1, curve, rho)
+        call panel_values(curve, rho, mod(arch, near_apse) == arch_second, rules, .false., v1, stat(2))
         f1 = v1(1) - target
         steps = steps + 2
         if (any(stat /= status_ok) .or. .not. (x1 > lo .and. x1 < hi)) return
@@ -994,8 +1033,8 @@ contains
         rate = (v1 - v0)/(x1 - x0)
         x = x1 - f1/rate(1)
         if (curvature*abs(x - x0)*abs(x - x1) > eps_qp*lambda_scale(arch, x)) return
-        call curve_of_lambda(arch, x, solution%curve)
-        solution%arch = arch
+        call curve_of_lambda(arch, x, solution%curve, rho)
+        solution%arch = mod(arch, near_apse)
         solution%angle = v1(1) + rate(1)*(x - x1)
         solution%arclength = v1(2) + rate(2)*(x - x1)
         solution%time = v1(3) + rate(3)*(x - x1)
@@ -1003,6 +1042,51 @@ contains
         solution%status = status_ok
         done = .true.
     end subroutine solve_branch_fast
+
+    !> The bracket of mu = log(R - rho) next to the apse, from the square-root law there:
+    !! theta(rho) = Theta(rho, rho) -+ 2 A sqrt(R - rho) + O(R - rho) on the first (second)
+    !! half-arch, A = sqrt((rho - 1)/(rho (3 - 2 rho))) (from Q'(R) = R^2 (2R - 3)/(R - 1)),
+    !! widened by 2 until theta - target changes sign (R - rho up to (3 - 2 rho)/4).
+    !! status: status_ok, status_no_convergence (no bracket) or an evaluation's failure.
+    pure subroutine near_apse_bracket(rho, target, arch, f_top, rules, lo, f_lo, hi, f_hi, &
+                                      steps, status)
+        real(qp), intent(in) :: rho, target, f_top
+        integer, intent(in) :: arch
+        type(panel_rules), intent(in) :: rules
+        real(qp), intent(out) :: lo, f_lo, hi, f_hi
+        integer, intent(inout) :: steps
+        integer, intent(out) :: status
+        real(qp) :: centre, top
+        integer :: i
+        centre = 2.0_qp*log(abs(f_top)/(2.0_qp*sqrt((rho - 1.0_qp)/ &
+                                                    (rho*(3.0_qp - 2.0_qp*rho)))))
+        top = log(0.25_qp*(3.0_qp - 2.0_qp*rho))
+        lo = min(centre, top) - 1.0_qp
+        hi = min(centre + 1.0_qp, top)
+        call mismatch_xp(rho, target, arch, rules, lo, f_lo, status)
+        if (status /= status_ok) return
+        call mismatch_xp(rho, target, arch, rules, hi, f_hi, status)
+        steps = steps + 2
+        do i = 1, 40
+            if (status /= status_ok) return
+            if ((f_lo > 0.0_qp) .neqv. (f_hi > 0.0_qp)) return
+            ! f -> f_top as mu -> -infinity
+            if ((f_hi > 0.0_qp) .eqv. (f_top > 0.0_qp)) then
+                if (hi >= top) exit
+                lo = hi
+                f_lo = f_hi
+                hi = min(hi + 2.0_qp, top)
+                call mismatch_xp(rho, target, arch, rules, hi, f_hi, status)
+            else
+                hi = lo
+                f_hi = f_lo
+                lo = lo - 2.0_qp
+                call mismatch_xp(rho, target, arch, rules, lo, f_lo, status)
+            end if
+            steps = steps + 1
+        end do
+        status = status_no_convergence
+    end subroutine near_apse_bracket
 
     !> The scale of lambda's absolute error: 1 for unbounded curves (g = exp(lambda));
     !! on bounded ones R - 1 = -expm1(lambda)/2 is relative to lambda as R -> 1, so
@@ -1012,7 +1096,8 @@ contains
         real(qp), intent(in) :: lambda
         real(qp) :: scale
         scale = 1.0_qp
-        if (arch /= arch_unbounded) scale = max(min(1.0_qp, abs(lambda)), tiny(1.0_qp))
+        if (arch == arch_first .or. arch == arch_second) &
+            scale = max(min(1.0_qp, abs(lambda)), tiny(1.0_qp))
     end function lambda_scale
 
     !> Regula falsi (Anderson-Bjorck) on the hardware-precision mismatch from the bracket
@@ -1181,7 +1266,7 @@ contains
         real(qp), intent(in) :: rho, target, angle_critical, angle_apse_xp
         type(panel_rules), intent(in) :: rules
         type(repulsive_solution), intent(inout) :: solution
-        integer :: stat_values
+        integer :: stat_values, near
         real(qp) :: angle_apse
         angle_apse = angle_apse_xp
         if (rho > 1.0_qp .and. rho < 1.5_qp .and. &
@@ -1206,11 +1291,14 @@ contains
         else if (rho >= 1.5_qp .or. target < angle_critical) then
             call solve_fast_or_slow(rho, target, arch_unbounded, log(3.0_qp), -target, &
                                     rules, solution)
-        else if (target <= angle_apse) then
-            call solve_fast_or_slow(rho, target, arch_first, log(3.0_qp - 2.0_qp*rho), &
-                                    angle_apse - target, rules, solution)
         else
-            call solve_fast_or_slow(rho, target, arch_second, log(3.0_qp - 2.0_qp*rho), &
+            ! next to the apse (R - rho below (3 - 2 rho)/1e4 by the square-root law of
+            ! near_apse_bracket) the unknown is log(R - rho)
+            near = merge(near_apse, 0, ((angle_apse - target)/2.0_qp)**2* &
+                         (rho*(3.0_qp - 2.0_qp*rho))/(rho - 1.0_qp) < &
+                         1.0e-4_qp*(3.0_qp - 2.0_qp*rho))
+            call solve_fast_or_slow(rho, target, merge(arch_first, arch_second, &
+                                    target <= angle_apse) + near, log(3.0_qp - 2.0_qp*rho), &
                                     angle_apse - target, rules, solution)
         end if
     end subroutine solve_target
@@ -1224,7 +1312,8 @@ contains
         type(repulsive_solution), intent(inout) :: solution
         logical :: done
         call solve_branch_fast(rho, target, arch, lambda_top, f_top, rules, solution, done)
-        if (.not. done) call solve_branch(rho, target, arch, lambda_top, f_top, solution)
+        if (.not. done) call solve_branch(rho, target, mod(arch, near_apse), lambda_top, &
+                                          f_top, solution)
     end subroutine solve_fast_or_slow
 
     !> Index of the solved curve of least time (the first of equal times; 0 if none).
