@@ -127,7 +127,7 @@ module brachistochrone_repulsive
     !> The radius argument that means the apse of a bounded curve (R itself may round to
     !! 1 when R - 1 is below binary128's spacing there)
     real(qp), parameter :: the_apse = -1.0_qp
-    !> Added to arch_first, arch_second: the solver's unknown is mu = log(R - rho) (next
+    !> Added to arch_first, arch_second: the solver's unknown is u = sqrt(R - rho) (next
     !! to the apse, where R - rho would be formed by cancellation from lambda)
     integer, parameter :: near_apse = 100
 
@@ -633,7 +633,7 @@ contains
         type(repulsive_curve), intent(out) :: curve
         real(qp), intent(in), optional :: rho !! the endpoint (arch + near_apse only)
         if (arch > near_apse) then
-            call set_near_apse(rho, exp(lambda), curve)
+            call set_near_apse(rho, lambda*lambda, curve)
         else if (arch == arch_unbounded) then
             call set_from_gap(exp(lambda), curve)
         else
@@ -661,7 +661,7 @@ contains
         x = real(lambda, xp)
         e = exp(x)
         if (arch > near_apse) then
-            call set_near_apse(rho, real(e, qp), curve)
+            call set_near_apse(rho, real(x*x, qp), curve)
         else if (arch == arch_unbounded) then
             call set_from_gap(real(e, qp), curve)
         else
@@ -845,8 +845,8 @@ contains
         e = cmplx(se, se*h, xp)
         rm1 = cmplx(real(curve%apse_m1, xp), -0.5_xp*se*h, xp)
         if (curve%r_gap >= 0.0_qp) then
-            ! the unknown is log(R - rho): d(R - rho) = dR = (R - rho) dmu
-            sg = real(curve%r_gap, xp)
+            ! the unknown is u = sqrt(R - rho): d(R - rho) = dR = 2u du
+            sg = 2.0_xp*sqrt(real(curve%r_gap, xp))
             e = cmplx(se, -2.0_xp*sg*h, xp)
             rm1 = cmplx(real(curve%apse_m1, xp), sg*h, xp)
         end if
@@ -860,7 +860,7 @@ contains
         if (r == the_apse .or. r >= curve%apse) then
             rg = 0.0_xp
         else if (curve%r_gap >= 0.0_qp .and. r == curve%r_gap_radius) then
-            rg = cmplx(real(curve%r_gap, xp), real(curve%r_gap, xp)*h, xp)
+            rg = cmplx(real(curve%r_gap, xp), 2.0_xp*sqrt(real(curve%r_gap, xp))*h, xp)
         else if (r > start_end) then
             rg = real_part(-0.5_xp*e, 0.5_qp*((3.0_qp - 2.0_qp*r) - curve%apse_gap))
         else
@@ -958,6 +958,7 @@ contains
         logical, intent(out) :: done
         real(qp) :: lo, f_lo, hi, f_hi, x0, fx0, x1, x, h, f_plus, f_minus, slope
         real(qp) :: curvature, v0(3), v1(3), f0, f1, floor, rate(3), slopes(2), dx, conserved
+        real(qp) :: scale
         integer :: status, steps, stat(2)
         type(repulsive_curve) :: curve
         done = .false.
@@ -1000,11 +1001,17 @@ contains
         call lambda_slopes(arch, curve, rho, rules, slopes, stat(2))
         if (any(stat /= status_ok)) return
         steps = steps + 1
-        if (abs(slopes(1) - slope) <= 1.0e-6_qp*abs(slopes(1))) then
+        ! the error of x that moves theta, s or t by a rounding (next to the apse, where
+        ! they vary like sqrt(R - rho) = exp(x/2), far more than a rounding of x)
+        scale = lambda_scale(arch, x0)
+        if (arch > near_apse) scale = 1.0_qp/max(abs(slopes(1))/target, &
+            abs(slopes(2)/v0(2)), abs(curve%k*slopes(1)/v0(3)), tiny(1.0_qp))
+        ! the cross-check against the central difference, to its rounding noise
+        if (abs(slopes(1) - slope) <= 1.0e-6_qp*abs(slopes(1)) + 1.0e-17_qp*target/h) then
             dx = -f0/slopes(1)
             x = x0 + dx
             if (x > lo .and. x < hi .and. 1.0e-17_qp*abs(dx) + curvature*dx*dx <= &
-                2.0_qp*eps_qp*lambda_scale(arch, x)) then
+                2.0_qp*eps_qp*scale) then
                 call curve_of_lambda(arch, x0 + 0.5_qp*dx, curve, rho)
                 conserved = curve%k
                 call curve_of_lambda(arch, x, solution%curve, rho)
@@ -1027,12 +1034,12 @@ contains
         f1 = v1(1) - target
         steps = steps + 2
         if (any(stat /= status_ok) .or. .not. (x1 > lo .and. x1 < hi)) return
-        if (f1 == f0 .or. abs(x1 - x0) > 1.0e-12_qp*lambda_scale(arch, x0)) return
+        if (f1 == f0 .or. abs(x1 - x0) > 1.0e-12_qp*scale) return
         if (abs(f1) > 1.0e-6_qp*abs(f0) .and. abs(f1) > 4.0_qp*eps_qp*target) &
             return
         rate = (v1 - v0)/(x1 - x0)
         x = x1 - f1/rate(1)
-        if (curvature*abs(x - x0)*abs(x - x1) > eps_qp*lambda_scale(arch, x)) return
+        if (curvature*abs(x - x0)*abs(x - x1) > eps_qp*scale) return
         call curve_of_lambda(arch, x, solution%curve, rho)
         solution%arch = mod(arch, near_apse)
         solution%angle = v1(1) + rate(1)*(x - x1)
@@ -1043,10 +1050,10 @@ contains
         done = .true.
     end subroutine solve_branch_fast
 
-    !> The bracket of mu = log(R - rho) next to the apse, from the square-root law there:
-    !! theta(rho) = Theta(rho, rho) -+ 2 A sqrt(R - rho) + O(R - rho) on the first (second)
-    !! half-arch, A = sqrt((rho - 1)/(rho (3 - 2 rho))) (from Q'(R) = R^2 (2R - 3)/(R - 1)),
-    !! widened by 2 until theta - target changes sign (R - rho up to (3 - 2 rho)/4).
+    !> The bracket of u = sqrt(R - rho) next to the apse, from the square-root law there:
+    !! theta(rho) = Theta(rho, rho) -+ 2 A u + O(u^2) on the first (second) half-arch,
+    !! A = sqrt((rho - 1)/(rho (3 - 2 rho))) (from Q'(R) = R^2 (2R - 3)/(R - 1)), widened
+    !! by factors 4 until theta - target changes sign (R - rho up to (3 - 2 rho)/4).
     !! status: status_ok, status_no_convergence (no bracket) or an evaluation's failure.
     pure subroutine near_apse_bracket(rho, target, arch, f_top, rules, lo, f_lo, hi, f_hi, &
                                       steps, status)
@@ -1058,11 +1065,10 @@ contains
         integer, intent(out) :: status
         real(qp) :: centre, top
         integer :: i
-        centre = 2.0_qp*log(abs(f_top)/(2.0_qp*sqrt((rho - 1.0_qp)/ &
-                                                    (rho*(3.0_qp - 2.0_qp*rho)))))
-        top = log(0.25_qp*(3.0_qp - 2.0_qp*rho))
-        lo = min(centre, top) - 1.0_qp
-        hi = min(centre + 1.0_qp, top)
+        centre = abs(f_top)/(2.0_qp*sqrt((rho - 1.0_qp)/(rho*(3.0_qp - 2.0_qp*rho))))
+        top = sqrt(0.25_qp*(3.0_qp - 2.0_qp*rho))
+        lo = 0.5_qp*min(centre, top)
+        hi = min(2.0_qp*centre, top)
         call mismatch_xp(rho, target, arch, rules, lo, f_lo, status)
         if (status /= status_ok) return
         call mismatch_xp(rho, target, arch, rules, hi, f_hi, status)
@@ -1070,17 +1076,17 @@ contains
         do i = 1, 40
             if (status /= status_ok) return
             if ((f_lo > 0.0_qp) .neqv. (f_hi > 0.0_qp)) return
-            ! f -> f_top as mu -> -infinity
+            ! f -> f_top as u -> 0
             if ((f_hi > 0.0_qp) .eqv. (f_top > 0.0_qp)) then
                 if (hi >= top) exit
                 lo = hi
                 f_lo = f_hi
-                hi = min(hi + 2.0_qp, top)
+                hi = min(4.0_qp*hi, top)
                 call mismatch_xp(rho, target, arch, rules, hi, f_hi, status)
             else
                 hi = lo
                 f_hi = f_lo
-                lo = lo - 2.0_qp
+                lo = 0.25_qp*lo
                 call mismatch_xp(rho, target, arch, rules, lo, f_lo, status)
             end if
             steps = steps + 1
@@ -1098,6 +1104,7 @@ contains
         scale = 1.0_qp
         if (arch == arch_first .or. arch == arch_second) &
             scale = max(min(1.0_qp, abs(lambda)), tiny(1.0_qp))
+        if (arch > near_apse) scale = max(abs(lambda), tiny(1.0_qp))
     end function lambda_scale
 
     !> Regula falsi (Anderson-Bjorck) on the hardware-precision mismatch from the bracket
@@ -1293,7 +1300,7 @@ contains
                                     rules, solution)
         else
             ! next to the apse (R - rho below (3 - 2 rho)/1e4 by the square-root law of
-            ! near_apse_bracket) the unknown is log(R - rho)
+            ! near_apse_bracket) the unknown is sqrt(R - rho)
             near = merge(near_apse, 0, ((angle_apse - target)/2.0_qp)**2* &
                          (rho*(3.0_qp - 2.0_qp*rho))/(rho - 1.0_qp) < &
                          1.0e-4_qp*(3.0_qp - 2.0_qp*rho))
