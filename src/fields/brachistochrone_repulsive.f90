@@ -958,7 +958,7 @@ contains
         logical, intent(out) :: done
         real(qp) :: lo, f_lo, hi, f_hi, x0, fx0, x1, x, h, f_plus, f_minus, slope
         real(qp) :: curvature, v0(3), v1(3), f0, f1, floor, rate(3), slopes(2), dx, conserved
-        real(qp) :: scale
+        real(qp) :: scale, check
         integer :: status, steps, stat(2)
         type(repulsive_curve) :: curve
         done = .false.
@@ -986,17 +986,31 @@ contains
         end if
         call falsi_xp(rho, target, arch, rules, lo, f_lo, hi, f_hi, x0, fx0, steps, status)
         if (status /= status_ok) return
-        h = min(1.0e-6_qp*lambda_scale(arch, x0), 0.5_qp*(x0 - lo), 0.5_qp*(hi - x0))
-        if (.not. h > 0.0_qp) return
-        call mismatch_xp(rho, target, arch, rules, x0 + h, f_plus, stat(1))
-        call mismatch_xp(rho, target, arch, rules, x0 - h, f_minus, stat(2))
+        if (arch > near_apse) then
+            ! u may be far below the hardware phase's noise: one-sided differences over
+            ! 1e-3 of the bracket's reach, from x0 up (the square-root law keeps theta
+            ! smooth in u there); the slope cross-check to 1e-2
+            h = 1.0e-3_qp*sqrt(0.25_qp*(3.0_qp - 2.0_qp*rho))
+            call mismatch_xp(rho, target, arch, rules, x0 + h, f_plus, stat(1))
+            call mismatch_xp(rho, target, arch, rules, x0 + 2.0_qp*h, f_minus, stat(2))
+            slope = (f_plus - fx0)/h
+            curvature = abs(f_minus - 2.0_qp*f_plus + fx0)/(h*h)/abs(2.0_qp*slope) + 1.0_qp
+            check = 1.0e-2_qp
+        else
+            h = min(1.0e-6_qp*lambda_scale(arch, x0), 0.5_qp*(x0 - lo), 0.5_qp*(hi - x0))
+            if (.not. h > 0.0_qp) return
+            call mismatch_xp(rho, target, arch, rules, x0 + h, f_plus, stat(1))
+            call mismatch_xp(rho, target, arch, rules, x0 - h, f_minus, stat(2))
+            slope = (f_plus - f_minus)/(2.0_qp*h)
+            curvature = abs(f_plus - 2.0_qp*fx0 + f_minus)/(h*h)/abs(2.0_qp*slope) + 1.0_qp
+            check = 1.0e-6_qp
+        end if
         steps = steps + 2
         if (any(stat /= status_ok)) return
-        slope = (f_plus - f_minus)/(2.0_qp*h)
-        curvature = abs(f_plus - 2.0_qp*fx0 + f_minus)/(h*h)/abs(2.0_qp*slope) + 1.0_qp
         ! one binary128 evaluation, the Newton step on the complex-step slopes
         call curve_of_lambda(arch, x0, curve, rho)
-        call panel_values(curve, rho, mod(arch, near_apse) == arch_second, rules, .false., v0, stat(1))
+        call panel_values(curve, rho, mod(arch, near_apse) == arch_second, rules, .false., &
+                          v0, stat(1))
         f0 = v0(1) - target
         call lambda_slopes(arch, curve, rho, rules, slopes, stat(2))
         if (any(stat /= status_ok)) return
@@ -1007,7 +1021,7 @@ contains
         if (arch > near_apse) scale = 1.0_qp/max(abs(slopes(1))/target, &
             abs(slopes(2)/v0(2)), abs(curve%k*slopes(1)/v0(3)), tiny(1.0_qp))
         ! the cross-check against the central difference, to its rounding noise
-        if (abs(slopes(1) - slope) <= 1.0e-6_qp*abs(slopes(1)) + 1.0e-17_qp*target/h) then
+        if (abs(slopes(1) - slope) <= check*abs(slopes(1)) + 1.0e-17_qp*target/h) then
             dx = -f0/slopes(1)
             x = x0 + dx
             if (x > lo .and. x < hi .and. 1.0e-17_qp*abs(dx) + curvature*dx*dx <= &
@@ -1030,7 +1044,8 @@ contains
         ! else a second binary128 evaluation at the Newton step, and the secant
         x1 = x0 - f0/slope
         call curve_of_lambda(arch, x1, curve, rho)
-        call panel_values(curve, rho, mod(arch, near_apse) == arch_second, rules, .false., v1, stat(2))
+        call panel_values(curve, rho, mod(arch, near_apse) == arch_second, rules, .false., &
+                          v1, stat(2))
         f1 = v1(1) - target
         steps = steps + 2
         if (any(stat /= status_ok) .or. .not. (x1 > lo .and. x1 < hi)) return
