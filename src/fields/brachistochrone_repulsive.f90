@@ -988,9 +988,9 @@ contains
         if (status /= status_ok) return
         if (arch > near_apse) then
             ! u may be far below the hardware phase's noise: one-sided differences over
-            ! 1e-3 of the bracket's reach, from x0 up (the square-root law keeps theta
-            ! smooth in u there); the slope cross-check to 1e-2
-            h = 1.0e-3_qp*sqrt(0.25_qp*(3.0_qp - 2.0_qp*rho))
+            ! 1e-3 of the square-root law's reach, from x0 up (theta is smooth in u
+            ! there); the slope cross-check to 1e-2
+            h = 1.0e-3_qp*sqrt(0.25_qp*min(3.0_qp - 2.0_qp*rho, rho - 1.0_qp))
             call mismatch_xp(rho, target, arch, rules, x0 + h, f_plus, stat(1))
             call mismatch_xp(rho, target, arch, rules, x0 + 2.0_qp*h, f_minus, stat(2))
             slope = (f_plus - fx0)/h
@@ -1314,11 +1314,11 @@ contains
             call solve_fast_or_slow(rho, target, arch_unbounded, log(3.0_qp), -target, &
                                     rules, solution)
         else
-            ! next to the apse (R - rho below (3 - 2 rho)/1e4 by the square-root law of
-            ! near_apse_bracket) the unknown is sqrt(R - rho)
+            ! next to the apse (R - rho below 1e-4 of 3 - 2 rho and of rho - 1 by the
+            ! square-root law of near_apse_bracket) the unknown is sqrt(R - rho)
             near = merge(near_apse, 0, ((angle_apse - target)/2.0_qp)**2* &
                          (rho*(3.0_qp - 2.0_qp*rho))/(rho - 1.0_qp) < &
-                         1.0e-4_qp*(3.0_qp - 2.0_qp*rho))
+                         1.0e-4_qp*min(3.0_qp - 2.0_qp*rho, rho - 1.0_qp))
             call solve_fast_or_slow(rho, target, merge(arch_first, arch_second, &
                                     target <= angle_apse) + near, log(3.0_qp - 2.0_qp*rho), &
                                     angle_apse - target, rules, solution)
