@@ -74,7 +74,11 @@
 !! cross-check of the slope from central differences), is below a rounding of lambda;
 !! else a second binary128 evaluation and the secant through both (certified by the
 !! residual's decrease), else the adaptive solver (`solve_branch`), which also takes
-!! the curves whose panels decline (g or 3 - 2R below about 1e-41).
+!! the curves whose panels decline (g or 3 - 2R below about 1e-41). Next to the apse
+!! (R - rho below 1e-4 of 3 - 2 rho and rho - 1) the unknown is u = sqrt(R - rho)
+!! instead: theta is linear in u there (theta = Theta(rho, rho) -+ 2 A u, A =
+!! sqrt((rho - 1)/(rho (3 - 2 rho)))), and the curve keeps R - rho = u^2 exactly
+!! (`r_gap`), which lambda would form by cancellation.
 module brachistochrone_repulsive
     use brachistochrone_kinds, only: qp, pi, eps_qp
     use brachistochrone_status, only: status_ok, status_psi_out_of_range, &
