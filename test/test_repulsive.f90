@@ -35,6 +35,7 @@ contains
         call branch_structure()
         call two_point()
         call two_point_mpmath()
+        call next_to_the_apse()
         call winding_asymptotics()
         call constructors()
         call cycloid_limit()
@@ -420,6 +421,41 @@ contains
         call check_digits(sol(1)%time, 2.998405500762512523847012785093331940808_qp, &
                           33.0_qp, 'rho = 1, psi = 1 (complete arch): t')
     end subroutine two_point_mpmath
+
+    !> B next to the apse, R - rho = 2^-60 and 2^-100 on both half-arches: the curve with
+    !! apse R = rho + 2^-k is exact in binary128 and its angle, s and t at rho come from
+    !! the adaptive integrals (R - rho formed exactly there); solving for that angle must
+    !! give back R and t (t is well conditioned in psi; the solver's unknown there is
+    !! sqrt(R - rho), which keeps it exact).
+    subroutine next_to_the_apse()
+        type(repulsive_curve) :: curve
+        type(repulsive_solution), allocatable :: sol(:)
+        real(qp), parameter :: rhos(2) = [1.25_qp, 1.4375_qp]
+        real(qp) :: v(3), worst_r, worst_t, rho
+        integer :: k, i, second, best, status
+        call section('repulsive: two-point problem next to the apse (R - rho = 2^-60, 2^-100)')
+        worst_r = 99.0_qp
+        worst_t = 99.0_qp
+        do i = 1, 2
+            rho = rhos(i)
+            do k = 60, 100, 40
+                call curve_from_apse(rho + 2.0_qp**(-k), curve, status)
+                do second = 0, 1
+                    call repulsive_values(curve, rho, second == 1, v(1), v(2), v(3), status)
+                    call solve_repulsive(rho, v(1), 0, sol, best, status, mirror=.false.)
+                    call check(status == status_ok .and. sol(1)%status == status_ok .and. &
+                               sol(1)%arch == merge(arch_second, arch_first, second == 1), &
+                               'next to the apse: solved on the right half-arch')
+                    worst_r = min(worst_r, digits_of_agreement(sol(1)%curve%apse - rho, &
+                                                               2.0_qp**(-k)))
+                    worst_t = min(worst_t, digits_of_agreement(sol(1)%time, v(3)))
+                end do
+            end do
+        end do
+        write (output_unit, '(a,2f7.2)') '   fewest digits of R - rho, t: ', worst_r, worst_t
+        call check(worst_r >= 15.0_qp, 'next to the apse: R - rho recovered (conditioning: 19)')
+        call check(worst_t >= 32.0_qp, 'next to the apse: t to 32 digits')
+    end subroutine next_to_the_apse
 
     !> Each extra turn costs, asymptotically, the time of one turn round the circle
     !! r = 3/2 (where the angular speed v/r is largest): 2 pi r/v = 2 pi sqrt(27/8), and
