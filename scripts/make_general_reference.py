@@ -212,15 +212,15 @@ def binary128(x):
 
 
 # Apse radii of the complete_small_r and edge_small_r rows, per field where not the
-# default. R-bar is ill conditioned there (cond ~ 1/R for the harmonic law at rho = 1,
-# ~ R^(-1/2) for the inverse square): rows whose cond exceeds ~1e12 are made at 85 and 100
-# digits so that the two precisions still agree to >= 40 digits.
+# default. R-bar is ill conditioned there (cond ~ 1/R for the harmonic law and the
+# inverse square): rows whose cond exceeds ~1e12 are made at 85 and 100 digits so that
+# the two precisions still agree to >= 40 digits.
 EDGE_RADII = {"harmonic": ["1e-6", "1e-12", "1e-20"], "power2": ["1e-6", "1e-20", "1e-30"]}
 
 
 def precisions(name, r):
     """(low, high) digits for a row with apse radius r, as a 1-tuple, or ()."""
-    if name == "harmonic" and mp.mpf(r) < mp.mpf("1e-15"):
+    if name in ("harmonic", "power2") and mp.mpf(r) < mp.mpf("1e-15"):
         return ((85, 100),)
     return ()
 
