@@ -6,7 +6,10 @@
 !! * harmonic (Saitoh's closed forms in the field): data/reference/general_harmonic_mpmath.csv
 !!   (scripts/make_general_reference.py harmonic; Tee (27), (33), (39), v^2 = 1 - x^2);
 !! * inverse square (the fast path): data/reference/general_power2_mpmath.csv
-!!   (scripts/make_general_reference.py power2; v^2 = 2 (1/x - 1)).
+!!   (scripts/make_general_reference.py power2; v^2 = 2 (1/x - 1));
+!! * uniform gravity (Tee sec. 1, not a central field: the cycloid's own equations, g = 1,
+!!   endpoints by the field's coordinates x, y): data/reference/uniform_field_mpmath.csv
+!!   (scripts/make_uniform_field_reference.py); its R-bar is the rolling radius a.
 !! Each of R-bar, s, t is credited with its condition number with respect to psi,
 !! c = |dF/dpsi| psi/F (columns cond_R, cond_s, cond_t, computed by mpmath), as in
 !! test_central_force; the digits printed are raw and credited, by class of endpoint
@@ -37,8 +40,12 @@ module test_field_references
     !! curve R - 1 = 2^-112 is returned, s and t wrong). A row that reaches 32 digits is
     !! announced so that it can be taken off this list.
     integer, parameter :: repulsive_open(8) = [21, 23, 24, 25, 27, 28, 37, 42]
-    !> Rows of the harmonic and inverse-square tables open on main (none known yet).
+    !> Rows of the harmonic and inverse-square tables open on main (none known).
     integer, parameter :: harmonic_open(0) = [integer ::], inverse_square_open(0) = [integer ::]
+    !> Uniform row 15, B = (x, y) = (pi/2 rounded down to binary128, 1): the lowest point
+    !! to within 2e-34, mathematically on the first half-arch (phi < pi), labelled
+    !! 'second' (the arch is decided from the computed phi, not from x against pi y/2).
+    integer, parameter :: uniform_open(1) = [15]
 
 contains
 
@@ -50,6 +57,8 @@ contains
                               'data/reference/general_harmonic_mpmath.csv', harmonic_open)
         call field_references('inverse_square', 0.0_qp, &
                               'data/reference/general_power2_mpmath.csv', inverse_square_open)
+        call field_references('uniform', 0.0_qp, &
+                              'data/reference/uniform_field_mpmath.csv', uniform_open)
     end subroutine run_field_reference_tests
 
     !> Every endpoint of `path` solved by field `name` to >= 32 digits in R, s, t
@@ -65,7 +74,7 @@ contains
         real(qp) :: digits(3), worst_checked
         integer :: i, k, status
         logical :: ok
-        call section(name//' field: two-point references (mpmath, original integrals)')
+        call section(name//' field: two-point references (independent, mpmath)')
         call read_reference(path, 30, table, ok)
         if (.not. ok) return
         call new_field(name, exponent, field, status)
@@ -114,8 +123,9 @@ contains
         classes = [character(len=class_length) :: classes, 'all']
     end function class_names
 
-    !> Raw digits of R, s, t of row i (all 0 for a wrong status, arch or presence of R;
-    !! R 99 where it is absent as required); rows under 33 credited digits are printed.
+    !> Raw digits of R, s, t of row i (all 0 for a wrong status, arch or presence of R,
+    !! the digits then printed; R 99 where it is absent as required); rows under 33
+    !! credited digits are printed.
     subroutine row_digits(field, table, i, open, digits)
         class(brachistochrone_field), intent(in) :: field
         type(csv_table), intent(in) :: table
@@ -124,20 +134,28 @@ contains
         real(qp), intent(out) :: digits(3)
         type(endpoint_solution) :: b
         logical :: has_r
-        b = field%solve(table%real_value(i, 'rho'), table%real_value(i, 'psi'))
+        b = field%solve(table%real_value(i, field%coordinate(1)), &
+                        table%real_value(i, field%coordinate(2)))
         has_r = len(table%text(i, 'R')) > 0
         digits = 0.0_qp
-        if (b%status /= status_ok .or. .not. same_arch(arch_word(b%arch), &
-            table%text(i, 'arch'), table%real_value(i, 'rho')) .or. &
-            (b%has_apse_radius .neqv. has_r)) then
-            write (output_unit, '(5x,a,i0,a,i0,2a)') 'row ', i, ': status ', b%status, &
-                ', arch ', arch_word(b%arch)
+        if (b%status /= status_ok) then
+            write (output_unit, '(5x,a,i0,a,i0)') 'row ', i, ': status ', b%status
             return
         end if
         digits(1) = 99.0_qp
         if (has_r) digits(1) = digits_of_agreement(b%apse_radius, table%real_value(i, 'R'))
         digits(2) = digits_of_agreement(b%arclength, table%real_value(i, 's'))
         digits(3) = digits_of_agreement(b%time, table%real_value(i, 't'))
+        if (.not. same_arch(arch_word(b%arch), table%text(i, 'arch'), &
+                            table%real_value(i, field%coordinate(1))) .or. &
+            (b%has_apse_radius .neqv. has_r)) then
+            write (output_unit, '(5x,a,i0,1x,5a,l2,a,3f7.2)') 'row ', i, &
+                table%text(i, 'class'), trim(merge(' (open)', '       ', open)), &
+                ': arch ', arch_word(b%arch), ', R-bar given', b%has_apse_radius, &
+                ': not the table''s, counted as 0 digits; digits R, s, t', digits
+            digits = 0.0_qp
+            return
+        end if
         if (minval(digits + credits(table, i)) < 33.0_qp) &
             write (output_unit, '(5x,a,i0,1x,3a,3f7.2)') 'weakest: row ', i, &
             table%text(i, 'class'), trim(merge(' (open)', '       ', open)), &
@@ -148,7 +166,7 @@ contains
     !! complete arch, rho = 1, 'second').
     pure logical function same_arch(word, expected, rho)
         character(len=*), intent(in) :: word, expected
-        real(qp), intent(in) :: rho
+        real(qp), intent(in) :: rho    !! the endpoint's first coordinate
         same_arch = word == expected .or. (word == 'complete' .and. expected == 'second' &
                                            .and. rho == 1.0_qp)
     end function same_arch
