@@ -2,9 +2,10 @@
 """Independent two-point references for the repulsive inverse-square field (Tee 1998,
 sections 2, 3, 6), solved with mpmath on the ORIGINAL integrals (23), (31), (37).
 
-Command (from the repository root; a few minutes on one core):
+Command (from the repository root; about 80 s of CPU time):
     .venv/bin/python scripts/make_repulsive_two_point_reference.py \
         > data/reference/repulsive_two_point_mpmath.csv
+(optional arguments: 0-based case numbers of `cases()` to make only those rows.)
 
 Law (mu = -1, release from rest at radius 1): v^2 = 2 (x - 1)/x, x >= 1 (44). A curve
 from A = (1, 0) is fixed by its angular momentum K (16); with x = 1 + w (a change of
@@ -224,6 +225,8 @@ def solve(rho, psi, arch, var, y0, h):
         f1 = f(clamp(y0 + h))
         if abs(f1 - f0) > noise or fb_sign(f1) != fb_sign(f0):
             break
+        if clamp(y0 + h) in (lo_limit, hi_limit):
+            raise RuntimeError("flat at rho=%s psi=%s" % (rho, psi))
         h *= 16
     direction = 1 if (f1 - f0) * f0 < 0 else -1
     a, fa = y0, f0
