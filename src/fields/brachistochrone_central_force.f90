@@ -47,7 +47,7 @@ module brachistochrone_central_force
     use brachistochrone_fast_math, only: inverse_sqrt
     use brachistochrone_fast_exp, only: fast_exp
     use brachistochrone_quadrature, only: gauss_legendre_rule, gauss_legendre
-    use brachistochrone_speed_laws, only: speed_law
+    use brachistochrone_speed_laws, only: speed_law, xp
     use brachistochrone_solution, only: endpoint_solution, endpoint_status, region_inside
     use brachistochrone_arches, only: arch_first, arch_second, arch_complete, arch_radial, &
                                       arch_inaccessible
@@ -62,6 +62,8 @@ module brachistochrone_central_force
     integer, parameter :: min_nodes = 4, max_nodes = 80
     !> Digits aimed at by the full and the double-precision rules.
     real(qp), parameter :: fine_digits = 36.0_qp, coarse_digits = 17.0_qp
+    !> Digits aimed at by the hardware-precision rules of the early phase.
+    real(qp), parameter :: hardware_digits = 20.0_qp
     !> A panel whose bound is below this share of the running sum is skipped.
     real(qp), parameter :: negligible = 1.0e-40_qp
     !> Panel kinds: lambda = b s^2 (from the apse), lambda, delta, delta = c s^2 (from
@@ -78,6 +80,7 @@ module brachistochrone_central_force
         integer :: n = 0
         real(qp), allocatable :: offset(:), weight(:)
         real(real64), allocatable :: offset64(:), weight64(:)
+        real(xp), allocatable :: offset_xp(:), weight_xp(:)
     end type gauss_nodes
 
     !> The general engine for one speed law: the law and the Gauss rules.
@@ -108,6 +111,7 @@ module brachistochrone_central_force
         real(qp) :: c(6) = 0.0_qp
         real(qp) :: lambda_r = 0.0_qp, delta_r = 0.0_qp
         real(qp) :: weight_below = 0.0_qp, weight_above = 1.0_qp
+        real(xp) :: cx(4) = 0.0_xp    !! the law's constants in hardware precision
     end type arch_setup
 
     !> The endpoint of a two-point problem and the unknown used.
@@ -138,6 +142,8 @@ contains
             model%gauss(j)%weight = 0.5_qp*rule%weight
             model%gauss(j)%offset64 = real(model%gauss(j)%offset, real64)
             model%gauss(j)%weight64 = real(model%gauss(j)%weight, real64)
+            model%gauss(j)%offset_xp = real(model%gauss(j)%offset, xp)
+            model%gauss(j)%weight_xp = real(model%gauss(j)%weight, xp)
         end do
         sigma = law%log_scales()
         model%sigma_apse = sigma(1)
@@ -179,6 +185,7 @@ contains
         real(qp), intent(in) :: d, delta_r
         logical, intent(in) :: second, whole
         a%c = model%law%apse_constants(a%big_r, a%one_minus_big_r, a%big_lambda)
+        a%cx = model%law%apse_constants_xp(real(a%big_lambda, xp))
         if (a%big_r > 0.0_qp .and. d < a%big_r) then
             a%lambda_r = log1p(d/a%big_r)
         else
@@ -429,13 +436,30 @@ contains
         real(qp), intent(in) :: digits
         logical, intent(in) :: want_length_time
         real(qp) :: sums(3)
+        call arch_sums(model, a, digits, want_length_time, sums)
+    end function arch_integrals
+
+    !> `arch_integrals`, and with `slopes` the Lambda-derivatives at fixed lambda of the
+    !! Theta and S integrands, d g/d Lambda = g q'/(2 q (1 - q)) and d h/d Lambda =
+    !! e^lambda q'/(2 (1 - q)^(3/2)) (q' = d q/d Lambda, from the law's hardware terms),
+    !! summed in hardware precision on the same nodes (want_length_time needed).
+    pure subroutine arch_sums(model, a, digits, want_length_time, sums, slopes)
+        type(central_force_model), intent(in) :: model
+        type(arch_setup), intent(in) :: a
+        real(qp), intent(in) :: digits
+        logical, intent(in) :: want_length_time
+        real(qp), intent(out) :: sums(3)
+        real(xp), intent(out), optional :: slopes(2)
         type(panel) :: panels(max_panels)
         real(qp) :: part(3), last(3), share, v, lambda, delta, jacobian, q, omq, qv, xr
         real(qp) :: root, inverse_root, common, g(3), length
+        real(xp) :: part_xp(2), carry(2), carry_all(2), g_xp, omq_xp, log_slope, half_slope
         integer :: count, p, k, j, m
         call arch_panels(model, a, panels, count)
         sums = 0.0_qp
         last = 0.0_qp
+        if (present(slopes)) slopes = 0.0_xp
+        carry_all = 0.0_xp
         do p = 1, count
             panels(p)%log_rho = bernstein_log(model, a%big_lambda, panels(p))
             associate (pan => panels(p))
@@ -453,6 +477,8 @@ contains
             j = rule_for(pan%log_rho, digits + min(0.0_qp, log10(max(share, 1.0e-60_qp))), &
                          panel_growth(pan, 2.0_qp*pi/model%sigma_apse))
             part = 0.0_qp
+            part_xp = 0.0_xp
+            carry = 0.0_xp
             do k = 1, model%gauss(j)%n
                 v = pan%lo + (pan%hi - pan%lo)*model%gauss(j)%offset(k)
                 call node_point(pan%kind, pan%scale, a%big_lambda, v, lambda, delta, &
@@ -470,14 +496,36 @@ contains
                     g(2:3) = 0.0_qp
                 end if
                 part = part + model%gauss(j)%weight(k)*g
+                if (present(slopes)) then
+                    call model%law%theta_terms_xp(a%cx, real(lambda, xp), real(delta, xp), &
+                                                  0.0_xp, g_xp, omq_xp, log_slope)
+                    omq_xp = real(omq, xp)
+                    half_slope = 0.5_xp*model%gauss(j)%weight_xp(k)*log_slope/omq_xp
+                    ! compensated sums: the error bound of `arch_values` counts on it
+                    call add_compensated(part_xp, carry, half_slope*[real(g(1), xp), &
+                                         real(xr*q*inverse_root*jacobian, xp)])
+                end if
                 ! the node nearest the next panel
                 if (k == merge(1, model%gauss(j)%n, pan%kind >= kind_start .and. &
                                pan%kind <= kind_start_root)) last = abs(g/jacobian)
             end do
             sums = sums + pan%weight*(pan%hi - pan%lo)*part
+            if (present(slopes)) call add_compensated(slopes, carry_all, &
+                real(pan%weight*(pan%hi - pan%lo), xp)*(part_xp + carry))
             end associate
         end do
-    end function arch_integrals
+    end subroutine arch_sums
+
+    !> sums = sums + terms with Kahan's compensation (carry: the running correction).
+    pure subroutine add_compensated(sums, carry, terms)
+        real(xp), intent(inout) :: sums(2), carry(2)
+        real(xp), intent(in) :: terms(2)
+        real(xp) :: y(2), t(2)
+        y = terms + carry
+        t = sums + y
+        carry = y - (t - sums)
+        sums = t
+    end subroutine add_compensated
 
     !> The extent in lambda of a panel.
     pure function panel_length(p) result(length)
@@ -610,15 +658,45 @@ contains
     !> Theta, S, T at the endpoint for the apse data `a` (first or second half-arch as
     !! the weights say); d = r - R exact, one_minus_r = 1 - r.
     pure subroutine arch_values(model, a, d, one_minus_r, second, fall_r, angle, length, &
-                                time)
+                                time, slopes)
         type(central_force_model), intent(in) :: model
         type(arch_setup), intent(in) :: a
         real(qp), intent(in) :: d, one_minus_r
         logical, intent(in) :: second
         real(qp), intent(in) :: fall_r   !! t0(r), the radial fall time to r
         real(qp), intent(out) :: angle, length, time
+        !> d angle/d Lambda, d length/d Lambda in hardware precision and bounds on their
+        !! absolute errors (the law's hardware terms needed)
+        real(xp), intent(out), optional :: slopes(4)
         real(qp) :: sums(3), fall
-        sums = arch_integrals(model, a, fine_digits, .true.)
+        real(xp) :: integral_slopes(2), g, omq, log_slope, root, h, jump, big_r, error
+        if (present(slopes)) then
+            call arch_sums(model, a, fine_digits, .true., sums, integral_slopes)
+            ! the endpoint lambda_r = Lambda - delta_r moves with Lambda: the integrands
+            ! there times the jump of the weights (g = 0 at the start, delta_r = 0)
+            g = 0.0_xp
+            h = 0.0_xp
+            jump = real(a%weight_below - a%weight_above, xp)
+            if (a%delta_r > 0.0_qp .and. a%lambda_r > 0.0_qp) then
+                call model%law%theta_terms_xp(a%cx, real(a%lambda_r, xp), &
+                                              real(a%delta_r, xp), 0.0_xp, g, omq, log_slope)
+                root = sqrt(omq)
+                h = real(1.0_qp + d/a%big_r, xp)*g*g*root/(1.0_xp + root)
+            end if
+            big_r = real(a%big_r, xp)
+            slopes(1) = integral_slopes(1) + jump*g
+            slopes(2) = big_r*(integral_slopes(2) + jump*h - real(sums(2), xp))
+            if (second) slopes(2) = slopes(2) + 2.0_xp*big_r
+            ! compensated sums of terms of one sign, each within about 20 roundings of
+            ! xp, from nodes rounded to xp: the terms vary like exp(-kappa lambda) (power
+            ! laws: exp(-a delta), a < 2 kappa), lambda, delta <= Lambda
+            error = epsilon(1.0_xp)*(32.0_xp + real(2.0_qp*pi/model%sigma_apse* &
+                                                   a%big_lambda, xp))
+            slopes(3) = error*(abs(integral_slopes(1)) + abs(g))
+            slopes(4) = error*big_r*(abs(integral_slopes(2)) + abs(h) + real(sums(2), xp))
+        else
+            sums = arch_integrals(model, a, fine_digits, .true.)
+        end if
         if (second) then
             ! 2 t0(R) - t0(r) = t0(r) + 2 (t0(R) - t0(r))
             fall = fall_r + 2.0_qp*fall_piece(model, a%delta_r, a%big_lambda)
@@ -781,6 +859,273 @@ contains
         x = real(c, qp)
     end subroutine double_phase
 
+    !> Theta (weighted as in `a`) and d Theta/d Lambda in hardware precision, on
+    !! `hardware_digits` rules, as theta exp(-shift) and slope exp(-shift) (the scaling of
+    !! `theta64`). The slope is that of the integrand at fixed lambda (`arch_sums`) plus
+    !! the jump of the weights times the integrand at lambda_r = Lambda - delta_r.
+    pure subroutine theta_xp(model, a, theta, slope, shift)
+        type(central_force_model), intent(in) :: model
+        type(arch_setup), intent(in) :: a
+        real(xp), intent(out) :: theta, slope, shift
+        type(panel) :: panels(max_panels)
+        real(xp) :: part(2), last, v, lambda, delta, jacobian, g, omq, log_slope, big
+        real(xp) :: scale, share, lo, width
+        integer :: count, p, k, j
+        call arch_panels(model, a, panels, count)
+        theta = 0.0_xp
+        slope = 0.0_xp
+        last = 0.0_xp
+        big = real(a%big_lambda, xp)
+        shift = 0.0_xp
+        if (a%weight_below == 0.0_qp) shift = real(pi/model%sigma_apse*a%lambda_r, xp)
+        do p = 1, count
+            panels(p)%log_rho = bernstein_log(model, a%big_lambda, panels(p))
+            associate (pan => panels(p))
+            share = 1.0_xp
+            if (p > 1 .and. theta > 0.0_xp) then
+                share = 4.0_xp*real(panel_length(pan), xp)*last/theta
+                if (share < 1.0e-24_xp) exit
+            end if
+            j = rule_for(pan%log_rho, hardware_digits + &
+                         real(min(0.0_xp, log10(max(share, 1.0e-30_xp))), qp), &
+                         panel_growth(pan, 2.0_qp*pi/model%sigma_apse))
+            scale = real(pan%scale, xp)
+            lo = real(pan%lo, xp)
+            width = real(pan%hi - pan%lo, xp)
+            part = 0.0_xp
+            do k = 1, model%gauss(j)%n
+                v = lo + width*model%gauss(j)%offset_xp(k)
+                select case (pan%kind)
+                case (kind_apse_root)
+                    lambda = scale*v*v
+                    delta = big - lambda
+                    jacobian = 2.0_xp*scale*v
+                case (kind_apse)
+                    lambda = v
+                    delta = big - v
+                    jacobian = 1.0_xp
+                case (kind_start)
+                    delta = v
+                    lambda = big - v
+                    jacobian = 1.0_xp
+                case default
+                    delta = scale*v*v
+                    lambda = big - delta
+                    jacobian = 2.0_xp*scale*v
+                end select
+                call model%law%theta_terms_xp(a%cx, lambda, delta, shift, g, omq, log_slope)
+                part(1) = part(1) + model%gauss(j)%weight_xp(k)*g*jacobian
+                part(2) = part(2) + model%gauss(j)%weight_xp(k)*g*jacobian* &
+                          (0.5_xp*log_slope/omq)
+                if (k == merge(1, model%gauss(j)%n, pan%kind >= kind_start .and. &
+                               pan%kind <= kind_start_root)) last = g
+            end do
+            theta = theta + real(pan%weight, xp)*width*part(1)
+            slope = slope + real(pan%weight, xp)*width*part(2)
+            end associate
+        end do
+        if (a%weight_below /= a%weight_above .and. a%delta_r > 0.0_qp .and. &
+            a%lambda_r > 0.0_qp) then
+            call model%law%theta_terms_xp(a%cx, real(a%lambda_r, xp), real(a%delta_r, xp), &
+                                          shift, g, omq, log_slope)
+            slope = slope + real(a%weight_below - a%weight_above, xp)*g
+        end if
+    end subroutine theta_xp
+
+    !> log(1 + z) in hardware precision (Kahan's correction of log(1 + z)).
+    elemental function log1p_xp(z) result(l)
+        real(xp), intent(in) :: z
+        real(xp) :: l, w
+        w = 1.0_xp + z
+        if (w == 1.0_xp) then
+            l = z
+        else
+            l = log(w)*(z/(w - 1.0_xp))
+        end if
+    end function log1p_xp
+
+    !> The apse data the hardware-precision phase needs (Lambda, lambda_r, delta_r, the
+    !! weights, the law's constants) at its unknown x (u or y = log R), and d Lambda/dx.
+    pure subroutine setup_xp(model, prob, x, a, lambda_slope)
+        type(central_force_model), intent(in) :: model
+        type(endpoint_problem), intent(in) :: prob
+        real(xp), intent(in) :: x
+        type(arch_setup), intent(out) :: a
+        real(xp), intent(out) :: lambda_slope
+        real(xp) :: d, big_r, lambda_r, delta_r, big_lambda
+        delta_r = real(prob%delta_rho, xp)
+        if (prob%use_u) then
+            ! R = rho - u^2 >= rho/2 >= r - R: lambda_r = log(1 + u^2/R)
+            d = x*x
+            big_r = real(prob%rho, xp) - d
+            lambda_r = log1p_xp(d/big_r)
+            big_lambda = delta_r + lambda_r
+            lambda_slope = 2.0_xp*x/big_r
+        else
+            big_lambda = -x
+            lambda_r = big_lambda - delta_r
+            lambda_slope = -1.0_xp
+        end if
+        a%big_lambda = real(big_lambda, qp)
+        a%lambda_r = real(lambda_r, qp)
+        a%delta_r = prob%delta_rho
+        a%weight_below = merge(2.0_qp, 0.0_qp, prob%second)
+        a%weight_above = 1.0_qp
+        a%cx = model%law%apse_constants_xp(big_lambda)
+    end subroutine setup_xp
+
+    !> The early phase's function (in its `form`) and its slope at x, in hardware
+    !! precision.
+    pure subroutine residual_xp(model, prob, x, f, slope)
+        type(central_force_model), intent(in) :: model
+        type(endpoint_problem), intent(in) :: prob
+        real(xp), intent(in) :: x
+        real(xp), intent(out) :: f, slope
+        type(arch_setup) :: a
+        real(xp) :: scaled, scaled_slope, shift, lambda_slope, upsilon, limit
+        call setup_xp(model, prob, x, a, lambda_slope)
+        call theta_xp(model, a, scaled, scaled_slope, shift)
+        select case (prob%form)
+        case (1)
+            ! log(Upsilon/psi)
+            f = log(max(scaled, tiny(1.0_xp))) - shift - real(log(prob%psi), xp)
+            slope = scaled_slope/scaled*lambda_slope
+        case (2)
+            upsilon = scaled*exp(-shift)
+            limit = real(prob%limit, xp)
+            f = log(max(limit - upsilon, tiny(1.0_xp))/real(prob%limit - prob%psi, xp))
+            slope = -scaled_slope*exp(-shift)*lambda_slope/(limit - upsilon)
+        case default
+            f = scaled*exp(-shift) - real(prob%psi, xp)
+            slope = scaled_slope*exp(-shift)*lambda_slope
+        end select
+    end subroutine residual_xp
+
+    !> The early phase in hardware precision: Newton steps on the analytic slope, kept in
+    !! the bracket [lo, hi] (f of opposite signs at its ends; regula falsi with the
+    !! Anderson-Bjorck correction where a Newton step would leave it), until a step is
+    !! below 1e-13 of the unknown: the root is then within the rounding of the hardware
+    !! kind (quadratic convergence). x the root, slope f'(x) (the form's), curvature
+    !! |f''/2f'| measured between the iterates (0 if not measured).
+    pure subroutine hardware_phase(model, prob, lo, f_lo, hi, f_hi, x, slope, curvature, &
+                                   steps)
+        type(central_force_model), intent(in) :: model
+        type(endpoint_problem), intent(in) :: prob
+        real(qp), intent(in) :: lo, hi
+        real(real64), intent(in) :: f_lo, f_hi
+        real(qp), intent(out) :: x, slope, curvature
+        integer, intent(inout) :: steps
+        real(xp) :: a, b, fa, fb, xk, fk, dk, x_new, x_prev, d_prev, floor, m
+        integer :: iteration
+        a = real(lo, xp)
+        b = real(hi, xp)
+        fa = real(f_lo, xp)
+        fb = real(f_hi, xp)
+        floor = merge(1.0e-3_xp*abs(b - a), 1.0_xp, prob%use_u)
+        curvature = 0.0_qp
+        x_prev = a
+        d_prev = 0.0_xp
+        xk = falsi()
+        do iteration = 1, 60
+            call residual_xp(model, prob, xk, fk, dk)
+            steps = steps + 1
+            if (fk == 0.0_xp) then
+                x_new = xk
+                exit
+            end if
+            if (d_prev /= 0.0_xp .and. abs(xk - x_prev) > 1.0e-9_xp*floor) &
+                curvature = max(curvature, real(abs((dk - d_prev)/((xk - x_prev)*dk)), qp))
+            ! keep the bracket: [a, b] with f(a), f(b) of opposite signs
+            if ((fk > 0.0_xp) .eqv. (fb > 0.0_xp)) then
+                m = 1.0_xp - fk/fb
+                fa = fa*merge(m, 0.5_xp, m > 0.0_xp)
+                b = xk
+                fb = fk
+            else
+                a = b
+                fa = fb
+                b = xk
+                fb = fk
+            end if
+            x_new = xk - fk/dk
+            if (.not. (x_new > min(a, b) .and. x_new < max(a, b))) x_new = falsi()
+            if (abs(x_new - xk) <= 1.0e-13_xp*max(abs(xk), floor)) exit
+            x_prev = xk
+            d_prev = dk
+            xk = x_new
+        end do
+        x = real(x_new, qp)
+        slope = real(dk, qp)
+        curvature = 0.5_qp*curvature
+    contains
+        pure real(xp) function falsi()
+            falsi = b - fb*(b - a)/(fb - fa)
+            if (.not. (falsi > min(a, b) .and. falsi < max(a, b))) falsi = 0.5_xp*(a + b)
+        end function falsi
+    end subroutine hardware_phase
+
+    !> One certified Newton step on the full rules from the early phase's root x0 (in the
+    !! quad phase's unknown, u or R): Upsilon, s, t at x0 with d Upsilon/dx and ds/dx in
+    !! hardware precision; accepted (`done`) only if the step's own error (curvature dx^2
+    !! and the slope's error times dx) is below 1e-35 of the unknown and the slope of s
+    !! moves s by less than a rounding; then s is corrected along its slope and t by
+    !! Hamilton-Jacobi (t(x) = t(x0) + K (psi - Upsilon(x0))). Otherwise x_next, slope_next
+    !! (the Newton point and the slope) for the secant steps of `quad_phase`.
+    pure subroutine final_step(model, prob, x0, lo, hi, curvature, solution, done, x_next, &
+                               slope_next)
+        type(central_force_model), intent(in) :: model
+        type(endpoint_problem), intent(in) :: prob
+        real(qp), intent(in) :: x0, lo, hi, curvature
+        type(endpoint_solution), intent(inout) :: solution
+        logical, intent(out) :: done
+        real(qp), intent(out) :: x_next, slope_next
+        type(arch_setup) :: a
+        real(xp) :: slopes(4)
+        real(qp) :: d, angle, s, t, f, lambda_slope, dx, x, floor, curve, error
+        done = .false.
+        x_next = x0
+        slope_next = 0.0_qp
+        a = setup_at(model, prob, x0)
+        if (prob%use_u) then
+            d = x0*x0
+            lambda_slope = 2.0_qp*x0/a%big_r
+            floor = 1.0e-3_qp*(hi - lo)
+            curve = merge(2.0_qp*curvature, 10.0_qp/(hi - lo), curvature > 0.0_qp)
+        else
+            d = prob%rho - a%big_r
+            lambda_slope = -1.0_qp/a%big_r
+            floor = tiny(1.0_qp)
+            curve = 10.0_qp/x0
+        end if
+        call arch_values(model, a, d, prob%one_minus_rho, prob%second, prob%fall_rho, &
+                         angle, s, t, slopes)
+        solution%steps = solution%steps + 1
+        f = angle - prob%psi
+        slope_next = real(slopes(1), qp)*lambda_slope
+        if (.not. (ieee_is_finite(slope_next) .and. slope_next /= 0.0_qp)) return
+        dx = -f/slope_next
+        x = x0 + dx
+        if (.not. (x > lo .and. x < hi)) return
+        x_next = x
+        error = curve*dx*dx + abs(dx)*real(slopes(3)/abs(slopes(1)), qp)
+        if (.not. error <= 1.0e-35_qp*max(abs(x), floor)) return
+        if (.not. abs(dx*lambda_slope*real(slopes(4), qp)) <= eps_qp*abs(s)) return
+        solution%arclength = s + real(slopes(2), qp)*lambda_slope*dx
+        solution%time = t - model%law%conserved(a%c)*f
+        if (prob%use_u) then
+            solution%apse_radius = prob%rho - x*x
+            solution%apse_gap = x*x
+        else
+            solution%apse_radius = x
+            solution%apse_gap = prob%rho - x
+        end if
+        solution%has_apse_radius = .true.
+        solution%has_arclength = .true.
+        solution%has_time = .true.
+        solution%status = status_ok
+        done = .true.
+    end subroutine final_step
+
     !> The quad-precision phase from the double phase's root x0 and slope (of the
     !! double phase's form): Newton, then secant steps on Upsilon - psi, each a full
     !! evaluation; the last step taken without one (see the module comment).
@@ -922,9 +1267,9 @@ contains
         real(qp), intent(in) :: psi   !! endpoint angle, 0 <= psi <= pi
         type(endpoint_solution) :: solution
         type(endpoint_problem) :: prob
-        real(qp) :: limit, apse_angle_rho, half, x, lo, hi
+        real(qp) :: limit, apse_angle_rho, half, x, lo, hi, slope_q, curvature, x_next
         real(real64) :: f_lo, f_hi, slope
-        logical :: below
+        logical :: below, hardware, done
 
         solution%rho = rho
         solution%psi = psi
@@ -957,7 +1302,14 @@ contains
             call below_range(self, prob, solution)
             return
         end if
-        call double_phase(self, prob, lo, f_lo, hi, f_hi, x, slope, solution%steps)
+        hardware = self%law%has_terms_xp()
+        if (hardware) then
+            call hardware_phase(self, prob, lo, f_lo, hi, f_hi, x, slope_q, curvature, &
+                                solution%steps)
+            slope = real(slope_q, real64)
+        else
+            call double_phase(self, prob, lo, f_lo, hi, f_hi, x, slope, solution%steps)
+        end if
         prob%fall_rho = fall_piece(self, 0.0_qp, prob%delta_rho)
         if (.not. prob%use_u) then
             ! the quad phase in R itself: y = log R resolves R only to eps |log R|
@@ -966,6 +1318,15 @@ contains
             slope = slope/real(x, real64)
             lo = exp(lo)
             hi = half
+        end if
+        if (hardware) then
+            call final_step(self, prob, x, lo, hi, curvature, solution, done, x_next, &
+                            slope_q)
+            if (done) return
+            ! not certified: secant steps from the Newton point, on Upsilon - psi
+            x = x_next
+            slope = real(slope_q, real64)
+            prob%form = 0
         end if
         call quad_phase(self, prob, x, slope, lo, hi, solution)
     end function general_solve

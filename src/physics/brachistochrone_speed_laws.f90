@@ -29,7 +29,14 @@ module brachistochrone_speed_laws
     private
 
     public :: speed_law, inverse_square_law, power_law, logarithmic_law, harmonic_law
-    public :: max_power_exponent
+    public :: max_power_exponent, xp
+
+    !> The widest hardware real kind below binary128: x87 extended on x86-64 (64-bit
+    !! significand, the exponent range of binary128), double elsewhere; for the engine's
+    !! early phase and the slopes of its final step (`theta_terms_xp`).
+    integer, parameter :: xp_candidate = selected_real_kind(18, 4931)
+    integer, parameter :: xp = merge(xp_candidate, real64, &
+                                     xp_candidate > 0 .and. xp_candidate /= qp)
 
     !> Largest force exponent n of `power_law` the general engine accepts (checked against
     !! mpmath at n = 1.5, 3, 10 and converging on a grid up to n = 32; from n of about 100
@@ -56,6 +63,14 @@ module brachistochrone_speed_laws
         !> Distances (in lambda from the apse, delta from the start) of the nearest
         !! complex singularities of the integrands in those variables
         procedure :: log_scales => default_log_scales
+        !> Whether the law has the hardware-precision terms below (else the engine
+        !! takes its double-precision phase and quad-precision secant steps)
+        procedure :: has_terms_xp => default_has_terms_xp
+        !> Per-apse constants for theta_terms_xp, from Lambda = -log R
+        procedure :: apse_constants_xp => default_apse_constants_xp
+        !> sqrt(q/(1 - q)) exp(shift), 1 - q and d(log q)/d Lambda at fixed lambda, in
+        !! hardware precision
+        procedure :: theta_terms_xp => default_theta_terms_xp
     end type speed_law
 
     abstract interface
@@ -100,6 +115,9 @@ module brachistochrone_speed_laws
         procedure :: conserved => power_conserved
         procedure :: log_scales => power_log_scales
         procedure :: valid => power_valid
+        procedure :: has_terms_xp => power_has_terms_xp
+        procedure :: apse_constants_xp => power_apse_constants_xp
+        procedure :: theta_terms_xp => power_theta_terms_xp
     end type power_law
 
     !> Logarithmic potential (F = 1/r, the power law n = 1): v^2 = -2 log x.
@@ -114,6 +132,9 @@ module brachistochrone_speed_laws
         procedure :: inverse_speed => logarithmic_inverse_speed
         procedure :: conserved => logarithmic_conserved
         procedure :: log_scales => logarithmic_log_scales
+        procedure :: has_terms_xp => logarithmic_has_terms_xp
+        procedure :: apse_constants_xp => logarithmic_apse_constants_xp
+        procedure :: theta_terms_xp => logarithmic_theta_terms_xp
     end type logarithmic_law
 
     !> Inside a uniform planet (Saitoh), R_E = 1, omega = 1: v^2 = 1 - x^2.
@@ -574,5 +595,108 @@ contains
         real(qp) :: k
         k = c(5)/sqrt(c(2))
     end function harmonic_conserved
+
+    pure logical function default_has_terms_xp(self)
+        class(speed_law), intent(in) :: self
+        default_has_terms_xp = .false.
+    end function default_has_terms_xp
+
+    pure logical function power_has_terms_xp(self)
+        class(power_law), intent(in) :: self
+        power_has_terms_xp = .true.
+    end function power_has_terms_xp
+
+    pure logical function logarithmic_has_terms_xp(self)
+        class(logarithmic_law), intent(in) :: self
+        logarithmic_has_terms_xp = .true.
+    end function logarithmic_has_terms_xp
+
+    !> No hardware-precision terms: zeros (see has_terms_xp).
+    pure function default_apse_constants_xp(self, big_lambda) result(c)
+        class(speed_law), intent(in) :: self
+        real(xp), intent(in) :: big_lambda  !! -log R
+        real(xp) :: c(4)
+        c = 0.0_xp
+    end function default_apse_constants_xp
+
+    !> No hardware-precision terms: zeros (see has_terms_xp).
+    pure subroutine default_theta_terms_xp(self, c, lambda, delta, shift, g, one_minus_q, &
+                                           log_slope)
+        class(speed_law), intent(in) :: self
+        real(xp), intent(in) :: c(4)                 !! from apse_constants_xp
+        real(xp), intent(in) :: lambda, delta        !! offsets from the apse and the start
+        real(xp), intent(in) :: shift                !! log of the scale factor of g
+        real(xp), intent(out) :: g                   !! sqrt(q/(1 - q)) exp(shift)
+        real(xp), intent(out) :: one_minus_q         !! 1 - q
+        real(xp), intent(out) :: log_slope           !! d(log q)/d Lambda at fixed lambda
+        g = 0.0_xp
+        one_minus_q = 1.0_xp
+        log_slope = 0.0_xp
+    end subroutine default_theta_terms_xp
+
+    !> exp(-y) and E = 1 - exp(-y) = -expm1(-y), y >= 0, both to full relative precision
+    !! in hardware precision (2 exp(-y/2) sinh(y/2) where exp(-y) is close to 1).
+    elemental subroutine exp_and_decay_xp(y, e, one_minus_e)
+        real(xp), intent(in) :: y
+        real(xp), intent(out) :: e, one_minus_e
+        if (y < 0.5_xp) then
+            e = exp(-0.5_xp*y)
+            one_minus_e = 2.0_xp*e*sinh(0.5_xp*y)
+            e = e*e
+        else
+            e = exp(-y)
+            one_minus_e = 1.0_xp - e
+        end if
+    end subroutine exp_and_decay_xp
+
+    !> Power law: [Lambda, E(Lambda), a, 0].
+    pure function power_apse_constants_xp(self, big_lambda) result(c)
+        class(power_law), intent(in) :: self
+        real(xp), intent(in) :: big_lambda
+        real(xp) :: c(4), a, e
+        a = real(self%n - 1.0_qp, xp)
+        c = [big_lambda, 0.0_xp, a, 0.0_xp]
+        call exp_and_decay_xp(a*big_lambda, e, c(2))
+    end function power_apse_constants_xp
+
+    !> Power law: q = exp(-(a+2) lambda) E(delta)/E(Lambda), 1 - q = (1 - exp(-2 lambda))
+    !! + exp(-2 lambda) E(lambda)/E(Lambda) and, since exp(-a lambda) E(delta) =
+    !! exp(-a lambda) - exp(-a Lambda), d(log q)/d Lambda = a E(lambda) exp(-a delta)/
+    !! (E(Lambda) E(delta)).
+    pure subroutine power_theta_terms_xp(self, c, lambda, delta, shift, g, one_minus_q, &
+                                         log_slope)
+        class(power_law), intent(in) :: self
+        real(xp), intent(in) :: c(4), lambda, delta, shift
+        real(xp), intent(out) :: g, one_minus_q, log_slope
+        real(xp) :: e2, om2, ea, e_lambda, ead, e_delta
+        call exp_and_decay_xp(2.0_xp*lambda, e2, om2)
+        call exp_and_decay_xp(c(3)*lambda, ea, e_lambda)
+        call exp_and_decay_xp(c(3)*delta, ead, e_delta)
+        one_minus_q = om2 + e2*e_lambda/c(2)
+        g = sqrt(e_delta/(one_minus_q*c(2)))*exp(shift - 0.5_xp*(c(3) + 2.0_xp)*lambda)
+        log_slope = c(3)*e_lambda*ead/(c(2)*e_delta)
+    end subroutine power_theta_terms_xp
+
+    !> Logarithmic law: [Lambda, 0, 0, 0].
+    pure function logarithmic_apse_constants_xp(self, big_lambda) result(c)
+        class(logarithmic_law), intent(in) :: self
+        real(xp), intent(in) :: big_lambda
+        real(xp) :: c(4)
+        c = [big_lambda, 0.0_xp, 0.0_xp, 0.0_xp]
+    end function logarithmic_apse_constants_xp
+
+    !> Logarithmic law: q = exp(-2 lambda) delta/Lambda, 1 - q = (1 - exp(-2 lambda)) +
+    !! exp(-2 lambda) lambda/Lambda, d(log q)/d Lambda = lambda/(delta Lambda).
+    pure subroutine logarithmic_theta_terms_xp(self, c, lambda, delta, shift, g, &
+                                               one_minus_q, log_slope)
+        class(logarithmic_law), intent(in) :: self
+        real(xp), intent(in) :: c(4), lambda, delta, shift
+        real(xp), intent(out) :: g, one_minus_q, log_slope
+        real(xp) :: e2, om2
+        call exp_and_decay_xp(2.0_xp*lambda, e2, om2)
+        one_minus_q = om2 + e2*lambda/c(1)
+        g = sqrt(delta/(one_minus_q*c(1)))*exp(shift - lambda)
+        log_slope = lambda/(delta*c(1))
+    end subroutine logarithmic_theta_terms_xp
 
 end module brachistochrone_speed_laws
