@@ -453,7 +453,7 @@ contains
         type(panel) :: panels(max_panels)
         real(qp) :: part(3), last(3), share, v, lambda, delta, jacobian, q, omq, qv, xr
         real(qp) :: root, inverse_root, common, g(3), length
-        real(xp) :: part_xp(2), carry(2), carry_all(2), g_xp, omq_xp, log_slope, half_slope
+        real(xp) :: part_xp(2), carry(2), carry_all(2), omq_xp, log_slope, half_slope
         integer :: count, p, k, j, m
         call arch_panels(model, a, panels, count)
         sums = 0.0_qp
@@ -483,7 +483,11 @@ contains
                 v = pan%lo + (pan%hi - pan%lo)*model%gauss(j)%offset(k)
                 call node_point(pan%kind, pan%scale, a%big_lambda, v, lambda, delta, &
                                 jacobian)
-                call model%law%arch_terms(a%c, lambda, delta, q, omq, qv, xr)
+                if (present(slopes)) then
+                    call model%law%arch_terms(a%c, lambda, delta, q, omq, qv, xr, log_slope)
+                else
+                    call model%law%arch_terms(a%c, lambda, delta, q, omq, qv, xr)
+                end if
                 ! 1/sqrt(1 - q) and sqrt(q/(1 - q)) by a double seed and Newton steps
                 inverse_root = inverse_sqrt(omq)
                 g(1) = q*inverse_sqrt(q*omq)*jacobian
@@ -497,8 +501,6 @@ contains
                 end if
                 part = part + model%gauss(j)%weight(k)*g
                 if (present(slopes)) then
-                    call model%law%theta_terms_xp(a%cx, real(lambda, xp), real(delta, xp), &
-                                                  0.0_xp, g_xp, omq_xp, log_slope)
                     omq_xp = real(omq, xp)
                     half_slope = 0.5_xp*model%gauss(j)%weight_xp(k)*log_slope/omq_xp
                     ! compensated sums: the error bound of `arch_values` counts on it
@@ -679,7 +681,8 @@ contains
             jump = real(a%weight_below - a%weight_above, xp)
             if (a%delta_r > 0.0_qp .and. a%lambda_r > 0.0_qp) then
                 call model%law%theta_terms_xp(a%cx, real(a%lambda_r, xp), &
-                                              real(a%delta_r, xp), 0.0_xp, g, omq, log_slope)
+                                              real(a%delta_r, xp), 0.0_xp, .false., g, omq, &
+                                              log_slope)
                 root = sqrt(omq)
                 h = real(1.0_qp + d/a%big_r, xp)*g*g*root/(1.0_xp + root)
             end if
@@ -863,9 +866,10 @@ contains
     !! `hardware_digits` rules, as theta exp(-shift) and slope exp(-shift) (the scaling of
     !! `theta64`). The slope is that of the integrand at fixed lambda (`arch_sums`) plus
     !! the jump of the weights times the integrand at lambda_r = Lambda - delta_r.
-    pure subroutine theta_xp(model, a, theta, slope, shift)
+    pure subroutine theta_xp(model, a, rough, theta, slope, shift)
         type(central_force_model), intent(in) :: model
         type(arch_setup), intent(in) :: a
+        logical, intent(in) :: rough   !! 17-digit rules, transcendentals in double
         real(xp), intent(out) :: theta, slope, shift
         type(panel) :: panels(max_panels)
         real(xp) :: part(2), last, v, lambda, delta, jacobian, g, omq, log_slope, big
@@ -886,7 +890,7 @@ contains
                 share = 4.0_xp*real(panel_length(pan), xp)*last/theta
                 if (share < 1.0e-24_xp) exit
             end if
-            j = rule_for(pan%log_rho, hardware_digits + &
+            j = rule_for(pan%log_rho, merge(coarse_digits, hardware_digits, rough) + &
                          real(min(0.0_xp, log10(max(share, 1.0e-30_xp))), qp), &
                          panel_growth(pan, 2.0_qp*pi/model%sigma_apse))
             scale = real(pan%scale, xp)
@@ -913,7 +917,8 @@ contains
                     lambda = big - delta
                     jacobian = 2.0_xp*scale*v
                 end select
-                call model%law%theta_terms_xp(a%cx, lambda, delta, shift, g, omq, log_slope)
+                call model%law%theta_terms_xp(a%cx, lambda, delta, shift, rough, g, omq, &
+                                              log_slope)
                 part(1) = part(1) + model%gauss(j)%weight_xp(k)*g*jacobian
                 part(2) = part(2) + model%gauss(j)%weight_xp(k)*g*jacobian* &
                           (0.5_xp*log_slope/omq)
@@ -927,7 +932,7 @@ contains
         if (a%weight_below /= a%weight_above .and. a%delta_r > 0.0_qp .and. &
             a%lambda_r > 0.0_qp) then
             call model%law%theta_terms_xp(a%cx, real(a%lambda_r, xp), real(a%delta_r, xp), &
-                                          shift, g, omq, log_slope)
+                                          shift, rough, g, omq, log_slope)
             slope = slope + real(a%weight_below - a%weight_above, xp)*g
         end if
     end subroutine theta_xp
@@ -976,15 +981,16 @@ contains
 
     !> The early phase's function (in its `form`) and its slope at x, in hardware
     !! precision.
-    pure subroutine residual_xp(model, prob, x, f, slope)
+    pure subroutine residual_xp(model, prob, x, rough, f, slope)
         type(central_force_model), intent(in) :: model
         type(endpoint_problem), intent(in) :: prob
         real(xp), intent(in) :: x
+        logical, intent(in) :: rough
         real(xp), intent(out) :: f, slope
         type(arch_setup) :: a
         real(xp) :: scaled, scaled_slope, shift, lambda_slope, upsilon, limit
         call setup_xp(model, prob, x, a, lambda_slope)
-        call theta_xp(model, a, scaled, scaled_slope, shift)
+        call theta_xp(model, a, rough, scaled, scaled_slope, shift)
         select case (prob%form)
         case (1)
             ! log(Upsilon/psi)
@@ -1003,10 +1009,12 @@ contains
 
     !> The early phase in hardware precision: Newton steps on the analytic slope, kept in
     !! the bracket [lo, hi] (f of opposite signs at its ends; regula falsi with the
-    !! Anderson-Bjorck correction where a Newton step would leave it), until a step is
-    !! below 1e-13 of the unknown: the root is then within the rounding of the hardware
-    !! kind (quadratic convergence). x the root, slope f'(x) (the form's), curvature
-    !! |f''/2f'| measured between the iterates (0 if not measured).
+    !! Anderson-Bjorck correction where a Newton step would leave it). First `rough`
+    !! evaluations (17-digit rules, transcendentals in double precision) until a step is
+    !! below 1e-11 of the unknown, then full hardware-precision ones (20-digit rules)
+    !! until a step is below 1e-12: by the quadratic convergence the root is then within
+    !! the rounding of the hardware kind (usually one such evaluation). x the root, slope
+    !! f'(x) (the form's), curvature |f''/2f'| measured between the iterates (0 if not).
     pure subroutine hardware_phase(model, prob, lo, f_lo, hi, f_hi, x, slope, curvature, &
                                    steps)
         type(central_force_model), intent(in) :: model
@@ -1017,6 +1025,7 @@ contains
         integer, intent(inout) :: steps
         real(xp) :: a, b, fa, fb, xk, fk, dk, x_new, x_prev, d_prev, floor, m
         integer :: iteration
+        logical :: rough
         a = real(lo, xp)
         b = real(hi, xp)
         fa = real(f_lo, xp)
@@ -1025,31 +1034,42 @@ contains
         curvature = 0.0_qp
         x_prev = a
         d_prev = 0.0_xp
+        rough = .true.
         xk = falsi()
-        do iteration = 1, 60
-            call residual_xp(model, prob, xk, fk, dk)
+        do iteration = 1, 80
+            call residual_xp(model, prob, xk, rough, fk, dk)
             steps = steps + 1
+            if (d_prev /= 0.0_xp .and. abs(xk - x_prev) > 1.0e-7_xp*floor) &
+                curvature = max(curvature, real(abs((dk - d_prev)/((xk - x_prev)*dk)), qp))
             if (fk == 0.0_xp) then
                 x_new = xk
+                if (.not. rough) exit
+            else
+                ! keep the bracket: [a, b] with f(a), f(b) of opposite signs
+                if ((fk > 0.0_xp) .eqv. (fb > 0.0_xp)) then
+                    m = 1.0_xp - fk/fb
+                    fa = fa*merge(m, 0.5_xp, m > 0.0_xp)
+                else
+                    a = b
+                    fa = fb
+                end if
+                b = xk
+                fb = fk
+                x_new = xk - fk/dk
+                if (.not. (x_new > min(a, b) .and. x_new < max(a, b))) x_new = falsi()
+            end if
+            if (rough .and. abs(x_new - xk) <= 1.0e-11_xp*max(abs(xk), floor)) then
+                ! the rough root: on to the hardware-precision rules, with the first
+                ! bracket again (the rough signs are not sure within their rounding)
+                rough = .false.
+                a = real(lo, xp)
+                b = real(hi, xp)
+                fa = real(f_lo, xp)
+                fb = real(f_hi, xp)
+            else if (.not. rough .and. &
+                     abs(x_new - xk) <= 1.0e-12_xp*max(abs(xk), floor)) then
                 exit
             end if
-            if (d_prev /= 0.0_xp .and. abs(xk - x_prev) > 1.0e-9_xp*floor) &
-                curvature = max(curvature, real(abs((dk - d_prev)/((xk - x_prev)*dk)), qp))
-            ! keep the bracket: [a, b] with f(a), f(b) of opposite signs
-            if ((fk > 0.0_xp) .eqv. (fb > 0.0_xp)) then
-                m = 1.0_xp - fk/fb
-                fa = fa*merge(m, 0.5_xp, m > 0.0_xp)
-                b = xk
-                fb = fk
-            else
-                a = b
-                fa = fb
-                b = xk
-                fb = fk
-            end if
-            x_new = xk - fk/dk
-            if (.not. (x_new > min(a, b) .and. x_new < max(a, b))) x_new = falsi()
-            if (abs(x_new - xk) <= 1.0e-13_xp*max(abs(xk), floor)) exit
             x_prev = xk
             d_prev = dk
             xk = x_new
@@ -1270,6 +1290,7 @@ contains
         real(qp) :: limit, apse_angle_rho, half, x, lo, hi, slope_q, curvature, x_next
         real(real64) :: f_lo, f_hi, slope
         logical :: below, hardware, done
+        integer :: attempt
 
         solution%rho = rho
         solution%psi = psi
@@ -1320,11 +1341,15 @@ contains
             hi = half
         end if
         if (hardware) then
-            call final_step(self, prob, x, lo, hi, curvature, solution, done, x_next, &
-                            slope_q)
-            if (done) return
-            ! not certified: secant steps from the Newton point, on Upsilon - psi
-            x = x_next
+            ! a step not certified (the early phase's root not close enough for the
+            ! bounds) is taken, and the next one (a few ulps) certified; secant steps
+            ! from there otherwise (not seen)
+            do attempt = 1, 2
+                call final_step(self, prob, x, lo, hi, curvature, solution, done, x_next, &
+                                slope_q)
+                if (done) return
+                x = x_next
+            end do
             slope = real(slope_q, real64)
             prob%form = 0
         end if

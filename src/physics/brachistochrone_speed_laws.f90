@@ -305,11 +305,14 @@ contains
     !! (a sum of positive terms for attractive laws), q/sqrt(P(x)), and x/R, at the node
     !! lambda = log(x/R), delta = -log x.
     pure subroutine default_arch_terms(self, c, lambda, delta, q, one_minus_q, q_over_v, &
-                                       x_over_r)
+                                       x_over_r, log_slope)
         class(speed_law), intent(in) :: self
         real(qp), intent(in) :: c(6)           !! from apse_constants
         real(qp), intent(in) :: lambda, delta  !! offsets from the apse and the start
         real(qp), intent(out) :: q, one_minus_q, q_over_v, x_over_r
+        !> d(log q)/d Lambda at fixed lambda in hardware precision (laws with
+        !! has_terms_xp; 0 otherwise)
+        real(xp), intent(out), optional :: log_slope
         real(qp) :: x, p_x, m
         x_over_r = exp(lambda)
         x = exp(-delta)
@@ -318,6 +321,7 @@ contains
         q = (c(1)/x)**2*p_x/c(4)
         one_minus_q = c(1)*expm1(lambda)*m/x**2
         q_over_v = q/sqrt(p_x)
+        if (present(log_slope)) log_slope = 0.0_xp
     end subroutine default_arch_terms
 
     !> 1/v(x) at x = exp(-delta): 1/sqrt((1 - x) V(x)), V = -D(x, 1).
@@ -395,10 +399,13 @@ contains
     !! 1 - exp(-2 lambda) = -expm1(-lambda) (2 + expm1(-lambda)), E(lambda) =
     !! -expm1(-a lambda), exp(-a delta) = exp(-a Lambda)/exp(-a lambda).
     pure subroutine power_arch_terms(self, c, lambda, delta, q, one_minus_q, q_over_v, &
-                                     x_over_r)
+                                     x_over_r, log_slope)
         class(power_law), intent(in) :: self
         real(qp), intent(in) :: c(6), lambda, delta
         real(qp), intent(out) :: q, one_minus_q, q_over_v, x_over_r
+        !> d(log q)/d Lambda at fixed lambda in hardware precision (laws with
+        !! has_terms_xp; 0 otherwise)
+        real(xp), intent(out), optional :: log_slope
         real(qp) :: a, om2, e1, e2, eam1, ea, e_delta, exp_delta
         a = c(3)
         call exp_pair(lambda, delta, c(5), e1, om2)
@@ -426,6 +433,9 @@ contains
         one_minus_q = om2 + e2*(-eam1)*c(6)
         q_over_v = sqrt(0.5_qp*a*e_delta*exp_delta)*c(6)*(e2*ea)
         x_over_r = 1.0_qp/e1
+        ! a E(lambda) exp(-a delta)/(E(Lambda) E(delta)) (see power_theta_terms_xp)
+        if (present(log_slope)) log_slope = real(a, xp)*real(-eam1, xp)* &
+            real(exp_delta, xp)*real(c(6), xp)/real(e_delta, xp)
     end subroutine power_arch_terms
 
     !> 1/v = sqrt(a/2) exp(-a delta/2)/sqrt(E(delta)).
@@ -463,10 +473,13 @@ contains
 
     !> The power law's terms in the limit a -> 0: E(y)/a -> y, P = 2 delta.
     pure subroutine logarithmic_arch_terms(self, c, lambda, delta, q, one_minus_q, &
-                                           q_over_v, x_over_r)
+                                           q_over_v, x_over_r, log_slope)
         class(logarithmic_law), intent(in) :: self
         real(qp), intent(in) :: c(6), lambda, delta
         real(qp), intent(out) :: q, one_minus_q, q_over_v, x_over_r
+        !> d(log q)/d Lambda at fixed lambda in hardware precision (laws with
+        !! has_terms_xp; 0 otherwise)
+        real(xp), intent(out), optional :: log_slope
         real(qp) :: om2, e1, e2
         call exp_pair(lambda, delta, c(5), e1, om2)
         e2 = e1*e1
@@ -474,6 +487,7 @@ contains
         one_minus_q = om2 + e2*lambda/c(1)
         q_over_v = e2*sqrt(0.5_qp*delta)/c(1)
         x_over_r = 1.0_qp/e1
+        if (present(log_slope)) log_slope = real(lambda, xp)/(real(delta, xp)*real(c(1), xp))
     end subroutine logarithmic_arch_terms
 
     pure function logarithmic_inverse_speed(self, delta) result(w)
@@ -560,10 +574,13 @@ contains
     !> P = 1 - x^2: q = exp(-2 lambda) (1 - x^2)/(1 - R^2), 1 - q = (1 - exp(-2 lambda))/
     !! (1 - R^2), q/v = q/sqrt(1 - x^2).
     pure subroutine harmonic_arch_terms(self, c, lambda, delta, q, one_minus_q, q_over_v, &
-                                        x_over_r)
+                                        x_over_r, log_slope)
         class(harmonic_law), intent(in) :: self
         real(qp), intent(in) :: c(6), lambda, delta
         real(qp), intent(out) :: q, one_minus_q, q_over_v, x_over_r
+        !> d(log q)/d Lambda at fixed lambda in hardware precision (laws with
+        !! has_terms_xp; 0 otherwise)
+        real(xp), intent(out), optional :: log_slope
         real(qp) :: e1, om2, p_x
         call exp_pair(lambda, delta, c(5), e1, om2)
         p_x = -fast_expm1(-2.0_qp*delta)
@@ -571,6 +588,7 @@ contains
         one_minus_q = om2/c(2)
         q_over_v = q/sqrt(p_x)
         x_over_r = 1.0_qp/e1
+        if (present(log_slope)) log_slope = 0.0_xp
     end subroutine harmonic_arch_terms
 
     pure function harmonic_theta_ratio64(self, c, lambda, delta, shift) result(g)
@@ -620,12 +638,13 @@ contains
     end function default_apse_constants_xp
 
     !> No hardware-precision terms: zeros (see has_terms_xp).
-    pure subroutine default_theta_terms_xp(self, c, lambda, delta, shift, g, one_minus_q, &
-                                           log_slope)
+    pure subroutine default_theta_terms_xp(self, c, lambda, delta, shift, rough, g, &
+                                           one_minus_q, log_slope)
         class(speed_law), intent(in) :: self
         real(xp), intent(in) :: c(4)                 !! from apse_constants_xp
         real(xp), intent(in) :: lambda, delta        !! offsets from the apse and the start
         real(xp), intent(in) :: shift                !! log of the scale factor of g
+        logical, intent(in) :: rough                 !! transcendentals in double precision
         real(xp), intent(out) :: g                   !! sqrt(q/(1 - q)) exp(shift)
         real(xp), intent(out) :: one_minus_q         !! 1 - q
         real(xp), intent(out) :: log_slope           !! d(log q)/d Lambda at fixed lambda
@@ -635,11 +654,25 @@ contains
     end subroutine default_theta_terms_xp
 
     !> exp(-y) and E = 1 - exp(-y) = -expm1(-y), y >= 0, both to full relative precision
-    !! in hardware precision (2 exp(-y/2) sinh(y/2) where exp(-y) is close to 1).
-    elemental subroutine exp_and_decay_xp(y, e, one_minus_e)
+    !! in hardware precision (2 exp(-y/2) sinh(y/2) where exp(-y) is close to 1), or
+    !! `rough`ly, in double precision.
+    elemental subroutine exp_and_decay_xp(y, e, one_minus_e, rough)
         real(xp), intent(in) :: y
         real(xp), intent(out) :: e, one_minus_e
-        if (y < 0.5_xp) then
+        logical, intent(in) :: rough
+        real(real64) :: y64, e64
+        if (rough) then
+            y64 = real(y, real64)
+            if (y64 < 0.5_real64) then
+                e64 = exp(-0.5_real64*y64)
+                one_minus_e = real(2.0_real64*e64*sinh(0.5_real64*y64), xp)
+                e = real(e64*e64, xp)
+            else
+                e64 = exp(-y64)
+                e = real(e64, xp)
+                one_minus_e = real(1.0_real64 - e64, xp)
+            end if
+        else if (y < 0.5_xp) then
             e = exp(-0.5_xp*y)
             one_minus_e = 2.0_xp*e*sinh(0.5_xp*y)
             e = e*e
@@ -649,6 +682,18 @@ contains
         end if
     end subroutine exp_and_decay_xp
 
+    !> exp(y) in hardware precision, or `rough`ly in double precision (0 below its range).
+    elemental function scaled_exp(y, rough) result(e)
+        real(xp), intent(in) :: y
+        logical, intent(in) :: rough
+        real(xp) :: e
+        if (rough) then
+            e = real(exp(real(max(y, -745.0_xp), real64)), xp)
+        else
+            e = exp(y)
+        end if
+    end function scaled_exp
+
     !> Power law: [Lambda, E(Lambda), a, 0].
     pure function power_apse_constants_xp(self, big_lambda) result(c)
         class(power_law), intent(in) :: self
@@ -656,24 +701,26 @@ contains
         real(xp) :: c(4), a, e
         a = real(self%n - 1.0_qp, xp)
         c = [big_lambda, 0.0_xp, a, 0.0_xp]
-        call exp_and_decay_xp(a*big_lambda, e, c(2))
+        call exp_and_decay_xp(a*big_lambda, e, c(2), .false.)
     end function power_apse_constants_xp
 
     !> Power law: q = exp(-(a+2) lambda) E(delta)/E(Lambda), 1 - q = (1 - exp(-2 lambda))
     !! + exp(-2 lambda) E(lambda)/E(Lambda) and, since exp(-a lambda) E(delta) =
     !! exp(-a lambda) - exp(-a Lambda), d(log q)/d Lambda = a E(lambda) exp(-a delta)/
     !! (E(Lambda) E(delta)).
-    pure subroutine power_theta_terms_xp(self, c, lambda, delta, shift, g, one_minus_q, &
-                                         log_slope)
+    pure subroutine power_theta_terms_xp(self, c, lambda, delta, shift, rough, g, &
+                                         one_minus_q, log_slope)
         class(power_law), intent(in) :: self
         real(xp), intent(in) :: c(4), lambda, delta, shift
+        logical, intent(in) :: rough
         real(xp), intent(out) :: g, one_minus_q, log_slope
         real(xp) :: e2, om2, ea, e_lambda, ead, e_delta
-        call exp_and_decay_xp(2.0_xp*lambda, e2, om2)
-        call exp_and_decay_xp(c(3)*lambda, ea, e_lambda)
-        call exp_and_decay_xp(c(3)*delta, ead, e_delta)
+        call exp_and_decay_xp(2.0_xp*lambda, e2, om2, rough)
+        call exp_and_decay_xp(c(3)*lambda, ea, e_lambda, rough)
+        call exp_and_decay_xp(c(3)*delta, ead, e_delta, rough)
         one_minus_q = om2 + e2*e_lambda/c(2)
-        g = sqrt(e_delta/(one_minus_q*c(2)))*exp(shift - 0.5_xp*(c(3) + 2.0_xp)*lambda)
+        g = sqrt(e_delta/(one_minus_q*c(2)))*scaled_exp(shift - 0.5_xp*(c(3) + 2.0_xp)*lambda, &
+                                                         rough)
         log_slope = c(3)*e_lambda*ead/(c(2)*e_delta)
     end subroutine power_theta_terms_xp
 
@@ -687,15 +734,16 @@ contains
 
     !> Logarithmic law: q = exp(-2 lambda) delta/Lambda, 1 - q = (1 - exp(-2 lambda)) +
     !! exp(-2 lambda) lambda/Lambda, d(log q)/d Lambda = lambda/(delta Lambda).
-    pure subroutine logarithmic_theta_terms_xp(self, c, lambda, delta, shift, g, &
+    pure subroutine logarithmic_theta_terms_xp(self, c, lambda, delta, shift, rough, g, &
                                                one_minus_q, log_slope)
         class(logarithmic_law), intent(in) :: self
         real(xp), intent(in) :: c(4), lambda, delta, shift
+        logical, intent(in) :: rough
         real(xp), intent(out) :: g, one_minus_q, log_slope
         real(xp) :: e2, om2
-        call exp_and_decay_xp(2.0_xp*lambda, e2, om2)
+        call exp_and_decay_xp(2.0_xp*lambda, e2, om2, rough)
         one_minus_q = om2 + e2*lambda/c(1)
-        g = sqrt(delta/(one_minus_q*c(1)))*exp(shift - lambda)
+        g = sqrt(delta/(one_minus_q*c(1)))*scaled_exp(shift - lambda, rough)
         log_slope = lambda/(delta*c(1))
     end subroutine logarithmic_theta_terms_xp
 
