@@ -451,7 +451,7 @@ contains
         real(qp), intent(out) :: sums(3)
         real(xp), intent(out), optional :: slopes(2)
         type(panel) :: panels(max_panels)
-        real(qp) :: part(3), last(3), share, v, lambda, delta, jacobian, q, omq, qv, xr
+        real(qp) :: part(3), last(3), share, v, lambda, delta, jacobian, q, omq, qv, rx
         real(qp) :: root, inverse_root, common, g(3), length
         real(xp) :: part_xp(2), carry(2), carry_all(2), omq_xp, log_slope, half_slope
         integer :: count, p, k, j, m
@@ -484,16 +484,16 @@ contains
                 call node_point(pan%kind, pan%scale, a%big_lambda, v, lambda, delta, &
                                 jacobian)
                 if (present(slopes)) then
-                    call model%law%arch_terms(a%c, lambda, delta, q, omq, qv, xr, log_slope)
+                    call model%law%arch_terms(a%c, lambda, delta, q, omq, qv, rx, log_slope)
                 else
-                    call model%law%arch_terms(a%c, lambda, delta, q, omq, qv, xr)
+                    call model%law%arch_terms(a%c, lambda, delta, q, omq, qv, rx)
                 end if
                 ! 1/sqrt(1 - q) and sqrt(q/(1 - q)) by a double seed and Newton steps
                 inverse_root = inverse_sqrt(omq)
                 g(1) = q*inverse_sqrt(q*omq)*jacobian
                 if (want_length_time) then
                     root = omq*inverse_root
-                    common = xr*inverse_root/(1.0_qp + root)*jacobian
+                    common = inverse_root/(rx*(1.0_qp + root))*jacobian
                     g(2) = q*common
                     g(3) = qv*common
                 else
@@ -505,7 +505,7 @@ contains
                     half_slope = 0.5_xp*model%gauss(j)%weight_xp(k)*log_slope/omq_xp
                     ! compensated sums: the error bound of `arch_values` counts on it
                     call add_compensated(part_xp, carry, half_slope*[real(g(1), xp), &
-                                         real(xr*q*inverse_root*jacobian, xp)])
+                                         real(q*inverse_root*jacobian, xp)/real(rx, xp)])
                 end if
                 ! the node nearest the next panel
                 if (k == merge(1, model%gauss(j)%n, pan%kind >= kind_start .and. &
@@ -648,7 +648,7 @@ contains
             do k = 1, model%gauss(j)%n
                 v = pan%lo + (pan%hi - pan%lo)*model%gauss(j)%offset(k)
                 call node_point(pan%kind, pan%scale, 0.0_qp, v, lambda, delta, jacobian)
-                g = model%law%inverse_speed(delta)*fast_exp(-delta)
+                g = model%law%fall_integrand(delta)
                 part = part + model%gauss(j)%weight(k)*g*jacobian
                 if (k == model%gauss(j)%n) last = g
             end do

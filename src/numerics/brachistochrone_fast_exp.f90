@@ -41,6 +41,8 @@ module brachistochrone_fast_exp
     real(qp), parameter :: ln2_high = real(int(ln2*2.0_qp**60, kind=selected_int_kind(18)), &
                                            qp)/2.0_qp**60
     real(qp), parameter :: ln2_low = ln2 - ln2_high
+    !> 1/log 2 (k needs only to be near x/log 2: the reduction is exact for any k)
+    real(qp), parameter :: inverse_ln2 = 1.0_qp/ln2
 
 contains
 
@@ -54,7 +56,7 @@ contains
             y = exp(x)
             return
         end if
-        k = nint(x/ln2)
+        k = nint(x*inverse_ln2)
         reduced = (x - real(k, qp)*ln2_high) - real(k, qp)*ln2_low
         y = scale(1.0_qp + small_expm1(reduced), k)
     end function fast_exp

@@ -24,6 +24,7 @@ module brachistochrone_speed_laws
     use brachistochrone_kinds, only: qp
     use brachistochrone_quad_math, only: expm1, log1p
     use brachistochrone_fast_exp, only: fast_exp, fast_expm1
+    use brachistochrone_fast_math, only: inverse_sqrt
     use, intrinsic :: iso_fortran_env, only: real64
     implicit none
     private
@@ -59,6 +60,8 @@ module brachistochrone_speed_laws
         !> sqrt(q/(1 - q)) exp(shift) in double precision, for the solver's early phase
         procedure :: theta_ratio64 => default_theta_ratio64
         procedure :: inverse_speed => default_inverse_speed !! 1/v(x) at x = exp(-delta)
+        !> x/v(x) at x = exp(-delta), the integrand of the fall time in delta
+        procedure :: fall_integrand => default_fall_integrand
         procedure :: conserved => default_conserved       !! K = R/v(R) (eq. 25)
         !> Distances (in lambda from the apse, delta from the start) of the nearest
         !! complex singularities of the integrands in those variables
@@ -112,6 +115,7 @@ module brachistochrone_speed_laws
         procedure :: arch_terms => power_arch_terms
         procedure :: theta_ratio64 => power_theta_ratio64
         procedure :: inverse_speed => power_inverse_speed
+        procedure :: fall_integrand => power_fall_integrand
         procedure :: conserved => power_conserved
         procedure :: log_scales => power_log_scales
         procedure :: valid => power_valid
@@ -130,6 +134,7 @@ module brachistochrone_speed_laws
         procedure :: arch_terms => logarithmic_arch_terms
         procedure :: theta_ratio64 => logarithmic_theta_ratio64
         procedure :: inverse_speed => logarithmic_inverse_speed
+        procedure :: fall_integrand => logarithmic_fall_integrand
         procedure :: conserved => logarithmic_conserved
         procedure :: log_scales => logarithmic_log_scales
         procedure :: has_terms_xp => logarithmic_has_terms_xp
@@ -302,19 +307,19 @@ contains
     end function default_apse_constants
 
     !> q = (R/x)^2 P(x)/P(R), 1 - q = (x - R) M/x^2 with M = (x + R) - R^2 D(x,R)/P(R)
-    !! (a sum of positive terms for attractive laws), q/sqrt(P(x)), and x/R, at the node
+    !! (a sum of positive terms for attractive laws), q/sqrt(P(x)), and R/x, at the node
     !! lambda = log(x/R), delta = -log x.
     pure subroutine default_arch_terms(self, c, lambda, delta, q, one_minus_q, q_over_v, &
-                                       x_over_r, log_slope)
+                                       r_over_x, log_slope)
         class(speed_law), intent(in) :: self
         real(qp), intent(in) :: c(6)           !! from apse_constants
         real(qp), intent(in) :: lambda, delta  !! offsets from the apse and the start
-        real(qp), intent(out) :: q, one_minus_q, q_over_v, x_over_r
+        real(qp), intent(out) :: q, one_minus_q, q_over_v, r_over_x
         !> d(log q)/d Lambda at fixed lambda in hardware precision (laws with
         !! has_terms_xp; 0 otherwise)
         real(xp), intent(out), optional :: log_slope
         real(qp) :: x, p_x, m
-        x_over_r = exp(lambda)
+        r_over_x = exp(-lambda)
         x = exp(-delta)
         p_x = -expm1(-delta)*(-self%divided_difference(x, 1.0_qp))
         m = (x + c(1)) - c(1)**2*self%divided_difference(x, c(1))/c(4)
@@ -331,6 +336,14 @@ contains
         real(qp) :: w
         w = 1.0_qp/sqrt(-expm1(-delta)*(-self%divided_difference(exp(-delta), 1.0_qp)))
     end function default_inverse_speed
+
+    !> x/v(x) at x = exp(-delta): exp(-delta)/v.
+    pure function default_fall_integrand(self, delta) result(w)
+        class(speed_law), intent(in) :: self
+        real(qp), intent(in) :: delta !! -log x > 0
+        real(qp) :: w
+        w = self%inverse_speed(delta)*fast_exp(-delta)
+    end function default_fall_integrand
 
     !> K = R/v(R), the conserved angular momentum of the associated free particle.
     pure function default_conserved(self, c) result(k)
@@ -355,12 +368,13 @@ contains
         sigma = [acos(-1.0_qp), acos(-1.0_qp)]
     end function harmonic_log_scales
 
-    !> exp(-lambda) and 1 - exp(-2 lambda), both to full relative precision (lambda >= 0);
+    !> exp(-lambda), 1 - exp(-lambda) and 1 - exp(-2 lambda), all to full relative precision
+    !! (lambda >= 0);
     !! where delta < lambda (nearer the start) exp(-lambda) = R exp(delta), since lambda =
     !! Lambda - delta carries an absolute rounding error of Lambda's size.
-    elemental subroutine exp_pair(lambda, delta, big_r, e1, om2)
+    elemental subroutine exp_pair(lambda, delta, big_r, e1, om1, om2)
         real(qp), intent(in) :: lambda, delta, big_r
-        real(qp), intent(out) :: e1, om2
+        real(qp), intent(out) :: e1, om1, om2
         real(qp) :: em1
         if (lambda > 0.5_qp) then
             if (delta < lambda .and. big_r > 0.0_qp) then
@@ -368,10 +382,12 @@ contains
             else
                 e1 = fast_exp(-lambda)
             end if
+            om1 = 1.0_qp - e1
             om2 = 1.0_qp - e1*e1
         else
             em1 = fast_expm1(-lambda)
             e1 = 1.0_qp + em1
+            om1 = -em1
             om2 = -em1*(2.0_qp + em1)
         end if
     end subroutine exp_pair
@@ -399,18 +415,26 @@ contains
     !! 1 - exp(-2 lambda) = -expm1(-lambda) (2 + expm1(-lambda)), E(lambda) =
     !! -expm1(-a lambda), exp(-a delta) = exp(-a Lambda)/exp(-a lambda).
     pure subroutine power_arch_terms(self, c, lambda, delta, q, one_minus_q, q_over_v, &
-                                     x_over_r, log_slope)
+                                     r_over_x, log_slope)
         class(power_law), intent(in) :: self
         real(qp), intent(in) :: c(6), lambda, delta
-        real(qp), intent(out) :: q, one_minus_q, q_over_v, x_over_r
+        real(qp), intent(out) :: q, one_minus_q, q_over_v, r_over_x
         !> d(log q)/d Lambda at fixed lambda in hardware precision (laws with
         !! has_terms_xp; 0 otherwise)
         real(xp), intent(out), optional :: log_slope
-        real(qp) :: a, om2, e1, e2, eam1, ea, e_delta, exp_delta
+        real(qp) :: a, om1, om2, e1, e2, eam1, ea, e_delta, exp_delta
         a = c(3)
-        call exp_pair(lambda, delta, c(5), e1, om2)
+        call exp_pair(lambda, delta, c(5), e1, om1, om2)
         e2 = e1*e1
-        if (a*lambda > 0.5_qp) then
+        if (a == 2.0_qp) then
+            ! n = 3: exp(-a lambda) = exp(-2 lambda)
+            ea = e2
+            eam1 = -om2
+        else if (a == 1.0_qp) then
+            ! n = 2: exp(-a lambda) = exp(-lambda)
+            ea = e1
+            eam1 = -om1
+        else if (a*lambda > 0.5_qp) then
             if (delta < lambda .and. c(4) > 0.0_qp) then
                 ! nearer the start: exp(-a lambda) = R^a exp(a delta), exact arguments
                 ea = c(4)*fast_exp(a*delta)
@@ -431,12 +455,19 @@ contains
         end if
         q = e2*ea*e_delta*c(6)
         one_minus_q = om2 + e2*(-eam1)*c(6)
-        q_over_v = sqrt(0.5_qp*a*e_delta*exp_delta)*c(6)*(e2*ea)
-        x_over_r = 1.0_qp/e1
+        q_over_v = root(0.5_qp*a*e_delta*exp_delta)*c(6)*(e2*ea)
+        r_over_x = e1
         ! a E(lambda) exp(-a delta)/(E(Lambda) E(delta)) (see power_theta_terms_xp)
         if (present(log_slope)) log_slope = real(a, xp)*real(-eam1, xp)* &
             real(exp_delta, xp)*real(c(6), xp)/real(e_delta, xp)
     end subroutine power_arch_terms
+
+    !> sqrt(z) = z/sqrt(z) with the hardware-seeded inverse square root (within 3 ulp).
+    elemental function root(z) result(r)
+        real(qp), intent(in) :: z
+        real(qp) :: r
+        r = z*inverse_sqrt(z)
+    end function root
 
     !> 1/v = sqrt(a/2) exp(-a delta/2)/sqrt(E(delta)).
     pure function power_inverse_speed(self, delta) result(w)
@@ -446,6 +477,31 @@ contains
         a = self%n - 1.0_qp
         w = sqrt(0.5_qp*a/decay(a, delta))*fast_exp(-0.5_qp*a*delta)
     end function power_inverse_speed
+
+    !> x/v = exp(-(a/2 + 1) delta)/sqrt(2 E(delta)/a); n = 3: x^2/sqrt(1 - x^2); n = 2:
+    !! x^2/sqrt(2 x (1 - x)) (one exp less).
+    pure function power_fall_integrand(self, delta) result(w)
+        class(power_law), intent(in) :: self
+        real(qp), intent(in) :: delta
+        real(qp) :: w, a, em1, x, e
+        a = self%n - 1.0_qp
+        if (a == 2.0_qp .or. a == 1.0_qp) then
+            em1 = fast_expm1(-delta)
+            x = 1.0_qp + em1
+            if (a == 2.0_qp) then
+                w = x*x*inverse_sqrt(-em1*(2.0_qp + em1))
+            else
+                w = x*x*inverse_sqrt(-2.0_qp*x*em1)
+            end if
+        else
+            if (a*delta < 0.5_qp) then
+                e = -fast_expm1(-a*delta)
+            else
+                e = 1.0_qp - fast_exp(-a*delta)
+            end if
+            w = fast_exp(-(0.5_qp*a + 1.0_qp)*delta)*inverse_sqrt(2.0_qp*e/a)
+        end if
+    end function power_fall_integrand
 
     pure function power_conserved(self, c) result(k)
         class(power_law), intent(in) :: self
@@ -473,20 +529,20 @@ contains
 
     !> The power law's terms in the limit a -> 0: E(y)/a -> y, P = 2 delta.
     pure subroutine logarithmic_arch_terms(self, c, lambda, delta, q, one_minus_q, &
-                                           q_over_v, x_over_r, log_slope)
+                                           q_over_v, r_over_x, log_slope)
         class(logarithmic_law), intent(in) :: self
         real(qp), intent(in) :: c(6), lambda, delta
-        real(qp), intent(out) :: q, one_minus_q, q_over_v, x_over_r
+        real(qp), intent(out) :: q, one_minus_q, q_over_v, r_over_x
         !> d(log q)/d Lambda at fixed lambda in hardware precision (laws with
         !! has_terms_xp; 0 otherwise)
         real(xp), intent(out), optional :: log_slope
-        real(qp) :: om2, e1, e2
-        call exp_pair(lambda, delta, c(5), e1, om2)
+        real(qp) :: om1, om2, e1, e2
+        call exp_pair(lambda, delta, c(5), e1, om1, om2)
         e2 = e1*e1
         q = e2*delta/c(1)
         one_minus_q = om2 + e2*lambda/c(1)
         q_over_v = e2*sqrt(0.5_qp*delta)/c(1)
-        x_over_r = 1.0_qp/e1
+        r_over_x = e1
         if (present(log_slope)) log_slope = real(lambda, xp)/(real(delta, xp)*real(c(1), xp))
     end subroutine logarithmic_arch_terms
 
@@ -496,6 +552,13 @@ contains
         real(qp) :: w
         w = 1.0_qp/sqrt(2.0_qp*delta)
     end function logarithmic_inverse_speed
+
+    pure function logarithmic_fall_integrand(self, delta) result(w)
+        class(logarithmic_law), intent(in) :: self
+        real(qp), intent(in) :: delta
+        real(qp) :: w
+        w = fast_exp(-delta)*inverse_sqrt(2.0_qp*delta)
+    end function logarithmic_fall_integrand
 
     pure function logarithmic_conserved(self, c) result(k)
         class(logarithmic_law), intent(in) :: self
@@ -520,9 +583,9 @@ contains
         real(real64), intent(in) :: lambda, delta    !! offsets from the apse and the start
         real(real64), intent(in) :: shift            !! log of the scale factor
         real(real64) :: g
-        real(qp) :: q, one_minus_q, q_over_v, x_over_r
+        real(qp) :: q, one_minus_q, q_over_v, r_over_x
         call self%arch_terms(c, real(lambda, qp), real(delta, qp), q, one_minus_q, &
-                             q_over_v, x_over_r)
+                             q_over_v, r_over_x)
         g = real(sqrt(q/one_minus_q)*exp(real(shift, qp)), real64)
     end function default_theta_ratio64
 
@@ -574,20 +637,20 @@ contains
     !> P = 1 - x^2: q = exp(-2 lambda) (1 - x^2)/(1 - R^2), 1 - q = (1 - exp(-2 lambda))/
     !! (1 - R^2), q/v = q/sqrt(1 - x^2).
     pure subroutine harmonic_arch_terms(self, c, lambda, delta, q, one_minus_q, q_over_v, &
-                                        x_over_r, log_slope)
+                                        r_over_x, log_slope)
         class(harmonic_law), intent(in) :: self
         real(qp), intent(in) :: c(6), lambda, delta
-        real(qp), intent(out) :: q, one_minus_q, q_over_v, x_over_r
+        real(qp), intent(out) :: q, one_minus_q, q_over_v, r_over_x
         !> d(log q)/d Lambda at fixed lambda in hardware precision (laws with
         !! has_terms_xp; 0 otherwise)
         real(xp), intent(out), optional :: log_slope
-        real(qp) :: e1, om2, p_x
-        call exp_pair(lambda, delta, c(5), e1, om2)
+        real(qp) :: e1, om1, om2, p_x
+        call exp_pair(lambda, delta, c(5), e1, om1, om2)
         p_x = -fast_expm1(-2.0_qp*delta)
         q = e1*e1*p_x/c(2)
         one_minus_q = om2/c(2)
         q_over_v = q/sqrt(p_x)
-        x_over_r = 1.0_qp/e1
+        r_over_x = e1
         if (present(log_slope)) log_slope = 0.0_xp
     end subroutine harmonic_arch_terms
 
