@@ -21,12 +21,24 @@ module test_central_force
 
     public :: run_central_force_tests
 
+    !> Power and logarithmic laws with their closed-form fall times switched off (the
+    !! engine then takes them by quadrature), against which the closed forms are tested.
+    type, extends(power_law) :: quadrature_power_law
+    contains
+        procedure :: closed_fall => no_closed_fall_power
+    end type quadrature_power_law
+    type, extends(logarithmic_law) :: quadrature_logarithmic_law
+    contains
+        procedure :: closed_fall => no_closed_fall_logarithmic
+    end type quadrature_logarithmic_law
+
 contains
 
     subroutine run_central_force_tests()
         call engine_versus_fast_path()
         call harmonic_closed_forms()
         call power_laws()
+        call closed_fall_times()
         call general_references('power1.5', power_law(n=1.5_qp))
         call general_references('power3', power_law(n=3.0_qp))
         call general_references('logarithmic', logarithmic_law())
@@ -286,5 +298,71 @@ contains
         call check(a(1) < a(2) .and. a(2) < pi/2.0_qp .and. pi/2.0_qp - a(2) < 0.01_qp, &
                    'logarithmic potential: Theta(R,R) rises slowly towards pi/2')
     end subroutine power_laws
+
+    pure subroutine no_closed_fall_power(self, delta_lo, delta_hi, t, found)
+        class(quadrature_power_law), intent(in) :: self
+        real(qp), intent(in) :: delta_lo, delta_hi
+        real(qp), intent(out) :: t
+        logical, intent(out) :: found
+        t = 0.0_qp
+        found = .false.
+    end subroutine no_closed_fall_power
+
+    pure subroutine no_closed_fall_logarithmic(self, delta_lo, delta_hi, t, found)
+        class(quadrature_logarithmic_law), intent(in) :: self
+        real(qp), intent(in) :: delta_lo, delta_hi
+        real(qp), intent(out) :: t
+        logical, intent(out) :: found
+        t = 0.0_qp
+        found = .false.
+    end subroutine no_closed_fall_logarithmic
+
+    !> The closed-form fall times (n = 2: Tee (46); n = 3: sqrt(1 - r^2); logarithmic:
+    !! sqrt(pi/2) erf(sqrt(-log r))) against the engine's quadrature of x/v, and the
+    !! n = 2 engine (its special paths) against the inverse-square fast path.
+    subroutine closed_fall_times()
+        type(central_force_model) :: closed, quadrature
+        type(inverse_square_model) :: fast
+        type(endpoint_solution) :: a, b
+        real(qp), parameter :: radii(6) = [0.0_qp, 1.0e-6_qp, 0.3_qp, 0.9_qp, &
+                                           1.0_qp - 1.0e-12_qp, 1.0_qp - 1.0e-30_qp]
+        real(qp) :: t(2), worst
+        integer :: law, i, j, status
+        call section('central force: closed-form fall times against the quadrature')
+        worst = 99.0_qp
+        do law = 1, 3
+            select case (law)
+            case (1, 2)
+                closed = new_central_force_model(power_law(n=real(law + 1, qp)))
+                quadrature = new_central_force_model(quadrature_power_law(n=real(law + 1, qp)))
+            case default
+                closed = new_central_force_model(logarithmic_law())
+                quadrature = new_central_force_model(quadrature_logarithmic_law())
+            end select
+            do i = 1, size(radii)
+                call closed%fall_time(radii(i), t(1), status)
+                call quadrature%fall_time(radii(i), t(2), status)
+                worst = min(worst, digits_of_agreement(t(1), t(2)))
+            end do
+        end do
+        write (output_unit, '(a,f6.2)') '   n = 2, 3, logarithmic, 6 radii: fewest digits ', &
+            worst
+        call check(worst >= 32.5_qp, 'closed-form fall times = quadrature to >= 32.5 digits')
+        closed = new_central_force_model(power_law(n=2.0_qp))
+        fast = new_inverse_square_model()
+        worst = 99.0_qp
+        do i = 1, 3
+            do j = 1, 3
+                a = closed%solve(real(i, qp)/3.0_qp, real(j, qp)*0.5_qp)
+                b = solve_endpoint(fast, real(i, qp)/3.0_qp, real(j, qp)*0.5_qp)
+                worst = min(worst, digits_of_agreement(a%apse_radius, b%apse_radius) &
+                            + max(0.0_qp, -1.0_qp - log10(b%apse_radius)), &
+                            digits_of_agreement(a%arclength, b%arclength), &
+                            digits_of_agreement(a%time, b%time))
+            end do
+        end do
+        write (output_unit, '(a,f6.2)') '   power law n = 2 = fast path, 9 endpoints: ', worst
+        call check(worst >= 32.0_qp, 'power law n = 2: R, s, t = fast path to >= 32 digits')
+    end subroutine closed_fall_times
 
 end module test_central_force

@@ -61,7 +61,7 @@ module brachistochrone_central_force
     !> Fewest and most Gauss nodes on one panel (even counts only).
     integer, parameter :: min_nodes = 4, max_nodes = 80
     !> Digits aimed at by the full and the double-precision rules.
-    real(qp), parameter :: fine_digits = 36.0_qp, coarse_digits = 17.0_qp
+    real(qp), parameter :: fine_digits = 35.0_qp, coarse_digits = 17.0_qp
     !> Digits aimed at by the hardware-precision rules of the early phase.
     real(qp), parameter :: hardware_digits = 20.0_qp
     !> A panel whose bound is below this share of the running sum is skipped.
@@ -613,8 +613,11 @@ contains
         type(arch_setup) :: a
         real(qp) :: c, lo, hi, v, delta, lambda, jacobian, g, part, last, share
         integer :: count, p, k, j
+        logical :: found
         total = 0.0_qp
         if (delta_hi <= delta_lo) return
+        call model%law%closed_fall(delta_lo, delta_hi, total, found)
+        if (found) return
         c = min(1.0_qp, 0.5_qp*model%sigma_start)
         ! weight 1 inside [delta_lo, delta_hi] (start-side panels are 'reversed')
         a%weight_above = 0.0_qp

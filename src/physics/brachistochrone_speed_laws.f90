@@ -25,6 +25,7 @@ module brachistochrone_speed_laws
     use brachistochrone_quad_math, only: expm1, log1p
     use brachistochrone_fast_exp, only: fast_exp, fast_expm1
     use brachistochrone_fast_math, only: inverse_sqrt
+    use brachistochrone_closed_forms, only: radial_time
     use, intrinsic :: iso_fortran_env, only: real64
     implicit none
     private
@@ -62,6 +63,9 @@ module brachistochrone_speed_laws
         procedure :: inverse_speed => default_inverse_speed !! 1/v(x) at x = exp(-delta)
         !> x/v(x) at x = exp(-delta), the integrand of the fall time in delta
         procedure :: fall_integrand => default_fall_integrand
+        !> The fall time from x = exp(-delta_lo) to exp(-delta_hi) in closed form, where
+        !! the law has one (`found`)
+        procedure :: closed_fall => default_closed_fall
         procedure :: conserved => default_conserved       !! K = R/v(R) (eq. 25)
         !> Distances (in lambda from the apse, delta from the start) of the nearest
         !! complex singularities of the integrands in those variables
@@ -116,6 +120,7 @@ module brachistochrone_speed_laws
         procedure :: theta_ratio64 => power_theta_ratio64
         procedure :: inverse_speed => power_inverse_speed
         procedure :: fall_integrand => power_fall_integrand
+        procedure :: closed_fall => power_closed_fall
         procedure :: conserved => power_conserved
         procedure :: log_scales => power_log_scales
         procedure :: valid => power_valid
@@ -135,6 +140,7 @@ module brachistochrone_speed_laws
         procedure :: theta_ratio64 => logarithmic_theta_ratio64
         procedure :: inverse_speed => logarithmic_inverse_speed
         procedure :: fall_integrand => logarithmic_fall_integrand
+        procedure :: closed_fall => logarithmic_closed_fall
         procedure :: conserved => logarithmic_conserved
         procedure :: log_scales => logarithmic_log_scales
         procedure :: has_terms_xp => logarithmic_has_terms_xp
@@ -345,6 +351,16 @@ contains
         w = self%inverse_speed(delta)*fast_exp(-delta)
     end function default_fall_integrand
 
+    !> No closed form here: `found` false, t = 0.
+    pure subroutine default_closed_fall(self, delta_lo, delta_hi, t, found)
+        class(speed_law), intent(in) :: self
+        real(qp), intent(in) :: delta_lo, delta_hi  !! 0 <= delta_lo <= delta_hi
+        real(qp), intent(out) :: t                  !! the fall time between them
+        logical, intent(out) :: found               !! a closed form was used
+        t = 0.0_qp
+        found = .false.
+    end subroutine default_closed_fall
+
     !> K = R/v(R), the conserved angular momentum of the associated free particle.
     pure function default_conserved(self, c) result(k)
         class(speed_law), intent(in) :: self
@@ -503,6 +519,23 @@ contains
         end if
     end function power_fall_integrand
 
+    !> n = 3: t0(x) = sqrt(1 - x^2); n = 2: the inverse-square fall time (Tee eq. 46);
+    !! other exponents: none (incomplete beta functions).
+    pure subroutine power_closed_fall(self, delta_lo, delta_hi, t, found)
+        class(power_law), intent(in) :: self
+        real(qp), intent(in) :: delta_lo, delta_hi
+        real(qp), intent(out) :: t
+        logical, intent(out) :: found
+        found = self%n == 3.0_qp .or. self%n == 2.0_qp
+        t = 0.0_qp
+        if (self%n == 3.0_qp) then
+            t = sqrt(-expm1(-2.0_qp*delta_hi)) - sqrt(-expm1(-2.0_qp*delta_lo))
+        else if (self%n == 2.0_qp) then
+            t = radial_time(exp(-delta_hi), -expm1(-delta_hi)) &
+                - radial_time(exp(-delta_lo), -expm1(-delta_lo))
+        end if
+    end subroutine power_closed_fall
+
     pure function power_conserved(self, c) result(k)
         class(power_law), intent(in) :: self
         real(qp), intent(in) :: c(6)
@@ -559,6 +592,22 @@ contains
         real(qp) :: w
         w = fast_exp(-delta)*inverse_sqrt(2.0_qp*delta)
     end function logarithmic_fall_integrand
+
+    !> t0 = sqrt(pi/2) erf(sqrt(delta)) (x/v = exp(-delta)/sqrt(2 delta)); differences of
+    !! erfc where both arguments exceed 1.
+    pure subroutine logarithmic_closed_fall(self, delta_lo, delta_hi, t, found)
+        class(logarithmic_law), intent(in) :: self
+        real(qp), intent(in) :: delta_lo, delta_hi
+        real(qp), intent(out) :: t
+        logical, intent(out) :: found
+        found = .true.
+        if (delta_lo > 1.0_qp) then
+            t = erfc(sqrt(delta_lo)) - erfc(sqrt(delta_hi))
+        else
+            t = erf(sqrt(delta_hi)) - erf(sqrt(delta_lo))
+        end if
+        t = sqrt(0.5_qp*acos(-1.0_qp))*t
+    end subroutine logarithmic_closed_fall
 
     pure function logarithmic_conserved(self, c) result(k)
         class(logarithmic_law), intent(in) :: self
