@@ -1029,24 +1029,34 @@ contains
         real(xp) :: a, b, fa, fb, xk, fk, dk, x_new, x_prev, d_prev, floor, m
         integer :: iteration
         logical :: rough
-        a = real(lo, xp)
-        b = real(hi, xp)
-        fa = real(f_lo, xp)
-        fb = real(f_hi, xp)
+        call first_bracket(lo, f_lo, hi, f_hi, a, fa, b, fb)
         floor = merge(1.0e-3_xp*abs(b - a), 1.0_xp, prob%use_u)
         curvature = 0.0_qp
         x_prev = a
         d_prev = 0.0_xp
         rough = .true.
         xk = falsi()
+        ! rho = 1: Upsilon ~ c u^2 from the apse (falsi would start far below the root)
+        if (prob%use_u .and. prob%rho == 1.0_qp .and. fb > 0.0_xp) &
+            xk = b*sqrt(real(prob%psi, xp)/(fb + real(prob%psi, xp)))
         do iteration = 1, 80
             call residual_xp(model, prob, xk, rough, fk, dk)
             steps = steps + 1
             if (d_prev /= 0.0_xp .and. abs(xk - x_prev) > 1.0e-7_xp*floor) &
                 curvature = max(curvature, real(abs((dk - d_prev)/((xk - x_prev)*dk)), qp))
-            if (fk == 0.0_xp) then
+            if ((abs(fk) <= noise(fk) .and. noise(fk) < 1.0e-3_xp) .or. &
+                (rough .and. iteration > 10)) then
+                ! f within its rounding, and that small (the root as close as this
+                ! precision can place it; next to the sector's edge that is far from
+                ! 1e-18): on to the hardware-precision rules, or to the full-precision
+                ! steps
                 x_new = xk
                 if (.not. rough) exit
+                ! with the first bracket again (the rough signs are not sure within
+                ! their rounding)
+                rough = .false.
+                call first_bracket(lo, f_lo, hi, f_hi, a, fa, b, fb)
+                cycle
             else
                 ! keep the bracket: [a, b] with f(a), f(b) of opposite signs
                 if ((fk > 0.0_xp) .eqv. (fb > 0.0_xp)) then
@@ -1062,13 +1072,11 @@ contains
                 if (.not. (x_new > min(a, b) .and. x_new < max(a, b))) x_new = falsi()
             end if
             if (rough .and. abs(x_new - xk) <= 1.0e-11_xp*max(abs(xk), floor)) then
-                ! the rough root: on to the hardware-precision rules, with the first
-                ! bracket again (the rough signs are not sure within their rounding)
+                ! the rough root: on to the hardware-precision rules
+                ! with the first bracket again (the rough signs are not sure within
+                ! their rounding)
                 rough = .false.
-                a = real(lo, xp)
-                b = real(hi, xp)
-                fa = real(f_lo, xp)
-                fb = real(f_hi, xp)
+                call first_bracket(lo, f_lo, hi, f_hi, a, fa, b, fb)
             else if (.not. rough .and. &
                      abs(x_new - xk) <= 1.0e-12_xp*max(abs(xk), floor)) then
                 exit
@@ -1081,11 +1089,34 @@ contains
         slope = real(dk, qp)
         curvature = 0.5_qp*curvature
     contains
+        !> The rounding level of f: Upsilon to about 1e-15 (rough) or 1e-18 of itself;
+        !! in form 2 divided by limit - Upsilon.
+        pure real(xp) function noise(f)
+            real(xp), intent(in) :: f
+            noise = merge(1.0e-15_xp, 1.0e-18_xp, rough)
+            select case (prob%form)
+            case (0)
+                noise = noise*real(prob%psi, xp)
+            case (2)
+                noise = noise*real(prob%limit/(prob%limit - prob%psi), xp)*exp(-f)
+            end select
+        end function noise
         pure real(xp) function falsi()
             falsi = b - fb*(b - a)/(fb - fa)
             if (.not. (falsi > min(a, b) .and. falsi < max(a, b))) falsi = 0.5_xp*(a + b)
         end function falsi
     end subroutine hardware_phase
+
+    !> The bracket [lo, hi] and its residuals in hardware precision.
+    pure subroutine first_bracket(lo, f_lo, hi, f_hi, a, fa, b, fb)
+        real(qp), intent(in) :: lo, hi
+        real(real64), intent(in) :: f_lo, f_hi
+        real(xp), intent(out) :: a, fa, b, fb
+        a = real(lo, xp)
+        b = real(hi, xp)
+        fa = real(f_lo, xp)
+        fb = real(f_hi, xp)
+    end subroutine first_bracket
 
     !> One certified Newton step on the full rules from the early phase's root x0 (in the
     !! quad phase's unknown, u or R): Upsilon, s, t at x0 with d Upsilon/dx and ds/dx in
@@ -1161,6 +1192,7 @@ contains
         type(arch_setup) :: a
         real(qp) :: x(3), f(2), s(2), t(2), slope, step, k_mid, scale, floor
         integer :: iteration
+        logical :: stalled
         select case (prob%form)
         case (1)
             slope = prob%psi*real(slope64, qp)
@@ -1171,12 +1203,16 @@ contains
         end select
         scale = max(abs(hi - lo), 1.0e-300_qp)
         floor = 1.0e-3_qp*scale
+        stalled = .false.
         x(1) = x_start
         call evaluate_full(model, prob, x(1), f(1), s(1), t(1))
         x(2) = clip(x(1) - f(1)/slope)
         do iteration = 1, 12
             call evaluate_full(model, prob, x(2), f(2), s(2), t(2))
             if (f(2) == f(1) .or. x(2) == x(1)) then
+                ! no progress: a root only if f is at its rounding
+                stalled = abs(f(2)) > 8.0_qp*eps_qp*prob%psi
+                if (stalled) exit
                 step = 0.0_qp
             else
                 step = -f(2)*(x(2) - x(1))/(f(2) - f(1))
@@ -1198,7 +1234,7 @@ contains
             x(2) = x(3)
         end do
         solution%steps = solution%steps + iteration + 1
-        if (iteration > 12) then
+        if (iteration > 12 .or. stalled) then
             solution%status = status_no_convergence
             return
         end if
@@ -1345,12 +1381,14 @@ contains
         end if
         if (hardware) then
             ! a step not certified (the early phase's root not close enough for the
-            ! bounds) is taken, and the next one (a few ulps) certified; secant steps
-            ! from there otherwise (not seen)
-            do attempt = 1, 2
+            ! bounds) is taken, and the next one certified (usually; next to the edge of
+            ! the sector the hardware phase's root is poorer and Newton takes up to 4
+            ! steps); secant steps from there otherwise
+            do attempt = 1, 4
                 call final_step(self, prob, x, lo, hi, curvature, solution, done, x_next, &
                                 slope_q)
                 if (done) return
+                if (x_next == x) exit
                 x = x_next
             end do
             slope = real(slope_q, real64)
