@@ -474,7 +474,8 @@ contains
                 end do
                 if (share < negligible) exit
             end if
-            j = rule_for(pan%log_rho, digits + min(0.0_qp, log10(max(share, 1.0e-60_qp))), &
+            j = rule_for(pan%log_rho, digits + real(min(0.0_real64, log10(max(real(share, &
+                         real64), 1.0e-60_real64))), qp), &
                          panel_growth(pan, 2.0_qp*pi/model%sigma_apse))
             part = 0.0_qp
             part_xp = 0.0_xp
@@ -645,7 +646,8 @@ contains
                 if (share < negligible) exit
             end if
             j = rule_for(pan%log_rho, fine_digits + &
-                         min(0.0_qp, log10(max(share, 1.0e-60_qp))), &
+                         real(min(0.0_real64, log10(max(real(share, real64), &
+                                                            1.0e-60_real64))), qp), &
                          panel_growth(pan, 1.0_qp + pi/model%sigma_start))
             part = 0.0_qp
             do k = 1, model%gauss(j)%n
@@ -1014,7 +1016,8 @@ contains
     !! the bracket [lo, hi] (f of opposite signs at its ends; regula falsi with the
     !! Anderson-Bjorck correction where a Newton step would leave it). First `rough`
     !! evaluations (17-digit rules, transcendentals in double precision) until a step is
-    !! below 1e-11 of the unknown, then full hardware-precision ones (20-digit rules)
+    !! below 1e-7 of the unknown (the next iterate then within about 1e-14), then
+    !! hardware-precision ones (20-digit rules)
     !! until a step is below 1e-12: by the quadratic convergence the root is then within
     !! the rounding of the hardware kind (usually one such evaluation). x the root, slope
     !! f'(x) (the form's), curvature |f''/2f'| measured between the iterates (0 if not).
@@ -1071,7 +1074,7 @@ contains
                 x_new = xk - fk/dk
                 if (.not. (x_new > min(a, b) .and. x_new < max(a, b))) x_new = falsi()
             end if
-            if (rough .and. abs(x_new - xk) <= 1.0e-11_xp*max(abs(xk), floor)) then
+            if (rough .and. abs(x_new - xk) <= 1.0e-7_xp*max(abs(xk), floor)) then
                 ! the rough root: on to the hardware-precision rules
                 ! with the first bracket again (the rough signs are not sure within
                 ! their rounding)
