@@ -108,7 +108,7 @@ module brachistochrone_central_force
     !! and the weights of the integrands below and above it.
     type :: arch_setup
         real(qp) :: big_r = 0.0_qp, one_minus_big_r = 1.0_qp, big_lambda = 0.0_qp
-        real(qp) :: c(6) = 0.0_qp
+        real(qp) :: c(8) = 0.0_qp
         real(qp) :: lambda_r = 0.0_qp, delta_r = 0.0_qp
         real(qp) :: weight_below = 0.0_qp, weight_above = 1.0_qp
         real(xp) :: cx(4) = 0.0_xp    !! the law's constants in hardware precision
@@ -452,7 +452,7 @@ contains
         real(xp), intent(out), optional :: slopes(2)
         type(panel) :: panels(max_panels)
         real(qp) :: part(3), last(3), share, v, lambda, delta, jacobian, q, omq, qv, rx
-        real(qp) :: root, inverse_root, common, g(3), length
+        real(qp) :: root, inverse_root, common, g(3), length, root_q
         real(xp) :: part_xp(2), carry(2), carry_all(2), omq_xp, log_slope, half_slope
         integer :: count, p, k, j, m
         call arch_panels(model, a, panels, count)
@@ -485,13 +485,14 @@ contains
                 call node_point(pan%kind, pan%scale, a%big_lambda, v, lambda, delta, &
                                 jacobian)
                 if (present(slopes)) then
-                    call model%law%arch_terms(a%c, lambda, delta, q, omq, qv, rx, log_slope)
+                    call model%law%arch_terms(a%c, lambda, delta, q, omq, qv, rx, root_q, &
+                                              log_slope)
                 else
-                    call model%law%arch_terms(a%c, lambda, delta, q, omq, qv, rx)
+                    call model%law%arch_terms(a%c, lambda, delta, q, omq, qv, rx, root_q)
                 end if
                 ! 1/sqrt(1 - q) and sqrt(q/(1 - q)) by a double seed and Newton steps
                 inverse_root = inverse_sqrt(omq)
-                g(1) = q*inverse_sqrt(q*omq)*jacobian
+                g(1) = root_q*inverse_root*jacobian
                 if (want_length_time) then
                     root = omq*inverse_root
                     common = inverse_root/(rx*(1.0_qp + root))*jacobian

@@ -307,20 +307,22 @@ contains
         real(qp), intent(in) :: big_r            !! apse radius R
         real(qp), intent(in) :: one_minus_big_r  !! 1 - R, exact
         real(qp), intent(in) :: big_lambda       !! -log R
-        real(qp) :: c(6)
+        real(qp) :: c(8)
         c = [big_r, one_minus_big_r, big_lambda, &
-             -one_minus_big_r*self%divided_difference(big_r, 1.0_qp), 0.0_qp, 0.0_qp]
+             -one_minus_big_r*self%divided_difference(big_r, 1.0_qp), 0.0_qp, 0.0_qp, &
+             0.0_qp, 0.0_qp]
     end function default_apse_constants
 
     !> q = (R/x)^2 P(x)/P(R), 1 - q = (x - R) M/x^2 with M = (x + R) - R^2 D(x,R)/P(R)
     !! (a sum of positive terms for attractive laws), q/sqrt(P(x)), and R/x, at the node
     !! lambda = log(x/R), delta = -log x.
     pure subroutine default_arch_terms(self, c, lambda, delta, q, one_minus_q, q_over_v, &
-                                       r_over_x, log_slope)
+                                       r_over_x, root_q, log_slope)
         class(speed_law), intent(in) :: self
-        real(qp), intent(in) :: c(6)           !! from apse_constants
+        real(qp), intent(in) :: c(8)           !! from apse_constants
         real(qp), intent(in) :: lambda, delta  !! offsets from the apse and the start
         real(qp), intent(out) :: q, one_minus_q, q_over_v, r_over_x
+        real(qp), intent(out) :: root_q  !! sqrt(q)
         !> d(log q)/d Lambda at fixed lambda in hardware precision (laws with
         !! has_terms_xp; 0 otherwise)
         real(xp), intent(out), optional :: log_slope
@@ -332,6 +334,7 @@ contains
         q = (c(1)/x)**2*p_x/c(4)
         one_minus_q = c(1)*expm1(lambda)*m/x**2
         q_over_v = q/sqrt(p_x)
+        root_q = sqrt(q)
         if (present(log_slope)) log_slope = 0.0_xp
     end subroutine default_arch_terms
 
@@ -364,7 +367,7 @@ contains
     !> K = R/v(R), the conserved angular momentum of the associated free particle.
     pure function default_conserved(self, c) result(k)
         class(speed_law), intent(in) :: self
-        real(qp), intent(in) :: c(6) !! from apse_constants
+        real(qp), intent(in) :: c(8) !! from apse_constants
         real(qp) :: k
         k = c(1)/sqrt(c(4))
     end function default_conserved
@@ -419,22 +422,25 @@ contains
     pure function power_apse_constants(self, big_r, one_minus_big_r, big_lambda) result(c)
         class(power_law), intent(in) :: self
         real(qp), intent(in) :: big_r, one_minus_big_r, big_lambda
-        real(qp) :: c(6), a
+        real(qp) :: c(8), a
         a = self%n - 1.0_qp
         ! R^a (powq) rather than exp(-a Lambda): Lambda's rounding would cost a Lambda eps
-        c = [big_lambda, decay(a, big_lambda), a, big_r**a, big_r, 0.0_qp]
+        c = [big_lambda, decay(a, big_lambda), a, big_r**a, big_r, 0.0_qp, 0.0_qp, 0.0_qp]
         if (a*big_lambda > 0.5_qp) c(2) = 1.0_qp - c(4)
         c(6) = 1.0_qp/c(2)
+        ! q/v = sqrt(q) exp(-lambda) R^(a/2) sqrt(a/(2 E(Lambda)))
+        c(7) = sqrt(0.5_qp*a*c(4)*c(6))
     end function power_apse_constants
 
     !> Two expm1 per node (three where a delta < 1/4): exp(-lambda) = 1 + expm1(-lambda),
     !! 1 - exp(-2 lambda) = -expm1(-lambda) (2 + expm1(-lambda)), E(lambda) =
     !! -expm1(-a lambda), exp(-a delta) = exp(-a Lambda)/exp(-a lambda).
     pure subroutine power_arch_terms(self, c, lambda, delta, q, one_minus_q, q_over_v, &
-                                     r_over_x, log_slope)
+                                     r_over_x, root_q, log_slope)
         class(power_law), intent(in) :: self
-        real(qp), intent(in) :: c(6), lambda, delta
+        real(qp), intent(in) :: c(8), lambda, delta
         real(qp), intent(out) :: q, one_minus_q, q_over_v, r_over_x
+        real(qp), intent(out) :: root_q  !! sqrt(q)
         !> d(log q)/d Lambda at fixed lambda in hardware precision (laws with
         !! has_terms_xp; 0 otherwise)
         real(xp), intent(out), optional :: log_slope
@@ -469,9 +475,10 @@ contains
             e_delta = decay(a, delta)
             exp_delta = 1.0_qp - e_delta
         end if
-        q = e2*ea*e_delta*c(6)
+        root_q = e1*root(ea*e_delta*c(6))
+        q = root_q*root_q
         one_minus_q = om2 + e2*(-eam1)*c(6)
-        q_over_v = root(0.5_qp*a*e_delta*exp_delta)*c(6)*(e2*ea)
+        q_over_v = root_q*e1*c(7)
         r_over_x = e1
         ! a E(lambda) exp(-a delta)/(E(Lambda) E(delta)) (see power_theta_terms_xp)
         if (present(log_slope)) log_slope = real(a, xp)*real(-eam1, xp)* &
@@ -538,7 +545,7 @@ contains
 
     pure function power_conserved(self, c) result(k)
         class(power_law), intent(in) :: self
-        real(qp), intent(in) :: c(6)
+        real(qp), intent(in) :: c(8)
         real(qp) :: k
         k = sqrt(0.5_qp*c(3)/c(2))*exp(-(1.0_qp + 0.5_qp*c(3))*c(1))
     end function power_conserved
@@ -556,25 +563,29 @@ contains
         result(c)
         class(logarithmic_law), intent(in) :: self
         real(qp), intent(in) :: big_r, one_minus_big_r, big_lambda
-        real(qp) :: c(6)
-        c = [big_lambda, 0.0_qp, 0.0_qp, 0.0_qp, big_r, 0.0_qp]
+        real(qp) :: c(8)
+        c = [big_lambda, 0.0_qp, 0.0_qp, 0.0_qp, big_r, 1.0_qp/big_lambda, &
+             1.0_qp/sqrt(2.0_qp*big_lambda), 0.0_qp]
     end function logarithmic_apse_constants
 
     !> The power law's terms in the limit a -> 0: E(y)/a -> y, P = 2 delta.
     pure subroutine logarithmic_arch_terms(self, c, lambda, delta, q, one_minus_q, &
-                                           q_over_v, r_over_x, log_slope)
+                                           q_over_v, r_over_x, root_q, log_slope)
         class(logarithmic_law), intent(in) :: self
-        real(qp), intent(in) :: c(6), lambda, delta
+        real(qp), intent(in) :: c(8), lambda, delta
         real(qp), intent(out) :: q, one_minus_q, q_over_v, r_over_x
+        real(qp), intent(out) :: root_q  !! sqrt(q)
         !> d(log q)/d Lambda at fixed lambda in hardware precision (laws with
         !! has_terms_xp; 0 otherwise)
         real(xp), intent(out), optional :: log_slope
         real(qp) :: om1, om2, e1, e2
         call exp_pair(lambda, delta, c(5), e1, om1, om2)
         e2 = e1*e1
-        q = e2*delta/c(1)
-        one_minus_q = om2 + e2*lambda/c(1)
-        q_over_v = e2*sqrt(0.5_qp*delta)/c(1)
+        ! c(6) = 1/Lambda, c(7) = 1/sqrt(2 Lambda)
+        root_q = e1*root(delta*c(6))
+        q = root_q*root_q
+        one_minus_q = om2 + e2*lambda*c(6)
+        q_over_v = root_q*e1*c(7)
         r_over_x = e1
         if (present(log_slope)) log_slope = real(lambda, xp)/(real(delta, xp)*real(c(1), xp))
     end subroutine logarithmic_arch_terms
@@ -611,7 +622,7 @@ contains
 
     pure function logarithmic_conserved(self, c) result(k)
         class(logarithmic_law), intent(in) :: self
-        real(qp), intent(in) :: c(6)
+        real(qp), intent(in) :: c(8)
         real(qp) :: k
         k = exp(-c(1))/sqrt(2.0_qp*c(1))
     end function logarithmic_conserved
@@ -628,19 +639,19 @@ contains
     !! precision long before binary128 (the early phase of tiny R-bar).
     pure function default_theta_ratio64(self, c, lambda, delta, shift) result(g)
         class(speed_law), intent(in) :: self
-        real(qp), intent(in) :: c(6)                 !! from apse_constants
+        real(qp), intent(in) :: c(8)                 !! from apse_constants
         real(real64), intent(in) :: lambda, delta    !! offsets from the apse and the start
         real(real64), intent(in) :: shift            !! log of the scale factor
         real(real64) :: g
-        real(qp) :: q, one_minus_q, q_over_v, r_over_x
+        real(qp) :: q, one_minus_q, q_over_v, r_over_x, root_q
         call self%arch_terms(c, real(lambda, qp), real(delta, qp), q, one_minus_q, &
-                             q_over_v, r_over_x)
+                             q_over_v, r_over_x, root_q)
         g = real(sqrt(q/one_minus_q)*exp(real(shift, qp)), real64)
     end function default_theta_ratio64
 
     pure function power_theta_ratio64(self, c, lambda, delta, shift) result(g)
         class(power_law), intent(in) :: self
-        real(qp), intent(in) :: c(6)
+        real(qp), intent(in) :: c(8)
         real(real64), intent(in) :: lambda, delta, shift
         real(real64) :: g, a, e2, e_big
         a = real(c(3), real64)
@@ -653,7 +664,7 @@ contains
 
     pure function logarithmic_theta_ratio64(self, c, lambda, delta, shift) result(g)
         class(logarithmic_law), intent(in) :: self
-        real(qp), intent(in) :: c(6)
+        real(qp), intent(in) :: c(8)
         real(real64), intent(in) :: lambda, delta, shift
         real(real64) :: g, e2, big
         big = real(c(1), real64)
@@ -679,33 +690,39 @@ contains
         result(c)
         class(harmonic_law), intent(in) :: self
         real(qp), intent(in) :: big_r, one_minus_big_r, big_lambda
-        real(qp) :: c(6)
-        c = [big_lambda, one_minus_big_r*(1.0_qp + big_r), 0.0_qp, 0.0_qp, big_r, 0.0_qp]
+        real(qp) :: c(8)
+        c = [big_lambda, one_minus_big_r*(1.0_qp + big_r), 0.0_qp, 0.0_qp, big_r, 0.0_qp, &
+             0.0_qp, 0.0_qp]
+        c(6) = 1.0_qp/c(2)
+        c(7) = sqrt(c(6))
     end function harmonic_apse_constants
 
     !> P = 1 - x^2: q = exp(-2 lambda) (1 - x^2)/(1 - R^2), 1 - q = (1 - exp(-2 lambda))/
     !! (1 - R^2), q/v = q/sqrt(1 - x^2).
     pure subroutine harmonic_arch_terms(self, c, lambda, delta, q, one_minus_q, q_over_v, &
-                                        r_over_x, log_slope)
+                                        r_over_x, root_q, log_slope)
         class(harmonic_law), intent(in) :: self
-        real(qp), intent(in) :: c(6), lambda, delta
+        real(qp), intent(in) :: c(8), lambda, delta
         real(qp), intent(out) :: q, one_minus_q, q_over_v, r_over_x
+        real(qp), intent(out) :: root_q  !! sqrt(q)
         !> d(log q)/d Lambda at fixed lambda in hardware precision (laws with
         !! has_terms_xp; 0 otherwise)
         real(xp), intent(out), optional :: log_slope
         real(qp) :: e1, om1, om2, p_x
         call exp_pair(lambda, delta, c(5), e1, om1, om2)
         p_x = -fast_expm1(-2.0_qp*delta)
-        q = e1*e1*p_x/c(2)
-        one_minus_q = om2/c(2)
-        q_over_v = q/sqrt(p_x)
+        ! c(6) = 1/(1 - R^2), c(7) = sqrt(c(6))
+        root_q = e1*root(p_x*c(6))
+        q = root_q*root_q
+        one_minus_q = om2*c(6)
+        q_over_v = root_q*e1*c(7)
         r_over_x = e1
         if (present(log_slope)) log_slope = 0.0_xp
     end subroutine harmonic_arch_terms
 
     pure function harmonic_theta_ratio64(self, c, lambda, delta, shift) result(g)
         class(harmonic_law), intent(in) :: self
-        real(qp), intent(in) :: c(6)
+        real(qp), intent(in) :: c(8)
         real(real64), intent(in) :: lambda, delta, shift
         real(real64) :: g
         g = sqrt((-expm1_64(-2.0_real64*delta))/(-expm1_64(-2.0_real64*lambda))) &
@@ -721,7 +738,7 @@ contains
 
     pure function harmonic_conserved(self, c) result(k)
         class(harmonic_law), intent(in) :: self
-        real(qp), intent(in) :: c(6)
+        real(qp), intent(in) :: c(8)
         real(qp) :: k
         k = c(5)/sqrt(c(2))
     end function harmonic_conserved
