@@ -39,6 +39,7 @@ contains
         call harmonic_closed_forms()
         call power_laws()
         call closed_fall_times()
+        call fast_exponentials()
         call general_references('power1.5', power_law(n=1.5_qp))
         call general_references('power3', power_law(n=3.0_qp))
         call general_references('logarithmic', logarithmic_law())
@@ -316,6 +317,37 @@ contains
         t = 0.0_qp
         found = .false.
     end subroutine no_closed_fall_logarithmic
+
+    !> The engine's fast exp and expm1 against libquadmath's, on arguments next to the
+    !! table steps j/256 and j/65536 (where the table index is taken in double precision)
+    !! and spread over the range the integrands use.
+    subroutine fast_exponentials()
+        use brachistochrone_fast_exp, only: fast_exp, fast_expm1
+        use brachistochrone_quad_math, only: expm1
+        real(qp) :: x, worst, step
+        integer :: j, k, sign_
+        call section('central force: fast exp and expm1 against libquadmath')
+        worst = 0.0_qp
+        do sign_ = -1, 1, 2
+            do j = 0, 200
+                do k = -2, 2
+                    ! next to j/256 + (j mod 7)/65536, a few ulps either side
+                    x = real(sign_, qp)*(real(j, qp)/256.0_qp + real(mod(j, 7), qp)/65536.0_qp)
+                    x = x + real(k, qp)*spacing(max(abs(x), tiny(1.0_qp)))
+                    if (abs(x) < 0.5_qp .and. x /= 0.0_qp) worst = max(worst, &
+                        abs(fast_expm1(x) - expm1(x))/(eps_qp*abs(expm1(x))))
+                    worst = max(worst, abs(fast_exp(x) - exp(x))/(eps_qp*exp(x)))
+                end do
+            end do
+        end do
+        step = 1.0_qp/3.0_qp
+        do j = -3000, 3000
+            x = real(j, qp)*step
+            worst = max(worst, abs(fast_exp(x) - exp(x))/(eps_qp*exp(x)))
+        end do
+        write (output_unit, '(a,f6.2)') '   worst relative error in eps: ', worst
+        call check(worst <= 4.0_qp, 'fast exp, expm1 within 4 eps of libquadmath''s')
+    end subroutine fast_exponentials
 
     !> The closed-form fall times (n = 2: Tee (46); n = 3: sqrt(1 - r^2); logarithmic:
     !! sqrt(pi/2) erf(sqrt(-log r))) against the engine's quadrature of x/v, and the
