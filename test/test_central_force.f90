@@ -40,6 +40,7 @@ contains
         call power_laws()
         call closed_fall_times()
         call fast_exponentials()
+        call next_to_the_start()
         call general_references('power1.5', power_law(n=1.5_qp))
         call general_references('power3', power_law(n=3.0_qp))
         call general_references('logarithmic', logarithmic_law())
@@ -317,6 +318,44 @@ contains
         t = 0.0_qp
         found = .false.
     end subroutine no_closed_fall_logarithmic
+
+    !> rho = 1 - 1e-30 (a sliver panel next to the start, which once ended the early
+    !! phase's quadrature: 80 iterations) against rho = 1: R-bar, s, t agree to the
+    !! difference the endpoints make, in few steps.
+    subroutine next_to_the_start()
+        type(central_force_model) :: model
+        type(endpoint_solution) :: a, b
+        ! (psi well above Theta(rho, rho) ~ 1e-15: a tiny psi is a different arch)
+        real(qp), parameter :: fractions(4) = [1.0e-6_qp, 1.0e-3_qp, 0.5_qp, &
+                                               1.0_qp - 1.0e-6_qp]
+        real(qp) :: limit, worst
+        integer :: i, law, most
+        call section('central force: rho = 1 - 1e-30 against rho = 1')
+        worst = 99.0_qp
+        most = 0
+        do law = 1, 3
+            select case (law)
+            case (1); model = new_central_force_model(power_law(n=3.0_qp))
+            case (2); model = new_central_force_model(power_law(n=1.5_qp))
+            case default; model = new_central_force_model(logarithmic_law())
+            end select
+            limit = 2.0_qp*model%law%apse_angle_limit()
+            do i = 1, size(fractions)
+                a = model%solve(1.0_qp - 1.0e-30_qp, fractions(i)*limit)
+                b = model%solve(1.0_qp, fractions(i)*limit)
+                if (a%status /= status_ok .or. b%status /= status_ok) most = 999
+                most = max(most, a%steps, b%steps)
+                worst = min(worst, digits_of_agreement(a%apse_radius, b%apse_radius), &
+                            digits_of_agreement(a%arclength, b%arclength), &
+                            digits_of_agreement(a%time, b%time))
+            end do
+        end do
+        write (output_unit, '(a,f6.2,a,i0)') '   12 endpoints: fewest digits ', worst, &
+            ', most steps ', most
+        ! the endpoints differ by about sqrt(1 - rho)/psi = 1e-9 (psi = 1e-6 of the sector)
+        call check(worst >= 8.0_qp, 'rho = 1 - 1e-30 agrees with rho = 1 to their difference')
+        call check(most <= 30, 'rho next to 1: at most 30 evaluations')
+    end subroutine next_to_the_start
 
     !> The engine's fast exp and expm1 against libquadmath's, on arguments next to the
     !! table steps j/256 and j/65536 (where the table index is taken in double precision)

@@ -25,17 +25,27 @@
 !! the real axis (`rule_for`). Away from the apse the integrands decay like
 !! exp(-(n+1) lambda/2) or faster: each panel is asked only for the digits its share of
 !! the running sum needs, and panels below 1e-40 of it are skipped. Transcendentals:
-!! two fast exp/expm1 per node (`brachistochrone_fast_exp`), square roots by a double
-!! seed and Newton steps.
+!! one or two fast exp/expm1 per node (`brachistochrone_fast_exp`; one for n = 2, 3),
+!! square roots by a hardware seed and a Newton step. The fall time t0 is in closed form
+!! for n = 2, 3 and the logarithmic law (`speed_law%closed_fall`), a quadrature of x/v
+!! otherwise (`fall_piece`).
 !!
 !! Two-point problem: the root R-bar of Upsilon(R) = psi, in the unknown u = sqrt(rho - R)
 !! for R in [rho/2, rho] (R-bar and rho - R-bar exact next to the apse) or y = log R
 !! below (tiny R-bar keeps its relative precision, down to the binary128 range).
-!! A double-precision phase (17-digit rules, regula falsi with the Anderson-Bjorck
-!! correction on a bracket) then quad precision: one Newton step with the double
-!! phase's slope and secant steps, each a full evaluation of Theta, S and T; the last
-!! secant step (predicted error below 1e-35) is taken without a further evaluation, s
-!! extrapolated along the secant and t by Hamilton-Jacobi (dt/dpsi = K at fixed rho).
+!! Laws with hardware-precision terms (`speed_law%has_terms_xp`: power and logarithmic)
+!! take an early phase in the widest hardware kind (x87 extended; `hardware_phase`):
+!! safeguarded Newton steps on Theta and its analytic slope d Theta/d Lambda (the
+!! integrand's derivative at fixed lambda, g q'/(2 q (1 - q)) with q' = d q/d Lambda
+!! from the law, summed on the same nodes, plus the jump of the weights times g at the
+!! endpoint), first on 17-digit rules with double-precision transcendentals, then on
+!! 20-digit rules, to within the rounding of the hardware kind. Then one full-precision
+!! evaluation of Theta, S and T with their slopes in hardware precision (`final_step`):
+!! a Newton step of relative size about 1e-18, certified when its curvature and slope
+!! errors are below 1e-35 of the unknown (otherwise the next step from there; secant
+!! steps as the last resort), s corrected along its slope and t by Hamilton-Jacobi
+!! (dt/dpsi = K at fixed rho). Other laws: a double-precision phase (regula falsi with
+!! the Anderson-Bjorck correction) and quad-precision secant steps (`quad_phase`).
 module brachistochrone_central_force
     use brachistochrone_kinds, only: qp, pi, eps_qp
     use brachistochrone_status, only: status_ok, status_inaccessible, &
@@ -461,7 +471,6 @@ contains
         if (present(slopes)) slopes = 0.0_xp
         carry_all = 0.0_xp
         do p = 1, count
-            panels(p)%log_rho = bernstein_log(model, a%big_lambda, panels(p))
             associate (pan => panels(p))
             share = 1.0_qp
             if (p > 1) then
@@ -472,8 +481,10 @@ contains
                 do m = 1, merge(3, 1, want_length_time)
                     if (sums(m) > 0.0_qp) share = max(share, 4.0_qp*length*last(m)/sums(m))
                 end do
-                if (share < negligible) exit
+                ! skipped, not ended: a sliver next to a split is followed by a full panel
+                if (share < negligible) cycle
             end if
+            pan%log_rho = bernstein_log(model, a%big_lambda, pan)
             j = rule_for(pan%log_rho, digits + real(min(0.0_real64, log10(max(real(share, &
                          real64), 1.0e-60_real64))), qp), &
                          panel_growth(pan, 2.0_qp*pi/model%sigma_apse))
@@ -561,13 +572,13 @@ contains
         shift = 0.0_real64
         if (a%weight_below == 0.0_qp) shift = real(pi/model%sigma_apse*a%lambda_r, real64)
         do p = 1, count
-            panels(p)%log_rho = bernstein_log(model, a%big_lambda, panels(p))
             associate (pan => panels(p))
             share = 1.0_real64
             if (p > 1 .and. theta > 0.0_real64) then
                 share = 4.0_real64*real(panel_length(pan), real64)*last/theta
-                if (share < 1.0e-20_real64) exit
+                if (share < 1.0e-20_real64) cycle
             end if
+            pan%log_rho = bernstein_log(model, a%big_lambda, pan)
             j = rule_for(pan%log_rho, coarse_digits + &
                          real(min(0.0_real64, log10(max(share, 1.0e-30_real64))), qp), &
                          panel_growth(pan, 2.0_qp*pi/model%sigma_apse))
@@ -638,14 +649,14 @@ contains
         end do
         last = 0.0_qp
         do p = 1, count
-            ! singularities: delta = 0 and +-i sigma_start (x = 0 is at infinity)
-            panels(p)%log_rho = bernstein_log(model, 1.0e30_qp, panels(p))
             associate (pan => panels(p))
             share = 1.0_qp
             if (p > 1 .and. total > 0.0_qp) then
                 share = 4.0_qp*panel_length(pan)*last/total
-                if (share < negligible) exit
+                if (share < negligible) cycle
             end if
+            ! singularities: delta = 0 and +-i sigma_start (x = 0 is at infinity)
+            pan%log_rho = bernstein_log(model, 1.0e30_qp, pan)
             j = rule_for(pan%log_rho, fine_digits + &
                          real(min(0.0_real64, log10(max(real(share, real64), &
                                                             1.0e-60_real64))), qp), &
@@ -889,13 +900,13 @@ contains
         shift = 0.0_xp
         if (a%weight_below == 0.0_qp) shift = real(pi/model%sigma_apse*a%lambda_r, xp)
         do p = 1, count
-            panels(p)%log_rho = bernstein_log(model, a%big_lambda, panels(p))
             associate (pan => panels(p))
             share = 1.0_xp
             if (p > 1 .and. theta > 0.0_xp) then
                 share = 4.0_xp*real(panel_length(pan), xp)*last/theta
-                if (share < 1.0e-24_xp) exit
+                if (share < 1.0e-24_xp) cycle
             end if
+            pan%log_rho = bernstein_log(model, a%big_lambda, pan)
             j = rule_for(pan%log_rho, merge(coarse_digits, hardware_digits, rough) + &
                          real(min(0.0_xp, log10(max(share, 1.0e-30_xp))), qp), &
                          panel_growth(pan, 2.0_qp*pi/model%sigma_apse))
@@ -1040,9 +1051,10 @@ contains
         d_prev = 0.0_xp
         rough = .true.
         xk = falsi()
-        ! rho = 1: Upsilon ~ c u^2 from the apse (falsi would start far below the root)
-        if (prob%use_u .and. prob%rho == 1.0_qp .and. fb > 0.0_xp) &
-            xk = b*sqrt(real(prob%psi, xp)/(fb + real(prob%psi, xp)))
+        ! rho next to 1 (second half-arch): Upsilon - Theta(rho,rho) ~ c u^2 but for the
+        ! smallest u (falsi would start far below the root)
+        if (prob%use_u .and. prob%second .and. prob%one_minus_rho < 1.0e-6_qp .and. &
+            fa < 0.0_xp .and. fb > 0.0_xp) xk = b*sqrt(-fa/(fb - fa))
         do iteration = 1, 80
             call residual_xp(model, prob, xk, rough, fk, dk)
             steps = steps + 1
