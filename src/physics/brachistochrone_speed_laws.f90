@@ -432,7 +432,8 @@ contains
         c(7) = sqrt(0.5_qp*a*c(4)*c(6))
     end function power_apse_constants
 
-    !> Two expm1 per node (three where a delta < 1/4): exp(-lambda) = 1 + expm1(-lambda),
+    !> Two expm1 per node (three where a delta < 1/4; one less for n = 1.5, 2, 3, where
+    !! exp(-a lambda) follows from exp(-lambda)): exp(-lambda) = 1 + expm1(-lambda),
     !! 1 - exp(-2 lambda) = -expm1(-lambda) (2 + expm1(-lambda)), E(lambda) =
     !! -expm1(-a lambda), exp(-a delta) = exp(-a Lambda)/exp(-a lambda).
     pure subroutine power_arch_terms(self, c, lambda, delta, q, one_minus_q, q_over_v, &
@@ -456,6 +457,10 @@ contains
             ! n = 2: exp(-a lambda) = exp(-lambda)
             ea = e1
             eam1 = -om1
+        else if (a == 0.5_qp) then
+            ! n = 1.5: exp(-lambda/2) = sqrt(exp(-lambda)), 1 - it = (1 - e1)/(1 + it)
+            ea = root(e1)
+            eam1 = -om1/(1.0_qp + ea)
         else if (a*lambda > 0.5_qp) then
             if (delta < lambda .and. c(4) > 0.0_qp) then
                 ! nearer the start: exp(-a lambda) = R^a exp(a delta), exact arguments
