@@ -1364,7 +1364,10 @@ contains
         call start_problem(self, rho, psi, limit, prob, apse_angle_rho)
         solution%arch = merge(arch_complete, merge(arch_second, arch_first, prob%second), &
                               rho == 1.0_qp)
-        if (psi == apse_angle_rho) then
+        if (abs(psi - apse_angle_rho) <= 2.0_qp*eps_qp*psi) then
+            ! B at its apse to within two roundings of psi (R-bar = rho - u^2 with u of the
+            ! order of that difference; for tiny rho Theta(rho,rho) is pi/(n+1) to far
+            ! more than 34 digits, and the root would be sought next to u = 0)
             call at_the_apse(self, prob, solution)
             return
         end if
