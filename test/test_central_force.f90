@@ -388,8 +388,9 @@ contains
         call check(worst <= 4.0_qp, 'fast exp, expm1 within 4 eps of libquadmath''s')
     end subroutine fast_exponentials
 
-    !> The closed-form fall times (n = 2: Tee (46); n = 3: sqrt(1 - r^2); logarithmic:
-    !! sqrt(pi/2) erf(sqrt(-log r))) against the engine's quadrature of x/v, and the
+    !> The closed-form fall times (n = 2: Tee (46); n = 3: sqrt(1 - r^2); other n: the
+    !! incomplete beta function's series; logarithmic: sqrt(pi/2) erf(sqrt(-log r)))
+    !! against the engine's quadrature of x/v, and the
     !! n = 2 engine (its special paths) against the inverse-square fast path.
     subroutine closed_fall_times()
         type(central_force_model) :: closed, quadrature
@@ -397,15 +398,17 @@ contains
         type(endpoint_solution) :: a, b
         real(qp), parameter :: radii(6) = [0.0_qp, 1.0e-6_qp, 0.3_qp, 0.9_qp, &
                                            1.0_qp - 1.0e-12_qp, 1.0_qp - 1.0e-30_qp]
+        real(qp), parameter :: exponents(6) = [2.0_qp, 3.0_qp, 1.25_qp, 1.5_qp, 10.0_qp, &
+                                               32.0_qp]
         real(qp) :: t(2), worst
         integer :: law, i, j, status
         call section('central force: closed-form fall times against the quadrature')
         worst = 99.0_qp
-        do law = 1, 3
+        do law = 1, 7
             select case (law)
-            case (1, 2)
-                closed = new_central_force_model(power_law(n=real(law + 1, qp)))
-                quadrature = new_central_force_model(quadrature_power_law(n=real(law + 1, qp)))
+            case (1:6)
+                closed = new_central_force_model(power_law(n=exponents(law)))
+                quadrature = new_central_force_model(quadrature_power_law(n=exponents(law)))
             case default
                 closed = new_central_force_model(logarithmic_law())
                 quadrature = new_central_force_model(quadrature_logarithmic_law())
@@ -416,8 +419,8 @@ contains
                 worst = min(worst, digits_of_agreement(t(1), t(2)))
             end do
         end do
-        write (output_unit, '(a,f6.2)') '   n = 2, 3, logarithmic, 6 radii: fewest digits ', &
-            worst
+        write (output_unit, '(a,f6.2)') '   n = 2, 3, 1.25, 1.5, 10, 32, logarithmic, 6 radii: ' &
+            //'fewest digits ', worst
         call check(worst >= 32.5_qp, 'closed-form fall times = quadrature to >= 32.5 digits')
         closed = new_central_force_model(power_law(n=2.0_qp))
         fast = new_inverse_square_model()

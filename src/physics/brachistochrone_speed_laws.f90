@@ -47,6 +47,18 @@ module brachistochrone_speed_laws
     !! included (it agrees with the logarithmic law to O(n - 1)).
     real(qp), parameter :: max_power_exponent = 32.0_qp
 
+    !> Series of the power law's fall time (`power_fall_time`): most terms, 1/k, 1/(2k+1),
+    !! (k + 1/2)/(k + 1), log 2.
+    integer, parameter :: max_series_terms = 160
+    integer :: k_
+    real(qp), parameter :: inverse_integer(1:max_series_terms + 1) = &
+        [(1.0_qp/real(k_, qp), k_ = 1, max_series_terms + 1)]
+    real(qp), parameter :: inverse_odd(0:max_series_terms) = &
+        [(1.0_qp/real(2*k_ + 1, qp), k_ = 0, max_series_terms)]
+    real(qp), parameter :: half_step(0:max_series_terms) = &
+        [((real(k_, qp) + 0.5_qp)/real(k_ + 1, qp), k_ = 0, max_series_terms)]
+    real(qp), parameter :: log_two = log(2.0_qp)
+
     !> A speed law: v^2 and its divided difference. Attractive laws here: v > 0 for
     !! 0 < r < 1, v(1) = 0.
     type, abstract :: speed_law
@@ -532,21 +544,66 @@ contains
     end function power_fall_integrand
 
     !> n = 3: t0(x) = sqrt(1 - x^2); n = 2: the inverse-square fall time (Tee eq. 46);
-    !! other exponents: none (incomplete beta functions).
+    !! 1/4 <= a = n - 1: an incomplete beta function (`power_fall_time`); below: none.
     pure subroutine power_closed_fall(self, delta_lo, delta_hi, t, found)
         class(power_law), intent(in) :: self
         real(qp), intent(in) :: delta_lo, delta_hi
         real(qp), intent(out) :: t
         logical, intent(out) :: found
-        found = self%n == 3.0_qp .or. self%n == 2.0_qp
+        real(qp) :: a
+        a = self%n - 1.0_qp
+        found = a >= 0.25_qp
         t = 0.0_qp
         if (self%n == 3.0_qp) then
             t = sqrt(-expm1(-2.0_qp*delta_hi)) - sqrt(-expm1(-2.0_qp*delta_lo))
         else if (self%n == 2.0_qp) then
             t = radial_time(exp(-delta_hi), -expm1(-delta_hi)) &
                 - radial_time(exp(-delta_lo), -expm1(-delta_lo))
+        else if (found) then
+            t = power_fall_time(a, delta_hi)
+            if (delta_lo > 0.0_qp) t = t - power_fall_time(a, delta_lo)
         end if
     end subroutine power_closed_fall
+
+    !> The fall time from 1 to x = exp(-delta) of the power law a = n - 1 >= 1/4:
+    !! t0 = I(y)/sqrt(2 a), I(y) = int_y^1 t^(p-1) (1-t)^(-1/2) dt, y = x^a, p = 1/a + 1/2
+    !! (t = y). For y >= 1/2, with 1 - t = w^2, I = 2 sum_k c_k W^(2k+1)/(2k+1), W^2 = 1 - y,
+    !! c_k the binomial series of (1 - w^2)^(p-1); below, I = B(p, 1/2) - sum_k d_k
+    !! y^(p+k)/(p+k), d_k = (1/2)_k/k!. Both series have ratio at most 1/2 (terms of one
+    !! sign after the first few); about 115 terms for 36 digits.
+    pure function power_fall_time(a, delta) result(t)
+        real(qp), intent(in) :: a, delta
+        real(qp) :: t, p, w2, power, c, term, total, y, beta
+        integer :: k
+        p = 1.0_qp/a + 0.5_qp
+        total = 0.0_qp
+        if (a*delta <= log_two) then
+            w2 = -fast_expm1(-a*delta)
+            power = sqrt(w2)
+            c = 1.0_qp
+            do k = 0, max_series_terms
+                term = c*power*inverse_odd(k)
+                total = total + term
+                if (abs(term) <= 1.0e-36_qp*abs(total)) exit
+                c = c*(real(k + 1, qp) - p)*inverse_integer(k + 1)
+                power = power*w2
+            end do
+            t = 2.0_qp*total/sqrt(2.0_qp*a)
+        else
+            y = fast_exp(-a*delta)
+            power = fast_exp(-(1.0_qp + 0.5_qp*a)*delta)   ! y^p
+            c = 1.0_qp
+            do k = 0, max_series_terms
+                term = c*power/(p + real(k, qp))
+                total = total + term
+                if (term <= 1.0e-36_qp*total) exit
+                c = c*half_step(k)
+                power = power*y
+            end do
+            beta = gamma(p)*sqrt(acos(-1.0_qp))/gamma(p + 0.5_qp)
+            t = (beta - total)/sqrt(2.0_qp*a)
+        end if
+    end function power_fall_time
 
     pure function power_conserved(self, c) result(k)
         class(power_law), intent(in) :: self
