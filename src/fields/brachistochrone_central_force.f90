@@ -27,8 +27,8 @@
 !! the running sum needs, and panels below 1e-40 of it are skipped. Transcendentals:
 !! one or two fast exp/expm1 per node (`brachistochrone_fast_exp`; one for n = 2, 3),
 !! square roots by a hardware seed and a Newton step. The fall time t0 is in closed form
-!! for n = 2, 3 and the logarithmic law (`speed_law%closed_fall`), a quadrature of x/v
-!! otherwise (`fall_piece`).
+!! for power laws with n >= 1.25 and the logarithmic law (`speed_law%closed_fall`), a
+!! quadrature of x/v otherwise (`fall_piece`).
 !!
 !! Two-point problem: the root R-bar of Upsilon(R) = psi, in the unknown u = sqrt(rho - R)
 !! for R in [rho/2, rho] (R-bar and rho - R-bar exact next to the apse) or y = log R
