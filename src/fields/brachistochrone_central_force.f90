@@ -462,9 +462,9 @@ contains
         real(xp), intent(out), optional :: slopes(2)
         type(panel) :: panels(max_panels)
         real(qp) :: part(3), last(3), share, v, lambda, delta, jacobian, q, omq, qv, rx
-        real(qp) :: root, inverse_root, common, g(3), length, root_q
+        real(qp) :: root, inverse_root, common, g(3), root_q
         real(xp) :: part_xp(2), carry(2), carry_all(2), omq_xp, log_slope, half_slope
-        integer :: count, p, k, j, m
+        integer :: count, p, k, j
         call arch_panels(model, a, panels, count)
         sums = 0.0_qp
         last = 0.0_qp
@@ -474,13 +474,7 @@ contains
             associate (pan => panels(p))
             share = 1.0_qp
             if (p > 1) then
-                ! bound on this panel's share: its length in lambda times the integrands
-                ! at the nearest node of the previous panel (they decay away from the apse)
-                length = panel_length(pan)
-                share = 0.0_qp
-                do m = 1, merge(3, 1, want_length_time)
-                    if (sums(m) > 0.0_qp) share = max(share, 4.0_qp*length*last(m)/sums(m))
-                end do
+                share = panel_share(pan, last, sums, merge(3, 1, want_length_time))
                 ! skipped, not ended: a sliver next to a split is followed by a full panel
                 if (share < negligible) cycle
             end if
@@ -530,6 +524,22 @@ contains
             end associate
         end do
     end subroutine arch_sums
+
+    !> Bound on a panel's share of the sums so far: its length in lambda times the
+    !! integrands at the nearest node of the previous panel (they decay away from the
+    !! apse), for the first `count` sums.
+    pure function panel_share(pan, last, sums, count) result(share)
+        type(panel), intent(in) :: pan
+        real(qp), intent(in) :: last(3), sums(3)
+        integer, intent(in) :: count
+        real(qp) :: share, length
+        integer :: m
+        length = panel_length(pan)
+        share = 0.0_qp
+        do m = 1, count
+            if (sums(m) > 0.0_qp) share = max(share, 4.0_qp*length*last(m)/sums(m))
+        end do
+    end function panel_share
 
     !> sums = sums + terms with Kahan's compensation (carry: the running correction).
     pure subroutine add_compensated(sums, carry, terms)
@@ -916,24 +926,7 @@ contains
             part = 0.0_xp
             do k = 1, model%gauss(j)%n
                 v = lo + width*model%gauss(j)%offset_xp(k)
-                select case (pan%kind)
-                case (kind_apse_root)
-                    lambda = scale*v*v
-                    delta = big - lambda
-                    jacobian = 2.0_xp*scale*v
-                case (kind_apse)
-                    lambda = v
-                    delta = big - v
-                    jacobian = 1.0_xp
-                case (kind_start)
-                    delta = v
-                    lambda = big - v
-                    jacobian = 1.0_xp
-                case default
-                    delta = scale*v*v
-                    lambda = big - delta
-                    jacobian = 2.0_xp*scale*v
-                end select
+                call node_point_xp(pan%kind, scale, big, v, lambda, delta, jacobian)
                 call model%law%theta_terms_xp(a%cx, lambda, delta, shift, rough, g, omq, &
                                               log_slope)
                 part(1) = part(1) + model%gauss(j)%weight_xp(k)*g*jacobian
@@ -953,6 +946,31 @@ contains
             slope = slope + real(a%weight_below - a%weight_above, xp)*g
         end if
     end subroutine theta_xp
+
+    !> `node_point` in hardware precision.
+    elemental subroutine node_point_xp(kind, scale, big_lambda, v, lambda, delta, jacobian)
+        integer, intent(in) :: kind
+        real(xp), intent(in) :: scale, big_lambda, v
+        real(xp), intent(out) :: lambda, delta, jacobian
+        select case (kind)
+        case (kind_apse_root)
+            lambda = scale*v*v
+            delta = big_lambda - lambda
+            jacobian = 2.0_xp*scale*v
+        case (kind_apse)
+            lambda = v
+            delta = big_lambda - v
+            jacobian = 1.0_xp
+        case (kind_start)
+            delta = v
+            lambda = big_lambda - v
+            jacobian = 1.0_xp
+        case default
+            delta = scale*v*v
+            lambda = big_lambda - delta
+            jacobian = 2.0_xp*scale*v
+        end select
+    end subroutine node_point_xp
 
     !> log(1 + z) in hardware precision (Kahan's correction of log(1 + z)).
     elemental function log1p_xp(z) result(l)
@@ -1041,7 +1059,7 @@ contains
         real(real64), intent(in) :: f_lo, f_hi
         real(qp), intent(out) :: x, slope, curvature
         integer, intent(inout) :: steps
-        real(xp) :: a, b, fa, fb, xk, fk, dk, x_new, x_prev, d_prev, floor, m
+        real(xp) :: a, b, fa, fb, xk, fk, dk, x_new, x_prev, d_prev, floor, noise
         integer :: iteration
         logical :: rough
         call first_bracket(lo, f_lo, hi, f_hi, a, fa, b, fb)
@@ -1060,7 +1078,8 @@ contains
             steps = steps + 1
             if (d_prev /= 0.0_xp .and. abs(xk - x_prev) > 1.0e-7_xp*floor) &
                 curvature = max(curvature, real(abs((dk - d_prev)/((xk - x_prev)*dk)), qp))
-            if ((abs(fk) <= noise(fk) .and. noise(fk) < 1.0e-3_xp) .or. &
+            noise = residual_noise(prob, fk, rough)
+            if ((abs(fk) <= noise .and. noise < 1.0e-3_xp) .or. &
                 (rough .and. iteration > 10)) then
                 ! f within its rounding, and that small (the root as close as this
                 ! precision can place it; next to the sector's edge that is far from
@@ -1074,23 +1093,12 @@ contains
                 call first_bracket(lo, f_lo, hi, f_hi, a, fa, b, fb)
                 cycle
             else
-                ! keep the bracket: [a, b] with f(a), f(b) of opposite signs
-                if ((fk > 0.0_xp) .eqv. (fb > 0.0_xp)) then
-                    m = 1.0_xp - fk/fb
-                    fa = fa*merge(m, 0.5_xp, m > 0.0_xp)
-                else
-                    a = b
-                    fa = fb
-                end if
-                b = xk
-                fb = fk
+                call keep_bracket(xk, fk, a, fa, b, fb)
                 x_new = xk - fk/dk
                 if (.not. (x_new > min(a, b) .and. x_new < max(a, b))) x_new = falsi()
             end if
             if (rough .and. abs(x_new - xk) <= 1.0e-7_xp*max(abs(xk), floor)) then
                 ! the rough root: on to the hardware-precision rules
-                ! with the first bracket again (the rough signs are not sure within
-                ! their rounding)
                 rough = .false.
                 call first_bracket(lo, f_lo, hi, f_hi, a, fa, b, fb)
             else if (.not. rough .and. &
@@ -1105,23 +1113,67 @@ contains
         slope = real(dk, qp)
         curvature = 0.5_qp*curvature
     contains
-        !> The rounding level of f: Upsilon to about 1e-15 (rough) or 1e-18 of itself;
-        !! in form 2 divided by limit - Upsilon.
-        pure real(xp) function noise(f)
-            real(xp), intent(in) :: f
-            noise = merge(1.0e-15_xp, 1.0e-18_xp, rough)
-            select case (prob%form)
-            case (0)
-                noise = noise*real(prob%psi, xp)
-            case (2)
-                noise = noise*real(prob%limit/(prob%limit - prob%psi), xp)*exp(-f)
-            end select
-        end function noise
         pure real(xp) function falsi()
             falsi = b - fb*(b - a)/(fb - fa)
             if (.not. (falsi > min(a, b) .and. falsi < max(a, b))) falsi = 0.5_xp*(a + b)
         end function falsi
     end subroutine hardware_phase
+
+    !> The rounding level of the early phase's residual f: Upsilon to about 1e-15
+    !! (rough) or 1e-18 of itself; in form 2 divided by limit - Upsilon.
+    pure function residual_noise(prob, f, rough) result(noise)
+        type(endpoint_problem), intent(in) :: prob
+        real(xp), intent(in) :: f
+        logical, intent(in) :: rough
+        real(xp) :: noise
+        noise = merge(1.0e-15_xp, 1.0e-18_xp, rough)
+        select case (prob%form)
+        case (0)
+            noise = noise*real(prob%psi, xp)
+        case (2)
+            noise = noise*real(prob%limit/(prob%limit - prob%psi), xp)*exp(-f)
+        end select
+    end function residual_noise
+
+    !> The bracket [a, b] (f(a), f(b) of opposite signs) after f(xk) = fk: xk replaces
+    !! b, and a the old b when the signs say so; otherwise f(a) is scaled down
+    !! (Anderson-Bjorck).
+    pure subroutine keep_bracket(xk, fk, a, fa, b, fb)
+        real(xp), intent(in) :: xk, fk
+        real(xp), intent(inout) :: a, fa, b, fb
+        real(xp) :: m
+        if ((fk > 0.0_xp) .eqv. (fb > 0.0_xp)) then
+            m = 1.0_xp - fk/fb
+            fa = fa*merge(m, 0.5_xp, m > 0.0_xp)
+        else
+            a = b
+            fa = fb
+        end if
+        b = xk
+        fb = fk
+    end subroutine keep_bracket
+
+    !> Certified Newton steps (`final_step`) from the early phase's root x: a step not
+    !! certified (the root not close enough for the bounds) is taken and the next one
+    !! certified (usually; next to the edge of the sector the early root is poorer and
+    !! Newton takes up to 4 steps). Not `done`: x and slope for secant steps.
+    pure subroutine final_steps(model, prob, x, lo, hi, curvature, solution, done, slope)
+        type(central_force_model), intent(in) :: model
+        type(endpoint_problem), intent(in) :: prob
+        real(qp), intent(inout) :: x
+        real(qp), intent(in) :: lo, hi, curvature
+        type(endpoint_solution), intent(inout) :: solution
+        logical, intent(out) :: done
+        real(qp), intent(out) :: slope
+        real(qp) :: x_next
+        integer :: attempt
+        do attempt = 1, 4
+            call final_step(model, prob, x, lo, hi, curvature, solution, done, x_next, slope)
+            if (done) return
+            if (x_next == x) exit
+            x = x_next
+        end do
+    end subroutine final_steps
 
     !> The bracket [lo, hi] and its residuals in hardware precision.
     pure subroutine first_bracket(lo, f_lo, hi, f_hi, a, fa, b, fb)
@@ -1342,10 +1394,9 @@ contains
         real(qp), intent(in) :: psi   !! endpoint angle, 0 <= psi <= pi
         type(endpoint_solution) :: solution
         type(endpoint_problem) :: prob
-        real(qp) :: limit, apse_angle_rho, half, x, lo, hi, slope_q, curvature, x_next
+        real(qp) :: limit, apse_angle_rho, half, x, lo, hi, slope_q, curvature
         real(real64) :: f_lo, f_hi, slope
         logical :: below, hardware, done
-        integer :: attempt
 
         solution%rho = rho
         solution%psi = psi
@@ -1399,17 +1450,8 @@ contains
             hi = half
         end if
         if (hardware) then
-            ! a step not certified (the early phase's root not close enough for the
-            ! bounds) is taken, and the next one certified (usually; next to the edge of
-            ! the sector the hardware phase's root is poorer and Newton takes up to 4
-            ! steps); secant steps from there otherwise
-            do attempt = 1, 4
-                call final_step(self, prob, x, lo, hi, curvature, solution, done, x_next, &
-                                slope_q)
-                if (done) return
-                if (x_next == x) exit
-                x = x_next
-            end do
+            call final_steps(self, prob, x, lo, hi, curvature, solution, done, slope_q)
+            if (done) return
             slope = real(slope_q, real64)
             prob%form = 0
         end if
