@@ -31,6 +31,10 @@ module test_central_force
     contains
         procedure :: closed_fall => no_closed_fall_logarithmic
     end type quadrature_logarithmic_law
+    type, extends(harmonic_law) :: quadrature_harmonic_law
+    contains
+        procedure :: closed_fall => no_closed_fall_harmonic
+    end type quadrature_harmonic_law
 
 contains
 
@@ -236,11 +240,12 @@ contains
         type(central_force_model) :: general
         type(endpoint_solution) :: b
         real(qp), parameter :: minima(5) = [0.01_qp, 0.2_qp, 0.5_qp, 0.7_qp, 0.95_qp]
-        real(qp) :: m, phi, r, angle, length, time, theta, worst
+        real(qp) :: m, phi, r, angle, length, time, theta, worst, solved
         integer :: i, j, status
         call section('central force: harmonic law against Saitoh''s hypocycloid')
         general = new_central_force_model(harmonic_law())
         worst = 99.0_qp
+        solved = 99.0_qp
         do i = 1, 5
             m = minima(i)
             call general%half_arch(m, m, .false., angle, length, time, status)
@@ -257,10 +262,19 @@ contains
                 ! their size, so measure theta's error on that scale
                 worst = min(worst, -log10(abs(angle - theta)/(0.5_qp*m*phi) + eps_qp), &
                             digits_of_agreement(time, 0.5_qp*phi*sqrt(1.0_qp - m*m)))
+                ! the two-point problem to the point (r, theta) gives R_m and t(phi) back
+                ! (R_m's condition number there is of order 1/m: credited)
+                b = general%solve(r, theta)
+                solved = min(solved, digits_of_agreement(b%apse_radius, m) &
+                             + max(0.0_qp, -log10(m)), &
+                             digits_of_agreement(b%time, 0.5_qp*phi*sqrt(1.0_qp - m*m)))
             end do
         end do
         write (output_unit, '(a,f6.2)') '   fewest digits of theta(phi), t(phi): ', worst
         call check(worst >= 32.0_qp, 'theta (8) and t (9) along the hypocycloid, 32 digits')
+        write (output_unit, '(a,f6.2)') '   two-point to (r(phi), theta(phi)): fewest digits '// &
+            'of R_m, t(phi) ', solved
+        call check(solved >= 31.0_qp, 'harmonic two-point: R_m and t (9) to >= 31 digits')
         ! surface to surface: psi = pi (1 - R_m) gives R_m back
         b = general%solve(1.0_qp, pi*0.6_qp)
         call check_close(b%apse_radius, 0.4_qp, 1.0e3_qp, 'two-point, surface to surface')
@@ -318,6 +332,15 @@ contains
         t = 0.0_qp
         found = .false.
     end subroutine no_closed_fall_logarithmic
+
+    pure subroutine no_closed_fall_harmonic(self, delta_lo, delta_hi, t, found)
+        class(quadrature_harmonic_law), intent(in) :: self
+        real(qp), intent(in) :: delta_lo, delta_hi
+        real(qp), intent(out) :: t
+        logical, intent(out) :: found
+        t = 0.0_qp
+        found = .false.
+    end subroutine no_closed_fall_harmonic
 
     !> rho = 1 - 1e-30 (a sliver panel next to the start, which once ended the early
     !! phase's quadrature: 80 iterations) against rho = 1: R-bar, s, t agree to the
@@ -404,11 +427,14 @@ contains
         integer :: law, i, j, status
         call section('central force: closed-form fall times against the quadrature')
         worst = 99.0_qp
-        do law = 1, 7
+        do law = 1, 8
             select case (law)
             case (1:6)
                 closed = new_central_force_model(power_law(n=exponents(law)))
                 quadrature = new_central_force_model(quadrature_power_law(n=exponents(law)))
+            case (8)
+                closed = new_central_force_model(harmonic_law())
+                quadrature = new_central_force_model(quadrature_harmonic_law())
             case default
                 closed = new_central_force_model(logarithmic_law())
                 quadrature = new_central_force_model(quadrature_logarithmic_law())
@@ -419,8 +445,8 @@ contains
                 worst = min(worst, digits_of_agreement(t(1), t(2)))
             end do
         end do
-        write (output_unit, '(a,f6.2)') '   n = 2, 3, 1.25, 1.5, 10, 32, logarithmic, 6 radii: ' &
-            //'fewest digits ', worst
+        write (output_unit, '(a,f6.2)') '   n = 2, 3, 1.25, 1.5, 10, 32, logarithmic, ' &
+            //'harmonic, 6 radii: fewest digits ', worst
         call check(worst >= 32.5_qp, 'closed-form fall times = quadrature to >= 32.5 digits')
         closed = new_central_force_model(power_law(n=2.0_qp))
         fast = new_inverse_square_model()

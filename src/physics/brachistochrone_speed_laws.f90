@@ -173,6 +173,10 @@ module brachistochrone_speed_laws
         procedure :: theta_ratio64 => harmonic_theta_ratio64
         procedure :: inverse_speed => harmonic_inverse_speed
         procedure :: conserved => harmonic_conserved
+        procedure :: closed_fall => harmonic_closed_fall
+        procedure :: has_terms_xp => harmonic_has_terms_xp
+        procedure :: apse_constants_xp => harmonic_apse_constants_xp
+        procedure :: theta_terms_xp => harmonic_theta_terms_xp
     end type harmonic_law
 
 contains
@@ -779,7 +783,9 @@ contains
         one_minus_q = om2*c(6)
         q_over_v = root_q*e1*c(7)
         r_over_x = e1
-        if (present(log_slope)) log_slope = 0.0_xp
+        ! 2 x^2 (1 - exp(-2 lambda))/((1 - x^2)(1 - R^2)), x = R/exp(-lambda)
+        if (present(log_slope)) log_slope = 2.0_xp*(real(c(5), xp)/real(e1, xp))**2* &
+            real(om2, xp)*real(c(6), xp)/real(p_x, xp)
     end subroutine harmonic_arch_terms
 
     pure function harmonic_theta_ratio64(self, c, lambda, delta, shift) result(g)
@@ -937,5 +943,45 @@ contains
         g = sqrt(delta/(one_minus_q*c(1)))*scaled_exp(shift - lambda, rough)
         log_slope = lambda/(delta*c(1))
     end subroutine logarithmic_theta_terms_xp
+
+    pure logical function harmonic_has_terms_xp(self)
+        class(harmonic_law), intent(in) :: self
+        harmonic_has_terms_xp = .true.
+    end function harmonic_has_terms_xp
+
+    !> Harmonic law: [Lambda, 1 - R^2, 0, 0].
+    pure function harmonic_apse_constants_xp(self, big_lambda) result(c)
+        class(harmonic_law), intent(in) :: self
+        real(xp), intent(in) :: big_lambda
+        real(xp) :: c(4), e
+        c = [big_lambda, 0.0_xp, 0.0_xp, 0.0_xp]
+        call exp_and_decay_xp(2.0_xp*big_lambda, e, c(2), .false.)
+    end function harmonic_apse_constants_xp
+
+    !> Harmonic law: q = exp(-2 lambda) (1 - x^2)/(1 - R^2), 1 - q = (1 - exp(-2 lambda))/
+    !! (1 - R^2), d(log q)/d Lambda = 2 x^2 (1 - exp(-2 lambda))/((1 - x^2)(1 - R^2)).
+    pure subroutine harmonic_theta_terms_xp(self, c, lambda, delta, shift, rough, g, &
+                                            one_minus_q, log_slope)
+        class(harmonic_law), intent(in) :: self
+        real(xp), intent(in) :: c(4), lambda, delta, shift
+        logical, intent(in) :: rough
+        real(xp), intent(out) :: g, one_minus_q, log_slope
+        real(xp) :: e2, om2, x2, p_x
+        call exp_and_decay_xp(2.0_xp*lambda, e2, om2, rough)
+        call exp_and_decay_xp(2.0_xp*delta, x2, p_x, rough)
+        one_minus_q = om2/c(2)
+        g = sqrt(p_x/om2)*scaled_exp(shift - lambda, rough)
+        log_slope = 2.0_xp*x2*om2/(p_x*c(2))
+    end subroutine harmonic_theta_terms_xp
+
+    !> Harmonic law: t0 = acos(x) = 2 asin(sqrt((1 - x)/2)).
+    pure subroutine harmonic_closed_fall(self, delta_lo, delta_hi, t, found)
+        class(harmonic_law), intent(in) :: self
+        real(qp), intent(in) :: delta_lo, delta_hi
+        real(qp), intent(out) :: t
+        logical, intent(out) :: found
+        found = .true.
+        t = 2.0_qp*(asin(sqrt(-0.5_qp*expm1(-delta_hi))) - asin(sqrt(-0.5_qp*expm1(-delta_lo))))
+    end subroutine harmonic_closed_fall
 
 end module brachistochrone_speed_laws
