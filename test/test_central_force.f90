@@ -13,7 +13,7 @@ module test_central_force
     use brachistochrone_inverse_square, only: inverse_square_model, new_inverse_square_model
     use brachistochrone_two_point, only: solve_endpoint
     use brachistochrone_solution, only: endpoint_solution
-    use brachistochrone_arches, only: arch_inaccessible, arch_second
+    use brachistochrone_arches, only: arch_inaccessible, arch_second, arch_first
     use testing, only: check, check_close, check_digits, section, digits_of_agreement
     use reference_tables, only: csv_table, read_reference
     implicit none
@@ -35,6 +35,12 @@ module test_central_force
     contains
         procedure :: closed_fall => no_closed_fall_harmonic
     end type quadrature_harmonic_law
+    !> A power law without hardware-precision terms: the engine's double-precision phase
+    !! and quad-precision secant steps, against which the hardware path is tested.
+    type, extends(power_law) :: secant_power_law
+    contains
+        procedure :: has_terms_xp => no_terms_xp
+    end type secant_power_law
 
 contains
 
@@ -45,6 +51,7 @@ contains
         call closed_fall_times()
         call fast_exponentials()
         call next_to_the_start()
+        call two_root_finders()
         call general_references('power1.5', power_law(n=1.5_qp))
         call general_references('power3', power_law(n=3.0_qp))
         call general_references('logarithmic', logarithmic_law())
@@ -332,6 +339,78 @@ contains
         t = 0.0_qp
         found = .false.
     end subroutine no_closed_fall_logarithmic
+
+    pure logical function no_terms_xp(self)
+        class(secant_power_law), intent(in) :: self
+        no_terms_xp = .false.
+    end function no_terms_xp
+
+    !> The hardware-precision early phase with one certified full-precision step against
+    !! the double-precision phase with secant steps, on a grid of endpoints scaled to the
+    !! sector: R-bar, s and t with their conditioning credited. Next to the sector's edge
+    !! (psi = (1 - 1e-9) of it) the secant path's s is off (22 digits at n = 10, rho = 1:
+    !! s along the secant); there both are checked as solutions instead: Upsilon(R-bar) =
+    !! psi and s, t = S, T at R-bar by `half_arch` on the full rules.
+    subroutine two_root_finders()
+        type(central_force_model) :: hardware, secant
+        type(endpoint_solution) :: a, b
+        real(qp), parameter :: radii(5) = [1.0e-6_qp, 0.05_qp, 0.5_qp, 0.99_qp, 1.0_qp]
+        real(qp), parameter :: fractions(7) = [1.0e-6_qp, 0.01_qp, 0.3_qp, 0.6_qp, 0.9_qp, &
+                                               0.999_qp, 1.0_qp - 1.0e-9_qp]
+        real(qp) :: angle, length, time, residual
+        integer :: status
+        real(qp), parameter :: exponents(3) = [1.5_qp, 3.0_qp, 10.0_qp]
+        real(qp) :: worst, psi, credit(3), digits(3), worst_solution
+        integer :: law, i, j, failed
+        call section('central force: hardware early phase = double phase and secant steps')
+        worst = 99.0_qp
+        worst_solution = 99.0_qp
+        residual = 0.0_qp
+        failed = 0
+        do law = 1, 3
+            hardware = new_central_force_model(power_law(n=exponents(law)))
+            secant = new_central_force_model(secant_power_law(n=exponents(law)))
+            do i = 1, size(radii)
+                do j = 1, size(fractions)
+                    psi = fractions(j)*2.0_qp*hardware%law%apse_angle_limit()
+                    a = hardware%solve(radii(i), psi)
+                    b = secant%solve(radii(i), psi)
+                    if (a%status /= status_ok .or. b%status /= status_ok) then
+                        failed = failed + 1
+                        cycle
+                    end if
+                    if (j == size(fractions)) then
+                        ! next to the edge, as a solution: Upsilon(R-bar) - psi and s, t
+                        ! against S, T there (R-bar far from rho: r - R-bar exact enough)
+                        call hardware%half_arch(radii(i), a%apse_radius, &
+                                                a%arch /= arch_first, angle, length, time, &
+                                                status)
+                        residual = max(residual, abs(angle - psi)/(eps_qp*psi))
+                        worst_solution = min(worst_solution, digits_of_agreement(length, &
+                            a%arclength), digits_of_agreement(time, a%time))
+                        cycle
+                    end if
+                    credit = log10(max(1.0_qp, conditions(hardware, radii(i), psi, &
+                        [b%apse_radius, b%arclength, b%time], a%arch == arch_second)))
+                    digits = [digits_of_agreement(a%apse_radius, b%apse_radius), &
+                              digits_of_agreement(a%arclength, b%arclength), &
+                              digits_of_agreement(a%time, b%time)] + credit
+                    if (minval(digits) < 32.0_qp) write (output_unit, &
+                        '(5x,a,f6.2,2es12.3,3f7.2,2i4)') 'weakest: n, rho, psi, digits', &
+                        exponents(law), radii(i), fractions(j), digits, a%steps, b%steps
+                    worst = min(worst, minval(digits))
+                end do
+            end do
+        end do
+        write (output_unit, '(a,f6.2,a,i0)') '   n = 1.5, 3, 10 on 30 endpoints each: '// &
+            'fewest digits (credited) ', worst, ', unsolved ', failed
+        write (output_unit, '(a,f6.2,a,f6.2)') '   at the edge: worst |Upsilon(R) - psi| '// &
+            'in eps psi ', residual, ', fewest digits of s, t = S, T(R) ', worst_solution
+        call check(failed == 0, 'both root finders solve every endpoint')
+        call check(worst >= 32.0_qp, 'the two root finders agree to >= 32 digits')
+        call check(residual <= 16.0_qp .and. worst_solution >= 33.0_qp, &
+                   'hardware path: Upsilon(R-bar) = psi, s and t = S, T at R-bar')
+    end subroutine two_root_finders
 
     pure subroutine no_closed_fall_harmonic(self, delta_lo, delta_hi, t, found)
         class(quadrature_harmonic_law), intent(in) :: self
