@@ -6,9 +6,13 @@ Command (from the repository root), one field per run:
     .venv/bin/python scripts/make_general_reference.py power1.5 > data/reference/general_power1.5_mpmath.csv
     .venv/bin/python scripts/make_general_reference.py power3 > data/reference/general_power3_mpmath.csv
     .venv/bin/python scripts/make_general_reference.py logarithmic > data/reference/general_logarithmic_mpmath.csv
+    .venv/bin/python scripts/make_general_reference.py harmonic > data/reference/general_harmonic_mpmath.csv
+    .venv/bin/python scripts/make_general_reference.py power2 > data/reference/general_power2_mpmath.csv
 
 Speed laws v^2 = P(x) (release from rest at radius 1): power law F = 1/r^n,
-P = 2 (x^(1-n) - 1)/(n - 1); logarithmic potential (F = 1/r), P = -2 log x.
+P = 2 (x^(1-n) - 1)/(n - 1) (power2 is the inverse square of the fast path);
+logarithmic potential (F = 1/r), P = -2 log x; harmonic (F = r, inside a uniform planet,
+Saitoh's units), P = 1 - x^2.
 With the apse R < rho <= 1 the integrals are Tee's (27), (33), (39) as printed:
     Theta(r,R) = int_r^1 dx / (x sqrt((v(R)/R)^2 x^2/v(x)^2 - 1)),
     S(r,R)     = int_r^1 dx / sqrt(1 - (R/v(R))^2 v(x)^2/x^2),
@@ -22,9 +26,13 @@ binary128 number (so psi, like rho, is exactly a binary128 number: the quad-prec
 solver gets the same problem); then R-bar is solved for that psi by the secant method in
 log R (or in u = sqrt(rho - R) next to the apse), and the root is checked to be
 bracketed (Upsilon - psi changes sign across it). Everything is done at 55 and at 70
-digits; the row is kept only when R-bar, s and t agree to >= 40 digits, and the 70-digit
-values are written with 45 significant digits.
-Columns: class, rho, psi, arch, R, s, t, agreement (digits between the precisions).
+digits (85 and 100 for the ill-conditioned rows of `precisions`); the row is kept only
+when R-bar, s and t agree to >= 40 digits, and the values at the higher precision are
+written with 45 significant digits.
+Columns: class, rho, psi, arch, R, s, t, agreement (digits between the precisions),
+cond_R, cond_s, cond_t: |dF/dpsi| psi/F by central differences in log R (in sqrt(rho - R)
+next to the apse) at the lower precision (the tables made before these columns existed,
+power1.5, power3, power10, logarithmic, lack them; test_central_force measures its own).
 """
 import sys
 
@@ -34,6 +42,8 @@ import mpmath as mp
 def law(name):
     if name == "logarithmic":
         return lambda x: -2 * mp.log(x)
+    if name == "harmonic":
+        return lambda x: 1 - x * x
     n = mp.mpf(name[len("power"):])
     return lambda x: 2 * (x ** (1 - n) - 1) / (n - 1)
 
@@ -65,6 +75,8 @@ class Field:
         self.name = name
         self.p = law(name)
         if name == "logarithmic":
+            self.limit = mp.pi / 2
+        elif name == "harmonic":
             self.limit = mp.pi / 2
         else:
             self.limit = mp.pi / (mp.mpf(name[len("power"):]) + 1)
@@ -199,6 +211,35 @@ def binary128(x):
     return mp.ldexp(mp.nint(mp.ldexp(x, 113 - e)), e - 113)
 
 
+# Apse radii of the complete_small_r and edge_small_r rows, per field where not the
+# default. R-bar is ill conditioned there (cond ~ 1/R for the harmonic law and the
+# inverse square): rows whose cond exceeds ~1e12 are made at 85 and 100 digits so that
+# the two precisions still agree to >= 40 digits.
+EDGE_RADII = {"harmonic": ["1e-6", "1e-12", "1e-20"], "power2": ["1e-6", "1e-20", "1e-30"]}
+
+
+def precisions(name, r):
+    """(low, high) digits for a row with apse radius r, as a 1-tuple, or ()."""
+    if name in ("harmonic", "power2") and mp.mpf(r) < mp.mpf("1e-15"):
+        return ((85, 100),)
+    return ()
+
+
+def conditions(field, rho, big_r, second, near_apse):
+    """|dF/dpsi| psi/F for F = R-bar, s, t by central differences in log R (in
+    sqrt(rho - R) next to the apse)."""
+    if near_apse:
+        u = mp.sqrt(rho - big_r)
+        radii = [rho - (u * (1 + k * mp.mpf(10) ** -8)) ** 2 for k in (-1, 1)]
+    else:
+        radii = [big_r * mp.exp(k * mp.mpf(10) ** -12) for k in (-1, 1)]
+    lo, hi = (field.values(rho, r, second) for r in radii)
+    mid = field.values(rho, big_r, second)
+    dpsi = hi[0] - lo[0]
+    return [abs((radii[1] - radii[0]) / dpsi) * mid[0] / big_r] + \
+        [abs((hi[k] - lo[k]) / dpsi) * mid[0] / mid[k] for k in (1, 2)]
+
+
 def cases(field):
     """(class, rho, R_target, second, near_apse); rho a binary128 number."""
     mp.mp.dps = 80
@@ -210,8 +251,11 @@ def cases(field):
     # (R-bar's conditioning at the edge grows like R^(-(n-1)/2): steep laws get larger R)
     steep = field.name.startswith("power") and mp.mpf(field.name[len("power"):]) > 5
     small = ["1e-30", "1e-69"] if field.name == "logarithmic" else ["1e-3", "1e-5"]
+    if field.name in EDGE_RADII:
+        small = EDGE_RADII[field.name]
     for r in (["0.1", "0.03"] if steep else small):
-        out.append(("complete_small_r", mp.mpf(1), mp.mpf(r), True, False))
+        out.append(("complete_small_r", mp.mpf(1), mp.mpf(r), True, False)
+                   + precisions(field.name, r))
     # general endpoints, both half-arches
     for rho in [binary128(mp.mpf("0.9")), half, tenth]:
         for frac in ["0.3", "0.8"]:
@@ -223,11 +267,14 @@ def cases(field):
     edge = ["1e-12", "1e-30", "1e-69"] if field.name == "logarithmic" else ["1e-3", "1e-6"]
     if steep:
         edge = ["0.01", "0.03"]
+    if field.name in EDGE_RADII:
+        edge = EDGE_RADII[field.name]
     for rho in [half, tenth]:
         for r in ["1e-12", "1e-30", "1e-45"]:
             out.append(("first_small_r", rho, mp.mpf(r), False, False))
         for r in edge:
-            out.append(("edge_small_r", rho, mp.mpf(r), True, False))
+            out.append(("edge_small_r", rho, mp.mpf(r), True, False)
+                       + precisions(field.name, r))
     # within 1e-17 of the apse, both sides
     for rho in [mp.mpf("0.75"), tenth]:
         for gap in ["1e-17", "1e-25"]:
@@ -240,13 +287,17 @@ def cases(field):
 def main():
     name = sys.argv[1]
     rows = []
-    for cls, rho, r_target, second, near_apse in cases(Field(name)):
+    for case in cases(Field(name)):
+        cls, rho, r_target, second, near_apse = case[:5]
+        low, high = case[5] if len(case) > 5 else (55, 70)
         results = []
         try:
-            for dps in (55, 70):
+            for dps in (low, high):
                 mp.mp.dps = dps
                 field = Field(name)
                 results.append(make_endpoint(field, +rho, +r_target, second, near_apse))
+            mp.mp.dps = low
+            cond = conditions(Field(name), +rho, results[0][1], second, near_apse)
         except RuntimeError as error:
             print("# dropped %s rho=%s: %s" % (cls, rho, error), file=sys.stderr)
             continue
@@ -256,15 +307,16 @@ def main():
             print("# dropped %s rho=%s: precisions agree to %.1f" % (cls, rho, agree),
                   file=sys.stderr)
             continue
-        mp.mp.dps = 70
+        mp.mp.dps = high
         rows.append((cls, mp.nstr(rho, 45), mp.nstr(psi_b, 60),
                      "second" if second else "first", mp.nstr(r_b, 45), mp.nstr(s_b, 45),
-                     mp.nstr(t_b, 45), "%.1f" % agree))
+                     mp.nstr(t_b, 45), "%.1f" % agree, *[mp.nstr(c, 3) for c in cond]))
         print(",".join(rows[-1]), file=sys.stderr, flush=True)
     print("# general engine references, field %s: scripts/make_general_reference.py %s"
           % (name, name))
-    print("# mpmath 55 and 70 digits on Tee (27), (33), (39); psi is a binary128 number")
-    print("class,rho,psi,arch,R,s,t,agreement")
+    print("# mpmath 55 and 70 digits (85 and 100 where marked in the script) on Tee (27), "
+          "(33), (39); psi is a binary128 number")
+    print("class,rho,psi,arch,R,s,t,agreement,cond_R,cond_s,cond_t")
     for row in rows:
         print(",".join(row))
 

@@ -13,7 +13,7 @@ module test_central_force
     use brachistochrone_inverse_square, only: inverse_square_model, new_inverse_square_model
     use brachistochrone_two_point, only: solve_endpoint
     use brachistochrone_solution, only: endpoint_solution
-    use brachistochrone_arches, only: arch_inaccessible, arch_second
+    use brachistochrone_arches, only: arch_inaccessible, arch_second, arch_first
     use testing, only: check, check_close, check_digits, section, digits_of_agreement
     use reference_tables, only: csv_table, read_reference
     implicit none
@@ -21,12 +21,37 @@ module test_central_force
 
     public :: run_central_force_tests
 
+    !> Power and logarithmic laws with their closed-form fall times switched off (the
+    !! engine then takes them by quadrature), against which the closed forms are tested.
+    type, extends(power_law) :: quadrature_power_law
+    contains
+        procedure :: closed_fall => no_closed_fall_power
+    end type quadrature_power_law
+    type, extends(logarithmic_law) :: quadrature_logarithmic_law
+    contains
+        procedure :: closed_fall => no_closed_fall_logarithmic
+    end type quadrature_logarithmic_law
+    type, extends(harmonic_law) :: quadrature_harmonic_law
+    contains
+        procedure :: closed_fall => no_closed_fall_harmonic
+    end type quadrature_harmonic_law
+    !> A power law without hardware-precision terms: the engine's double-precision phase
+    !! and quad-precision secant steps, against which the hardware path is tested.
+    type, extends(power_law) :: secant_power_law
+    contains
+        procedure :: has_terms_xp => no_terms_xp
+    end type secant_power_law
+
 contains
 
     subroutine run_central_force_tests()
         call engine_versus_fast_path()
         call harmonic_closed_forms()
         call power_laws()
+        call closed_fall_times()
+        call fast_exponentials()
+        call next_to_the_start()
+        call two_root_finders()
         call general_references('power1.5', power_law(n=1.5_qp))
         call general_references('power3', power_law(n=3.0_qp))
         call general_references('logarithmic', logarithmic_law())
@@ -222,11 +247,12 @@ contains
         type(central_force_model) :: general
         type(endpoint_solution) :: b
         real(qp), parameter :: minima(5) = [0.01_qp, 0.2_qp, 0.5_qp, 0.7_qp, 0.95_qp]
-        real(qp) :: m, phi, r, angle, length, time, theta, worst
+        real(qp) :: m, phi, r, angle, length, time, theta, worst, solved
         integer :: i, j, status
         call section('central force: harmonic law against Saitoh''s hypocycloid')
         general = new_central_force_model(harmonic_law())
         worst = 99.0_qp
+        solved = 99.0_qp
         do i = 1, 5
             m = minima(i)
             call general%half_arch(m, m, .false., angle, length, time, status)
@@ -243,10 +269,19 @@ contains
                 ! their size, so measure theta's error on that scale
                 worst = min(worst, -log10(abs(angle - theta)/(0.5_qp*m*phi) + eps_qp), &
                             digits_of_agreement(time, 0.5_qp*phi*sqrt(1.0_qp - m*m)))
+                ! the two-point problem to the point (r, theta) gives R_m and t(phi) back
+                ! (R_m's condition number there is of order 1/m: credited)
+                b = general%solve(r, theta)
+                solved = min(solved, digits_of_agreement(b%apse_radius, m) &
+                             + max(0.0_qp, -log10(m)), &
+                             digits_of_agreement(b%time, 0.5_qp*phi*sqrt(1.0_qp - m*m)))
             end do
         end do
         write (output_unit, '(a,f6.2)') '   fewest digits of theta(phi), t(phi): ', worst
         call check(worst >= 32.0_qp, 'theta (8) and t (9) along the hypocycloid, 32 digits')
+        write (output_unit, '(a,f6.2)') '   two-point to (r(phi), theta(phi)): fewest digits '// &
+            'of R_m, t(phi) ', solved
+        call check(solved >= 31.0_qp, 'harmonic two-point: R_m and t (9) to >= 31 digits')
         ! surface to surface: psi = pi (1 - R_m) gives R_m back
         b = general%solve(1.0_qp, pi*0.6_qp)
         call check_close(b%apse_radius, 0.4_qp, 1.0e3_qp, 'two-point, surface to surface')
@@ -286,5 +321,227 @@ contains
         call check(a(1) < a(2) .and. a(2) < pi/2.0_qp .and. pi/2.0_qp - a(2) < 0.01_qp, &
                    'logarithmic potential: Theta(R,R) rises slowly towards pi/2')
     end subroutine power_laws
+
+    pure subroutine no_closed_fall_power(self, delta_lo, delta_hi, t, found)
+        class(quadrature_power_law), intent(in) :: self
+        real(qp), intent(in) :: delta_lo, delta_hi
+        real(qp), intent(out) :: t
+        logical, intent(out) :: found
+        t = 0.0_qp
+        found = .false.
+    end subroutine no_closed_fall_power
+
+    pure subroutine no_closed_fall_logarithmic(self, delta_lo, delta_hi, t, found)
+        class(quadrature_logarithmic_law), intent(in) :: self
+        real(qp), intent(in) :: delta_lo, delta_hi
+        real(qp), intent(out) :: t
+        logical, intent(out) :: found
+        t = 0.0_qp
+        found = .false.
+    end subroutine no_closed_fall_logarithmic
+
+    pure logical function no_terms_xp(self)
+        class(secant_power_law), intent(in) :: self
+        no_terms_xp = .false.
+    end function no_terms_xp
+
+    !> The hardware-precision early phase with one certified full-precision step against
+    !! the double-precision phase with secant steps, on a grid of endpoints scaled to the
+    !! sector: R-bar, s and t with their conditioning credited. Next to the sector's edge
+    !! (psi = (1 - 1e-9) of it) the secant path's s is off (22 digits at n = 10, rho = 1:
+    !! s along the secant); there both are checked as solutions instead: Upsilon(R-bar) =
+    !! psi and s, t = S, T at R-bar by `half_arch` on the full rules.
+    subroutine two_root_finders()
+        type(central_force_model) :: hardware, secant
+        type(endpoint_solution) :: a, b
+        real(qp), parameter :: radii(5) = [1.0e-6_qp, 0.05_qp, 0.5_qp, 0.99_qp, 1.0_qp]
+        real(qp), parameter :: fractions(7) = [1.0e-6_qp, 0.01_qp, 0.3_qp, 0.6_qp, 0.9_qp, &
+                                               0.999_qp, 1.0_qp - 1.0e-9_qp]
+        real(qp) :: angle, length, time, residual
+        integer :: status
+        real(qp), parameter :: exponents(3) = [1.5_qp, 3.0_qp, 10.0_qp]
+        real(qp) :: worst, psi, credit(3), digits(3), worst_solution
+        integer :: law, i, j, failed
+        call section('central force: hardware early phase = double phase and secant steps')
+        worst = 99.0_qp
+        worst_solution = 99.0_qp
+        residual = 0.0_qp
+        failed = 0
+        do law = 1, 3
+            hardware = new_central_force_model(power_law(n=exponents(law)))
+            secant = new_central_force_model(secant_power_law(n=exponents(law)))
+            do i = 1, size(radii)
+                do j = 1, size(fractions)
+                    psi = fractions(j)*2.0_qp*hardware%law%apse_angle_limit()
+                    a = hardware%solve(radii(i), psi)
+                    b = secant%solve(radii(i), psi)
+                    if (a%status /= status_ok .or. b%status /= status_ok) then
+                        failed = failed + 1
+                        cycle
+                    end if
+                    if (j == size(fractions)) then
+                        ! next to the edge, as a solution: Upsilon(R-bar) - psi and s, t
+                        ! against S, T there (R-bar far from rho: r - R-bar exact enough)
+                        call hardware%half_arch(radii(i), a%apse_radius, &
+                                                a%arch /= arch_first, angle, length, time, &
+                                                status)
+                        residual = max(residual, abs(angle - psi)/(eps_qp*psi))
+                        worst_solution = min(worst_solution, digits_of_agreement(length, &
+                            a%arclength), digits_of_agreement(time, a%time))
+                        cycle
+                    end if
+                    credit = log10(max(1.0_qp, conditions(hardware, radii(i), psi, &
+                        [b%apse_radius, b%arclength, b%time], a%arch == arch_second)))
+                    digits = [digits_of_agreement(a%apse_radius, b%apse_radius), &
+                              digits_of_agreement(a%arclength, b%arclength), &
+                              digits_of_agreement(a%time, b%time)] + credit
+                    if (minval(digits) < 32.0_qp) write (output_unit, &
+                        '(5x,a,f6.2,2es12.3,3f7.2,2i4)') 'weakest: n, rho, psi, digits', &
+                        exponents(law), radii(i), fractions(j), digits, a%steps, b%steps
+                    worst = min(worst, minval(digits))
+                end do
+            end do
+        end do
+        write (output_unit, '(a,f6.2,a,i0)') '   n = 1.5, 3, 10 on 30 endpoints each: '// &
+            'fewest digits (credited) ', worst, ', unsolved ', failed
+        write (output_unit, '(a,f6.2,a,f6.2)') '   at the edge: worst |Upsilon(R) - psi| '// &
+            'in eps psi ', residual, ', fewest digits of s, t = S, T(R) ', worst_solution
+        call check(failed == 0, 'both root finders solve every endpoint')
+        call check(worst >= 32.0_qp, 'the two root finders agree to >= 32 digits')
+        call check(residual <= 16.0_qp .and. worst_solution >= 33.0_qp, &
+                   'hardware path: Upsilon(R-bar) = psi, s and t = S, T at R-bar')
+    end subroutine two_root_finders
+
+    pure subroutine no_closed_fall_harmonic(self, delta_lo, delta_hi, t, found)
+        class(quadrature_harmonic_law), intent(in) :: self
+        real(qp), intent(in) :: delta_lo, delta_hi
+        real(qp), intent(out) :: t
+        logical, intent(out) :: found
+        t = 0.0_qp
+        found = .false.
+    end subroutine no_closed_fall_harmonic
+
+    !> rho = 1 - 1e-30 (a sliver panel next to the start, which once ended the early
+    !! phase's quadrature: 80 iterations) against rho = 1: R-bar, s, t agree to the
+    !! difference the endpoints make, in few steps.
+    subroutine next_to_the_start()
+        type(central_force_model) :: model
+        type(endpoint_solution) :: a, b
+        ! (psi well above Theta(rho, rho) ~ 1e-15: a tiny psi is a different arch)
+        real(qp), parameter :: fractions(4) = [1.0e-6_qp, 1.0e-3_qp, 0.5_qp, &
+                                               1.0_qp - 1.0e-6_qp]
+        real(qp) :: limit, worst
+        integer :: i, law, most
+        call section('central force: rho = 1 - 1e-30 against rho = 1')
+        worst = 99.0_qp
+        most = 0
+        do law = 1, 3
+            select case (law)
+            case (1); model = new_central_force_model(power_law(n=3.0_qp))
+            case (2); model = new_central_force_model(power_law(n=1.5_qp))
+            case default; model = new_central_force_model(logarithmic_law())
+            end select
+            limit = 2.0_qp*model%law%apse_angle_limit()
+            do i = 1, size(fractions)
+                a = model%solve(1.0_qp - 1.0e-30_qp, fractions(i)*limit)
+                b = model%solve(1.0_qp, fractions(i)*limit)
+                if (a%status /= status_ok .or. b%status /= status_ok) most = 999
+                most = max(most, a%steps, b%steps)
+                worst = min(worst, digits_of_agreement(a%apse_radius, b%apse_radius), &
+                            digits_of_agreement(a%arclength, b%arclength), &
+                            digits_of_agreement(a%time, b%time))
+            end do
+        end do
+        write (output_unit, '(a,f6.2,a,i0)') '   12 endpoints: fewest digits ', worst, &
+            ', most steps ', most
+        ! the endpoints differ by about sqrt(1 - rho)/psi = 1e-9 (psi = 1e-6 of the sector)
+        call check(worst >= 8.0_qp, 'rho = 1 - 1e-30 agrees with rho = 1 to their difference')
+        call check(most <= 30, 'rho next to 1: at most 30 evaluations')
+    end subroutine next_to_the_start
+
+    !> The engine's fast exp and expm1 against libquadmath's, on arguments next to the
+    !! table steps j/256 and j/65536 (where the table index is taken in double precision)
+    !! and spread over the range the integrands use.
+    subroutine fast_exponentials()
+        use brachistochrone_fast_exp, only: fast_exp, fast_expm1
+        use brachistochrone_quad_math, only: expm1
+        real(qp) :: x, worst, step
+        integer :: j, k, sign_
+        call section('central force: fast exp and expm1 against libquadmath')
+        worst = 0.0_qp
+        do sign_ = -1, 1, 2
+            do j = 0, 200
+                do k = -2, 2
+                    ! next to j/256 + (j mod 7)/65536, a few ulps either side
+                    x = real(sign_, qp)*(real(j, qp)/256.0_qp + real(mod(j, 7), qp)/65536.0_qp)
+                    x = x + real(k, qp)*spacing(max(abs(x), tiny(1.0_qp)))
+                    if (abs(x) < 0.5_qp .and. x /= 0.0_qp) worst = max(worst, &
+                        abs(fast_expm1(x) - expm1(x))/(eps_qp*abs(expm1(x))))
+                    worst = max(worst, abs(fast_exp(x) - exp(x))/(eps_qp*exp(x)))
+                end do
+            end do
+        end do
+        step = 1.0_qp/3.0_qp
+        do j = -3000, 3000
+            x = real(j, qp)*step
+            worst = max(worst, abs(fast_exp(x) - exp(x))/(eps_qp*exp(x)))
+        end do
+        write (output_unit, '(a,f6.2)') '   worst relative error in eps: ', worst
+        call check(worst <= 4.0_qp, 'fast exp, expm1 within 4 eps of libquadmath''s')
+    end subroutine fast_exponentials
+
+    !> The closed-form fall times (n = 2: Tee (46); n = 3: sqrt(1 - r^2); other n: the
+    !! incomplete beta function's series; logarithmic: sqrt(pi/2) erf(sqrt(-log r)))
+    !! against the engine's quadrature of x/v, and the
+    !! n = 2 engine (its special paths) against the inverse-square fast path.
+    subroutine closed_fall_times()
+        type(central_force_model) :: closed, quadrature
+        type(inverse_square_model) :: fast
+        type(endpoint_solution) :: a, b
+        real(qp), parameter :: radii(6) = [0.0_qp, 1.0e-6_qp, 0.3_qp, 0.9_qp, &
+                                           1.0_qp - 1.0e-12_qp, 1.0_qp - 1.0e-30_qp]
+        real(qp), parameter :: exponents(6) = [2.0_qp, 3.0_qp, 1.25_qp, 1.5_qp, 10.0_qp, &
+                                               32.0_qp]
+        real(qp) :: t(2), worst
+        integer :: law, i, j, status
+        call section('central force: closed-form fall times against the quadrature')
+        worst = 99.0_qp
+        do law = 1, 8
+            select case (law)
+            case (1:6)
+                closed = new_central_force_model(power_law(n=exponents(law)))
+                quadrature = new_central_force_model(quadrature_power_law(n=exponents(law)))
+            case (8)
+                closed = new_central_force_model(harmonic_law())
+                quadrature = new_central_force_model(quadrature_harmonic_law())
+            case default
+                closed = new_central_force_model(logarithmic_law())
+                quadrature = new_central_force_model(quadrature_logarithmic_law())
+            end select
+            do i = 1, size(radii)
+                call closed%fall_time(radii(i), t(1), status)
+                call quadrature%fall_time(radii(i), t(2), status)
+                worst = min(worst, digits_of_agreement(t(1), t(2)))
+            end do
+        end do
+        write (output_unit, '(a,f6.2)') '   n = 2, 3, 1.25, 1.5, 10, 32, logarithmic, ' &
+            //'harmonic, 6 radii: fewest digits ', worst
+        call check(worst >= 32.5_qp, 'closed-form fall times = quadrature to >= 32.5 digits')
+        closed = new_central_force_model(power_law(n=2.0_qp))
+        fast = new_inverse_square_model()
+        worst = 99.0_qp
+        do i = 1, 3
+            do j = 1, 3
+                a = closed%solve(real(i, qp)/3.0_qp, real(j, qp)*0.5_qp)
+                b = solve_endpoint(fast, real(i, qp)/3.0_qp, real(j, qp)*0.5_qp)
+                worst = min(worst, digits_of_agreement(a%apse_radius, b%apse_radius) &
+                            + max(0.0_qp, -1.0_qp - log10(b%apse_radius)), &
+                            digits_of_agreement(a%arclength, b%arclength), &
+                            digits_of_agreement(a%time, b%time))
+            end do
+        end do
+        write (output_unit, '(a,f6.2)') '   power law n = 2 = fast path, 9 endpoints: ', worst
+        call check(worst >= 32.0_qp, 'power law n = 2: R, s, t = fast path to >= 32 digits')
+    end subroutine closed_fall_times
 
 end module test_central_force

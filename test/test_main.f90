@@ -12,6 +12,7 @@ program test_main
     use test_harmonic, only: run_harmonic_tests
     use test_uniform_gravity, only: run_uniform_gravity_tests
     use test_repulsive, only: run_repulsive_tests
+    use test_field_references, only: run_field_reference_tests
     use test_fields, only: run_field_tests
     use test_sha256, only: run_sha256_tests
     use test_c_api, only: run_c_api_tests
@@ -28,6 +29,7 @@ program test_main
     call run_harmonic_tests()
     call run_uniform_gravity_tests()
     call run_repulsive_tests()
+    call run_field_reference_tests()
     call run_field_tests()
     call run_sha256_tests()
     call run_c_api_tests()

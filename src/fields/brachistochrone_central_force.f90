@@ -25,17 +25,27 @@
 !! the real axis (`rule_for`). Away from the apse the integrands decay like
 !! exp(-(n+1) lambda/2) or faster: each panel is asked only for the digits its share of
 !! the running sum needs, and panels below 1e-40 of it are skipped. Transcendentals:
-!! two fast exp/expm1 per node (`brachistochrone_fast_exp`), square roots by a double
-!! seed and Newton steps.
+!! one or two fast exp/expm1 per node (`brachistochrone_fast_exp`; one for n = 2, 3),
+!! square roots by a hardware seed and a Newton step. The fall time t0 is in closed form
+!! for power laws with n >= 1.25 and the logarithmic law (`speed_law%closed_fall`), a
+!! quadrature of x/v otherwise (`fall_piece`).
 !!
 !! Two-point problem: the root R-bar of Upsilon(R) = psi, in the unknown u = sqrt(rho - R)
 !! for R in [rho/2, rho] (R-bar and rho - R-bar exact next to the apse) or y = log R
 !! below (tiny R-bar keeps its relative precision, down to the binary128 range).
-!! A double-precision phase (17-digit rules, regula falsi with the Anderson-Bjorck
-!! correction on a bracket) then quad precision: one Newton step with the double
-!! phase's slope and secant steps, each a full evaluation of Theta, S and T; the last
-!! secant step (predicted error below 1e-35) is taken without a further evaluation, s
-!! extrapolated along the secant and t by Hamilton-Jacobi (dt/dpsi = K at fixed rho).
+!! Laws with hardware-precision terms (`speed_law%has_terms_xp`: power and logarithmic)
+!! take an early phase in the widest hardware kind (x87 extended; `hardware_phase`):
+!! safeguarded Newton steps on Theta and its analytic slope d Theta/d Lambda (the
+!! integrand's derivative at fixed lambda, g q'/(2 q (1 - q)) with q' = d q/d Lambda
+!! from the law, summed on the same nodes, plus the jump of the weights times g at the
+!! endpoint), first on 17-digit rules with double-precision transcendentals, then on
+!! 20-digit rules, to within the rounding of the hardware kind. Then one full-precision
+!! evaluation of Theta, S and T with their slopes in hardware precision (`final_step`):
+!! a Newton step of relative size about 1e-18, certified when its curvature and slope
+!! errors are below 1e-35 of the unknown (otherwise the next step from there; secant
+!! steps as the last resort), s corrected along its slope and t by Hamilton-Jacobi
+!! (dt/dpsi = K at fixed rho). Other laws: a double-precision phase (regula falsi with
+!! the Anderson-Bjorck correction) and quad-precision secant steps (`quad_phase`).
 module brachistochrone_central_force
     use brachistochrone_kinds, only: qp, pi, eps_qp
     use brachistochrone_status, only: status_ok, status_inaccessible, &
@@ -47,7 +57,7 @@ module brachistochrone_central_force
     use brachistochrone_fast_math, only: inverse_sqrt
     use brachistochrone_fast_exp, only: fast_exp
     use brachistochrone_quadrature, only: gauss_legendre_rule, gauss_legendre
-    use brachistochrone_speed_laws, only: speed_law
+    use brachistochrone_speed_laws, only: speed_law, xp
     use brachistochrone_solution, only: endpoint_solution, endpoint_status, region_inside
     use brachistochrone_arches, only: arch_first, arch_second, arch_complete, arch_radial, &
                                       arch_inaccessible
@@ -61,7 +71,9 @@ module brachistochrone_central_force
     !> Fewest and most Gauss nodes on one panel (even counts only).
     integer, parameter :: min_nodes = 4, max_nodes = 80
     !> Digits aimed at by the full and the double-precision rules.
-    real(qp), parameter :: fine_digits = 36.0_qp, coarse_digits = 17.0_qp
+    real(qp), parameter :: fine_digits = 35.0_qp, coarse_digits = 17.0_qp
+    !> Digits aimed at by the hardware-precision rules of the early phase.
+    real(qp), parameter :: hardware_digits = 20.0_qp
     !> A panel whose bound is below this share of the running sum is skipped.
     real(qp), parameter :: negligible = 1.0e-40_qp
     !> Panel kinds: lambda = b s^2 (from the apse), lambda, delta, delta = c s^2 (from
@@ -78,6 +90,7 @@ module brachistochrone_central_force
         integer :: n = 0
         real(qp), allocatable :: offset(:), weight(:)
         real(real64), allocatable :: offset64(:), weight64(:)
+        real(xp), allocatable :: offset_xp(:), weight_xp(:)
     end type gauss_nodes
 
     !> The general engine for one speed law: the law and the Gauss rules.
@@ -105,9 +118,10 @@ module brachistochrone_central_force
     !! and the weights of the integrands below and above it.
     type :: arch_setup
         real(qp) :: big_r = 0.0_qp, one_minus_big_r = 1.0_qp, big_lambda = 0.0_qp
-        real(qp) :: c(6) = 0.0_qp
+        real(qp) :: c(8) = 0.0_qp
         real(qp) :: lambda_r = 0.0_qp, delta_r = 0.0_qp
         real(qp) :: weight_below = 0.0_qp, weight_above = 1.0_qp
+        real(xp) :: cx(4) = 0.0_xp    !! the law's constants in hardware precision
     end type arch_setup
 
     !> The endpoint of a two-point problem and the unknown used.
@@ -138,6 +152,8 @@ contains
             model%gauss(j)%weight = 0.5_qp*rule%weight
             model%gauss(j)%offset64 = real(model%gauss(j)%offset, real64)
             model%gauss(j)%weight64 = real(model%gauss(j)%weight, real64)
+            model%gauss(j)%offset_xp = real(model%gauss(j)%offset, xp)
+            model%gauss(j)%weight_xp = real(model%gauss(j)%weight, xp)
         end do
         sigma = law%log_scales()
         model%sigma_apse = sigma(1)
@@ -179,6 +195,7 @@ contains
         real(qp), intent(in) :: d, delta_r
         logical, intent(in) :: second, whole
         a%c = model%law%apse_constants(a%big_r, a%one_minus_big_r, a%big_lambda)
+        a%cx = model%law%apse_constants_xp(real(a%big_lambda, xp))
         if (a%big_r > 0.0_qp .and. d < a%big_r) then
             a%lambda_r = log1p(d/a%big_r)
         else
@@ -429,55 +446,111 @@ contains
         real(qp), intent(in) :: digits
         logical, intent(in) :: want_length_time
         real(qp) :: sums(3)
+        call arch_sums(model, a, digits, want_length_time, sums)
+    end function arch_integrals
+
+    !> `arch_integrals`, and with `slopes` the Lambda-derivatives at fixed lambda of the
+    !! Theta and S integrands, d g/d Lambda = g q'/(2 q (1 - q)) and d h/d Lambda =
+    !! e^lambda q'/(2 (1 - q)^(3/2)) (q' = d q/d Lambda, from the law's hardware terms),
+    !! summed in hardware precision on the same nodes (want_length_time needed).
+    pure subroutine arch_sums(model, a, digits, want_length_time, sums, slopes)
+        type(central_force_model), intent(in) :: model
+        type(arch_setup), intent(in) :: a
+        real(qp), intent(in) :: digits
+        logical, intent(in) :: want_length_time
+        real(qp), intent(out) :: sums(3)
+        real(xp), intent(out), optional :: slopes(2)
         type(panel) :: panels(max_panels)
-        real(qp) :: part(3), last(3), share, v, lambda, delta, jacobian, q, omq, qv, xr
-        real(qp) :: root, inverse_root, common, g(3), length
-        integer :: count, p, k, j, m
+        real(qp) :: part(3), last(3), share, v, lambda, delta, jacobian, q, omq, qv, rx
+        real(qp) :: root, inverse_root, common, g(3), root_q
+        real(xp) :: part_xp(2), carry(2), carry_all(2), omq_xp, log_slope, half_slope
+        integer :: count, p, k, j
         call arch_panels(model, a, panels, count)
         sums = 0.0_qp
         last = 0.0_qp
+        if (present(slopes)) slopes = 0.0_xp
+        carry_all = 0.0_xp
         do p = 1, count
-            panels(p)%log_rho = bernstein_log(model, a%big_lambda, panels(p))
             associate (pan => panels(p))
             share = 1.0_qp
             if (p > 1) then
-                ! bound on this panel's share: its length in lambda times the integrands
-                ! at the nearest node of the previous panel (they decay away from the apse)
-                length = panel_length(pan)
-                share = 0.0_qp
-                do m = 1, merge(3, 1, want_length_time)
-                    if (sums(m) > 0.0_qp) share = max(share, 4.0_qp*length*last(m)/sums(m))
-                end do
-                if (share < negligible) exit
+                share = panel_share(pan, last, sums, merge(3, 1, want_length_time))
+                ! skipped, not ended: a sliver next to a split is followed by a full panel
+                if (share < negligible) cycle
             end if
-            j = rule_for(pan%log_rho, digits + min(0.0_qp, log10(max(share, 1.0e-60_qp))), &
+            pan%log_rho = bernstein_log(model, a%big_lambda, pan)
+            j = rule_for(pan%log_rho, digits + real(min(0.0_real64, log10(max(real(share, &
+                         real64), 1.0e-60_real64))), qp), &
                          panel_growth(pan, 2.0_qp*pi/model%sigma_apse))
             part = 0.0_qp
+            part_xp = 0.0_xp
+            carry = 0.0_xp
             do k = 1, model%gauss(j)%n
                 v = pan%lo + (pan%hi - pan%lo)*model%gauss(j)%offset(k)
                 call node_point(pan%kind, pan%scale, a%big_lambda, v, lambda, delta, &
                                 jacobian)
-                call model%law%arch_terms(a%c, lambda, delta, q, omq, qv, xr)
+                if (present(slopes)) then
+                    call model%law%arch_terms(a%c, lambda, delta, q, omq, qv, rx, root_q, &
+                                              log_slope)
+                else
+                    call model%law%arch_terms(a%c, lambda, delta, q, omq, qv, rx, root_q)
+                end if
                 ! 1/sqrt(1 - q) and sqrt(q/(1 - q)) by a double seed and Newton steps
                 inverse_root = inverse_sqrt(omq)
-                g(1) = q*inverse_sqrt(q*omq)*jacobian
+                g(1) = root_q*inverse_root*jacobian
                 if (want_length_time) then
                     root = omq*inverse_root
-                    common = xr*inverse_root/(1.0_qp + root)*jacobian
+                    common = inverse_root/(rx*(1.0_qp + root))*jacobian
                     g(2) = q*common
                     g(3) = qv*common
                 else
                     g(2:3) = 0.0_qp
                 end if
                 part = part + model%gauss(j)%weight(k)*g
+                if (present(slopes)) then
+                    omq_xp = real(omq, xp)
+                    half_slope = 0.5_xp*model%gauss(j)%weight_xp(k)*log_slope/omq_xp
+                    ! compensated sums: the error bound of `arch_values` counts on it
+                    call add_compensated(part_xp, carry, half_slope*[real(g(1), xp), &
+                                         real(q*inverse_root*jacobian, xp)/real(rx, xp)])
+                end if
                 ! the node nearest the next panel
                 if (k == merge(1, model%gauss(j)%n, pan%kind >= kind_start .and. &
                                pan%kind <= kind_start_root)) last = abs(g/jacobian)
             end do
             sums = sums + pan%weight*(pan%hi - pan%lo)*part
+            if (present(slopes)) call add_compensated(slopes, carry_all, &
+                real(pan%weight*(pan%hi - pan%lo), xp)*(part_xp + carry))
             end associate
         end do
-    end function arch_integrals
+    end subroutine arch_sums
+
+    !> Bound on a panel's share of the sums so far: its length in lambda times the
+    !! integrands at the nearest node of the previous panel (they decay away from the
+    !! apse), for the first `count` sums.
+    pure function panel_share(pan, last, sums, count) result(share)
+        type(panel), intent(in) :: pan
+        real(qp), intent(in) :: last(3), sums(3)
+        integer, intent(in) :: count
+        real(qp) :: share, length
+        integer :: m
+        length = panel_length(pan)
+        share = 0.0_qp
+        do m = 1, count
+            if (sums(m) > 0.0_qp) share = max(share, 4.0_qp*length*last(m)/sums(m))
+        end do
+    end function panel_share
+
+    !> sums = sums + terms with Kahan's compensation (carry: the running correction).
+    pure subroutine add_compensated(sums, carry, terms)
+        real(xp), intent(inout) :: sums(2), carry(2)
+        real(xp), intent(in) :: terms(2)
+        real(xp) :: y(2), t(2)
+        y = terms + carry
+        t = sums + y
+        carry = y - (t - sums)
+        sums = t
+    end subroutine add_compensated
 
     !> The extent in lambda of a panel.
     pure function panel_length(p) result(length)
@@ -509,13 +582,13 @@ contains
         shift = 0.0_real64
         if (a%weight_below == 0.0_qp) shift = real(pi/model%sigma_apse*a%lambda_r, real64)
         do p = 1, count
-            panels(p)%log_rho = bernstein_log(model, a%big_lambda, panels(p))
             associate (pan => panels(p))
             share = 1.0_real64
             if (p > 1 .and. theta > 0.0_real64) then
                 share = 4.0_real64*real(panel_length(pan), real64)*last/theta
-                if (share < 1.0e-20_real64) exit
+                if (share < 1.0e-20_real64) cycle
             end if
+            pan%log_rho = bernstein_log(model, a%big_lambda, pan)
             j = rule_for(pan%log_rho, coarse_digits + &
                          real(min(0.0_real64, log10(max(share, 1.0e-30_real64))), qp), &
                          panel_growth(pan, 2.0_qp*pi/model%sigma_apse))
@@ -563,8 +636,11 @@ contains
         type(arch_setup) :: a
         real(qp) :: c, lo, hi, v, delta, lambda, jacobian, g, part, last, share
         integer :: count, p, k, j
+        logical :: found
         total = 0.0_qp
         if (delta_hi <= delta_lo) return
+        call model%law%closed_fall(delta_lo, delta_hi, total, found)
+        if (found) return
         c = min(1.0_qp, 0.5_qp*model%sigma_start)
         ! weight 1 inside [delta_lo, delta_hi] (start-side panels are 'reversed')
         a%weight_above = 0.0_qp
@@ -583,22 +659,23 @@ contains
         end do
         last = 0.0_qp
         do p = 1, count
-            ! singularities: delta = 0 and +-i sigma_start (x = 0 is at infinity)
-            panels(p)%log_rho = bernstein_log(model, 1.0e30_qp, panels(p))
             associate (pan => panels(p))
             share = 1.0_qp
             if (p > 1 .and. total > 0.0_qp) then
                 share = 4.0_qp*panel_length(pan)*last/total
-                if (share < negligible) exit
+                if (share < negligible) cycle
             end if
+            ! singularities: delta = 0 and +-i sigma_start (x = 0 is at infinity)
+            pan%log_rho = bernstein_log(model, 1.0e30_qp, pan)
             j = rule_for(pan%log_rho, fine_digits + &
-                         min(0.0_qp, log10(max(share, 1.0e-60_qp))), &
+                         real(min(0.0_real64, log10(max(real(share, real64), &
+                                                            1.0e-60_real64))), qp), &
                          panel_growth(pan, 1.0_qp + pi/model%sigma_start))
             part = 0.0_qp
             do k = 1, model%gauss(j)%n
                 v = pan%lo + (pan%hi - pan%lo)*model%gauss(j)%offset(k)
                 call node_point(pan%kind, pan%scale, 0.0_qp, v, lambda, delta, jacobian)
-                g = model%law%inverse_speed(delta)*fast_exp(-delta)
+                g = model%law%fall_integrand(delta)
                 part = part + model%gauss(j)%weight(k)*g*jacobian
                 if (k == model%gauss(j)%n) last = g
             end do
@@ -610,15 +687,46 @@ contains
     !> Theta, S, T at the endpoint for the apse data `a` (first or second half-arch as
     !! the weights say); d = r - R exact, one_minus_r = 1 - r.
     pure subroutine arch_values(model, a, d, one_minus_r, second, fall_r, angle, length, &
-                                time)
+                                time, slopes)
         type(central_force_model), intent(in) :: model
         type(arch_setup), intent(in) :: a
         real(qp), intent(in) :: d, one_minus_r
         logical, intent(in) :: second
         real(qp), intent(in) :: fall_r   !! t0(r), the radial fall time to r
         real(qp), intent(out) :: angle, length, time
+        !> d angle/d Lambda, d length/d Lambda in hardware precision and bounds on their
+        !! absolute errors (the law's hardware terms needed)
+        real(xp), intent(out), optional :: slopes(4)
         real(qp) :: sums(3), fall
-        sums = arch_integrals(model, a, fine_digits, .true.)
+        real(xp) :: integral_slopes(2), g, omq, log_slope, root, h, jump, big_r, error
+        if (present(slopes)) then
+            call arch_sums(model, a, fine_digits, .true., sums, integral_slopes)
+            ! the endpoint lambda_r = Lambda - delta_r moves with Lambda: the integrands
+            ! there times the jump of the weights (g = 0 at the start, delta_r = 0)
+            g = 0.0_xp
+            h = 0.0_xp
+            jump = real(a%weight_below - a%weight_above, xp)
+            if (a%delta_r > 0.0_qp .and. a%lambda_r > 0.0_qp) then
+                call model%law%theta_terms_xp(a%cx, real(a%lambda_r, xp), &
+                                              real(a%delta_r, xp), 0.0_xp, .false., g, omq, &
+                                              log_slope)
+                root = sqrt(omq)
+                h = real(1.0_qp + d/a%big_r, xp)*g*g*root/(1.0_xp + root)
+            end if
+            big_r = real(a%big_r, xp)
+            slopes(1) = integral_slopes(1) + jump*g
+            slopes(2) = big_r*(integral_slopes(2) + jump*h - real(sums(2), xp))
+            if (second) slopes(2) = slopes(2) + 2.0_xp*big_r
+            ! compensated sums of terms of one sign, each within about 20 roundings of
+            ! xp, from nodes rounded to xp: the terms vary like exp(-kappa lambda) (power
+            ! laws: exp(-a delta), a < 2 kappa), lambda, delta <= Lambda
+            error = epsilon(1.0_xp)*(32.0_xp + real(2.0_qp*pi/model%sigma_apse* &
+                                                   a%big_lambda, xp))
+            slopes(3) = error*(abs(integral_slopes(1)) + abs(g))
+            slopes(4) = error*big_r*(abs(integral_slopes(2)) + abs(h) + real(sums(2), xp))
+        else
+            sums = arch_integrals(model, a, fine_digits, .true.)
+        end if
         if (second) then
             ! 2 t0(R) - t0(r) = t0(r) + 2 (t0(R) - t0(r))
             fall = fall_r + 2.0_qp*fall_piece(model, a%delta_r, a%big_lambda)
@@ -781,6 +889,365 @@ contains
         x = real(c, qp)
     end subroutine double_phase
 
+    !> Theta (weighted as in `a`) and d Theta/d Lambda in hardware precision, on
+    !! `hardware_digits` rules, as theta exp(-shift) and slope exp(-shift) (the scaling of
+    !! `theta64`). The slope is that of the integrand at fixed lambda (`arch_sums`) plus
+    !! the jump of the weights times the integrand at lambda_r = Lambda - delta_r.
+    pure subroutine theta_xp(model, a, rough, theta, slope, shift)
+        type(central_force_model), intent(in) :: model
+        type(arch_setup), intent(in) :: a
+        logical, intent(in) :: rough   !! 17-digit rules, transcendentals in double
+        real(xp), intent(out) :: theta, slope, shift
+        type(panel) :: panels(max_panels)
+        real(xp) :: part(2), last, v, lambda, delta, jacobian, g, omq, log_slope, big
+        real(xp) :: scale, share, lo, width
+        integer :: count, p, k, j
+        call arch_panels(model, a, panels, count)
+        theta = 0.0_xp
+        slope = 0.0_xp
+        last = 0.0_xp
+        big = real(a%big_lambda, xp)
+        shift = 0.0_xp
+        if (a%weight_below == 0.0_qp) shift = real(pi/model%sigma_apse*a%lambda_r, xp)
+        do p = 1, count
+            associate (pan => panels(p))
+            share = 1.0_xp
+            if (p > 1 .and. theta > 0.0_xp) then
+                share = 4.0_xp*real(panel_length(pan), xp)*last/theta
+                if (share < 1.0e-24_xp) cycle
+            end if
+            pan%log_rho = bernstein_log(model, a%big_lambda, pan)
+            j = rule_for(pan%log_rho, merge(coarse_digits, hardware_digits, rough) + &
+                         real(min(0.0_xp, log10(max(share, 1.0e-30_xp))), qp), &
+                         panel_growth(pan, 2.0_qp*pi/model%sigma_apse))
+            scale = real(pan%scale, xp)
+            lo = real(pan%lo, xp)
+            width = real(pan%hi - pan%lo, xp)
+            part = 0.0_xp
+            do k = 1, model%gauss(j)%n
+                v = lo + width*model%gauss(j)%offset_xp(k)
+                call node_point_xp(pan%kind, scale, big, v, lambda, delta, jacobian)
+                call model%law%theta_terms_xp(a%cx, lambda, delta, shift, rough, g, omq, &
+                                              log_slope)
+                part(1) = part(1) + model%gauss(j)%weight_xp(k)*g*jacobian
+                part(2) = part(2) + model%gauss(j)%weight_xp(k)*g*jacobian* &
+                          (0.5_xp*log_slope/omq)
+                if (k == merge(1, model%gauss(j)%n, pan%kind >= kind_start .and. &
+                               pan%kind <= kind_start_root)) last = g
+            end do
+            theta = theta + real(pan%weight, xp)*width*part(1)
+            slope = slope + real(pan%weight, xp)*width*part(2)
+            end associate
+        end do
+        if (a%weight_below /= a%weight_above .and. a%delta_r > 0.0_qp .and. &
+            a%lambda_r > 0.0_qp) then
+            call model%law%theta_terms_xp(a%cx, real(a%lambda_r, xp), real(a%delta_r, xp), &
+                                          shift, rough, g, omq, log_slope)
+            slope = slope + real(a%weight_below - a%weight_above, xp)*g
+        end if
+    end subroutine theta_xp
+
+    !> `node_point` in hardware precision.
+    elemental subroutine node_point_xp(kind, scale, big_lambda, v, lambda, delta, jacobian)
+        integer, intent(in) :: kind
+        real(xp), intent(in) :: scale, big_lambda, v
+        real(xp), intent(out) :: lambda, delta, jacobian
+        select case (kind)
+        case (kind_apse_root)
+            lambda = scale*v*v
+            delta = big_lambda - lambda
+            jacobian = 2.0_xp*scale*v
+        case (kind_apse)
+            lambda = v
+            delta = big_lambda - v
+            jacobian = 1.0_xp
+        case (kind_start)
+            delta = v
+            lambda = big_lambda - v
+            jacobian = 1.0_xp
+        case default
+            delta = scale*v*v
+            lambda = big_lambda - delta
+            jacobian = 2.0_xp*scale*v
+        end select
+    end subroutine node_point_xp
+
+    !> log(1 + z) in hardware precision (Kahan's correction of log(1 + z)).
+    elemental function log1p_xp(z) result(l)
+        real(xp), intent(in) :: z
+        real(xp) :: l, w
+        w = 1.0_xp + z
+        if (w == 1.0_xp) then
+            l = z
+        else
+            l = log(w)*(z/(w - 1.0_xp))
+        end if
+    end function log1p_xp
+
+    !> The apse data the hardware-precision phase needs (Lambda, lambda_r, delta_r, the
+    !! weights, the law's constants) at its unknown x (u or y = log R), and d Lambda/dx.
+    pure subroutine setup_xp(model, prob, x, a, lambda_slope)
+        type(central_force_model), intent(in) :: model
+        type(endpoint_problem), intent(in) :: prob
+        real(xp), intent(in) :: x
+        type(arch_setup), intent(out) :: a
+        real(xp), intent(out) :: lambda_slope
+        real(xp) :: d, big_r, lambda_r, delta_r, big_lambda
+        delta_r = real(prob%delta_rho, xp)
+        if (prob%use_u) then
+            ! R = rho - u^2 >= rho/2 >= r - R: lambda_r = log(1 + u^2/R)
+            d = x*x
+            big_r = real(prob%rho, xp) - d
+            lambda_r = log1p_xp(d/big_r)
+            big_lambda = delta_r + lambda_r
+            lambda_slope = 2.0_xp*x/big_r
+        else
+            big_lambda = -x
+            lambda_r = big_lambda - delta_r
+            lambda_slope = -1.0_xp
+        end if
+        a%big_lambda = real(big_lambda, qp)
+        a%lambda_r = real(lambda_r, qp)
+        a%delta_r = prob%delta_rho
+        a%weight_below = merge(2.0_qp, 0.0_qp, prob%second)
+        a%weight_above = 1.0_qp
+        a%cx = model%law%apse_constants_xp(big_lambda)
+    end subroutine setup_xp
+
+    !> The early phase's function (in its `form`) and its slope at x, in hardware
+    !! precision.
+    pure subroutine residual_xp(model, prob, x, rough, f, slope)
+        type(central_force_model), intent(in) :: model
+        type(endpoint_problem), intent(in) :: prob
+        real(xp), intent(in) :: x
+        logical, intent(in) :: rough
+        real(xp), intent(out) :: f, slope
+        type(arch_setup) :: a
+        real(xp) :: scaled, scaled_slope, shift, lambda_slope, upsilon, limit
+        call setup_xp(model, prob, x, a, lambda_slope)
+        call theta_xp(model, a, rough, scaled, scaled_slope, shift)
+        select case (prob%form)
+        case (1)
+            ! log(Upsilon/psi)
+            f = log(max(scaled, tiny(1.0_xp))) - shift - real(log(prob%psi), xp)
+            slope = scaled_slope/scaled*lambda_slope
+        case (2)
+            upsilon = scaled*exp(-shift)
+            limit = real(prob%limit, xp)
+            f = log(max(limit - upsilon, tiny(1.0_xp))/real(prob%limit - prob%psi, xp))
+            slope = -scaled_slope*exp(-shift)*lambda_slope/(limit - upsilon)
+        case default
+            f = scaled*exp(-shift) - real(prob%psi, xp)
+            slope = scaled_slope*exp(-shift)*lambda_slope
+        end select
+    end subroutine residual_xp
+
+    !> The early phase in hardware precision: Newton steps on the analytic slope, kept in
+    !! the bracket [lo, hi] (f of opposite signs at its ends; regula falsi with the
+    !! Anderson-Bjorck correction where a Newton step would leave it). First `rough`
+    !! evaluations (17-digit rules, transcendentals in double precision) until a step is
+    !! below 1e-7 of the unknown (the next iterate then within about 1e-14), then
+    !! hardware-precision ones (20-digit rules)
+    !! until a step is below 1e-12: by the quadratic convergence the root is then within
+    !! the rounding of the hardware kind (usually one such evaluation). x the root, slope
+    !! f'(x) (the form's), curvature |f''/2f'| measured between the iterates (0 if not).
+    pure subroutine hardware_phase(model, prob, lo, f_lo, hi, f_hi, x, slope, curvature, &
+                                   steps)
+        type(central_force_model), intent(in) :: model
+        type(endpoint_problem), intent(in) :: prob
+        real(qp), intent(in) :: lo, hi
+        real(real64), intent(in) :: f_lo, f_hi
+        real(qp), intent(out) :: x, slope, curvature
+        integer, intent(inout) :: steps
+        real(xp) :: a, b, fa, fb, xk, fk, dk, x_new, x_prev, d_prev, floor, noise
+        integer :: iteration
+        logical :: rough
+        call first_bracket(lo, f_lo, hi, f_hi, a, fa, b, fb)
+        floor = merge(1.0e-3_xp*abs(b - a), 1.0_xp, prob%use_u)
+        curvature = 0.0_qp
+        x_prev = a
+        d_prev = 0.0_xp
+        rough = .true.
+        xk = falsi()
+        ! rho next to 1 (second half-arch): Upsilon - Theta(rho,rho) ~ c u^2 but for the
+        ! smallest u (falsi would start far below the root)
+        if (prob%use_u .and. prob%second .and. prob%one_minus_rho < 1.0e-6_qp .and. &
+            fa < 0.0_xp .and. fb > 0.0_xp) xk = b*sqrt(-fa/(fb - fa))
+        do iteration = 1, 80
+            call residual_xp(model, prob, xk, rough, fk, dk)
+            steps = steps + 1
+            if (d_prev /= 0.0_xp .and. abs(xk - x_prev) > 1.0e-7_xp*floor) &
+                curvature = max(curvature, real(abs((dk - d_prev)/((xk - x_prev)*dk)), qp))
+            noise = residual_noise(prob, fk, rough)
+            if ((abs(fk) <= noise .and. noise < 1.0e-3_xp) .or. &
+                (rough .and. iteration > 10)) then
+                ! f within its rounding, and that small (the root as close as this
+                ! precision can place it; next to the sector's edge that is far from
+                ! 1e-18): on to the hardware-precision rules, or to the full-precision
+                ! steps
+                x_new = xk
+                if (.not. rough) exit
+                ! with the first bracket again (the rough signs are not sure within
+                ! their rounding)
+                rough = .false.
+                call first_bracket(lo, f_lo, hi, f_hi, a, fa, b, fb)
+                cycle
+            else
+                call keep_bracket(xk, fk, a, fa, b, fb)
+                x_new = xk - fk/dk
+                if (.not. (x_new > min(a, b) .and. x_new < max(a, b))) x_new = falsi()
+            end if
+            if (rough .and. abs(x_new - xk) <= 1.0e-7_xp*max(abs(xk), floor)) then
+                ! the rough root: on to the hardware-precision rules
+                rough = .false.
+                call first_bracket(lo, f_lo, hi, f_hi, a, fa, b, fb)
+            else if (.not. rough .and. &
+                     abs(x_new - xk) <= 1.0e-12_xp*max(abs(xk), floor)) then
+                exit
+            end if
+            x_prev = xk
+            d_prev = dk
+            xk = x_new
+        end do
+        x = real(x_new, qp)
+        slope = real(dk, qp)
+        curvature = 0.5_qp*curvature
+    contains
+        pure real(xp) function falsi()
+            falsi = b - fb*(b - a)/(fb - fa)
+            if (.not. (falsi > min(a, b) .and. falsi < max(a, b))) falsi = 0.5_xp*(a + b)
+        end function falsi
+    end subroutine hardware_phase
+
+    !> The rounding level of the early phase's residual f: Upsilon to about 1e-15
+    !! (rough) or 1e-18 of itself; in form 2 divided by limit - Upsilon.
+    pure function residual_noise(prob, f, rough) result(noise)
+        type(endpoint_problem), intent(in) :: prob
+        real(xp), intent(in) :: f
+        logical, intent(in) :: rough
+        real(xp) :: noise
+        noise = merge(1.0e-15_xp, 1.0e-18_xp, rough)
+        select case (prob%form)
+        case (0)
+            noise = noise*real(prob%psi, xp)
+        case (2)
+            noise = noise*real(prob%limit/(prob%limit - prob%psi), xp)*exp(-f)
+        end select
+    end function residual_noise
+
+    !> The bracket [a, b] (f(a), f(b) of opposite signs) after f(xk) = fk: xk replaces
+    !! b, and a the old b when the signs say so; otherwise f(a) is scaled down
+    !! (Anderson-Bjorck).
+    pure subroutine keep_bracket(xk, fk, a, fa, b, fb)
+        real(xp), intent(in) :: xk, fk
+        real(xp), intent(inout) :: a, fa, b, fb
+        real(xp) :: m
+        if ((fk > 0.0_xp) .eqv. (fb > 0.0_xp)) then
+            m = 1.0_xp - fk/fb
+            fa = fa*merge(m, 0.5_xp, m > 0.0_xp)
+        else
+            a = b
+            fa = fb
+        end if
+        b = xk
+        fb = fk
+    end subroutine keep_bracket
+
+    !> Certified Newton steps (`final_step`) from the early phase's root x: a step not
+    !! certified (the root not close enough for the bounds) is taken and the next one
+    !! certified (usually; next to the edge of the sector the early root is poorer and
+    !! Newton takes up to 4 steps). Not `done`: x and slope for secant steps.
+    pure subroutine final_steps(model, prob, x, lo, hi, curvature, solution, done, slope)
+        type(central_force_model), intent(in) :: model
+        type(endpoint_problem), intent(in) :: prob
+        real(qp), intent(inout) :: x
+        real(qp), intent(in) :: lo, hi, curvature
+        type(endpoint_solution), intent(inout) :: solution
+        logical, intent(out) :: done
+        real(qp), intent(out) :: slope
+        real(qp) :: x_next
+        integer :: attempt
+        do attempt = 1, 4
+            call final_step(model, prob, x, lo, hi, curvature, solution, done, x_next, slope)
+            if (done) return
+            if (x_next == x) exit
+            x = x_next
+        end do
+    end subroutine final_steps
+
+    !> The bracket [lo, hi] and its residuals in hardware precision.
+    pure subroutine first_bracket(lo, f_lo, hi, f_hi, a, fa, b, fb)
+        real(qp), intent(in) :: lo, hi
+        real(real64), intent(in) :: f_lo, f_hi
+        real(xp), intent(out) :: a, fa, b, fb
+        a = real(lo, xp)
+        b = real(hi, xp)
+        fa = real(f_lo, xp)
+        fb = real(f_hi, xp)
+    end subroutine first_bracket
+
+    !> One certified Newton step on the full rules from the early phase's root x0 (in the
+    !! quad phase's unknown, u or R): Upsilon, s, t at x0 with d Upsilon/dx and ds/dx in
+    !! hardware precision; accepted (`done`) only if the step's own error (curvature dx^2
+    !! and the slope's error times dx) is below 1e-35 of the unknown and the slope of s
+    !! moves s by less than a rounding; then s is corrected along its slope and t by
+    !! Hamilton-Jacobi (t(x) = t(x0) + K (psi - Upsilon(x0))). Otherwise x_next, slope_next
+    !! (the Newton point and the slope) for the secant steps of `quad_phase`.
+    pure subroutine final_step(model, prob, x0, lo, hi, curvature, solution, done, x_next, &
+                               slope_next)
+        type(central_force_model), intent(in) :: model
+        type(endpoint_problem), intent(in) :: prob
+        real(qp), intent(in) :: x0, lo, hi, curvature
+        type(endpoint_solution), intent(inout) :: solution
+        logical, intent(out) :: done
+        real(qp), intent(out) :: x_next, slope_next
+        type(arch_setup) :: a
+        real(xp) :: slopes(4)
+        real(qp) :: d, angle, s, t, f, lambda_slope, dx, x, floor, curve, error
+        done = .false.
+        x_next = x0
+        slope_next = 0.0_qp
+        a = setup_at(model, prob, x0)
+        if (prob%use_u) then
+            d = x0*x0
+            lambda_slope = 2.0_qp*x0/a%big_r
+            floor = 1.0e-3_qp*(hi - lo)
+            curve = merge(2.0_qp*curvature, 10.0_qp/(hi - lo), curvature > 0.0_qp)
+        else
+            d = prob%rho - a%big_r
+            lambda_slope = -1.0_qp/a%big_r
+            floor = tiny(1.0_qp)
+            curve = 10.0_qp/x0
+        end if
+        call arch_values(model, a, d, prob%one_minus_rho, prob%second, prob%fall_rho, &
+                         angle, s, t, slopes)
+        solution%steps = solution%steps + 1
+        f = angle - prob%psi
+        slope_next = real(slopes(1), qp)*lambda_slope
+        if (.not. (ieee_is_finite(slope_next) .and. slope_next /= 0.0_qp)) return
+        dx = -f/slope_next
+        x = x0 + dx
+        if (.not. (x > lo .and. x < hi)) return
+        x_next = x
+        error = curve*dx*dx + abs(dx)*real(slopes(3)/abs(slopes(1)), qp)
+        if (.not. error <= 1.0e-35_qp*max(abs(x), floor)) return
+        if (.not. abs(dx*lambda_slope*real(slopes(4), qp)) <= eps_qp*abs(s)) return
+        solution%arclength = s + real(slopes(2), qp)*lambda_slope*dx
+        solution%time = t - model%law%conserved(a%c)*f
+        if (prob%use_u) then
+            solution%apse_radius = prob%rho - x*x
+            solution%apse_gap = x*x
+        else
+            solution%apse_radius = x
+            solution%apse_gap = prob%rho - x
+        end if
+        solution%has_apse_radius = .true.
+        solution%has_arclength = .true.
+        solution%has_time = .true.
+        solution%status = status_ok
+        done = .true.
+    end subroutine final_step
+
     !> The quad-precision phase from the double phase's root x0 and slope (of the
     !! double phase's form): Newton, then secant steps on Upsilon - psi, each a full
     !! evaluation; the last step taken without one (see the module comment).
@@ -793,6 +1260,7 @@ contains
         type(arch_setup) :: a
         real(qp) :: x(3), f(2), s(2), t(2), slope, step, k_mid, scale, floor
         integer :: iteration
+        logical :: stalled
         select case (prob%form)
         case (1)
             slope = prob%psi*real(slope64, qp)
@@ -803,12 +1271,16 @@ contains
         end select
         scale = max(abs(hi - lo), 1.0e-300_qp)
         floor = 1.0e-3_qp*scale
+        stalled = .false.
         x(1) = x_start
         call evaluate_full(model, prob, x(1), f(1), s(1), t(1))
         x(2) = clip(x(1) - f(1)/slope)
         do iteration = 1, 12
             call evaluate_full(model, prob, x(2), f(2), s(2), t(2))
             if (f(2) == f(1) .or. x(2) == x(1)) then
+                ! no progress: a root only if f is at its rounding
+                stalled = abs(f(2)) > 8.0_qp*eps_qp*prob%psi
+                if (stalled) exit
                 step = 0.0_qp
             else
                 step = -f(2)*(x(2) - x(1))/(f(2) - f(1))
@@ -830,7 +1302,7 @@ contains
             x(2) = x(3)
         end do
         solution%steps = solution%steps + iteration + 1
-        if (iteration > 12) then
+        if (iteration > 12 .or. stalled) then
             solution%status = status_no_convergence
             return
         end if
@@ -922,9 +1394,9 @@ contains
         real(qp), intent(in) :: psi   !! endpoint angle, 0 <= psi <= pi
         type(endpoint_solution) :: solution
         type(endpoint_problem) :: prob
-        real(qp) :: limit, apse_angle_rho, half, x, lo, hi
+        real(qp) :: limit, apse_angle_rho, half, x, lo, hi, slope_q, curvature
         real(real64) :: f_lo, f_hi, slope
-        logical :: below
+        logical :: below, hardware, done
 
         solution%rho = rho
         solution%psi = psi
@@ -943,7 +1415,10 @@ contains
         call start_problem(self, rho, psi, limit, prob, apse_angle_rho)
         solution%arch = merge(arch_complete, merge(arch_second, arch_first, prob%second), &
                               rho == 1.0_qp)
-        if (psi == apse_angle_rho) then
+        if (abs(psi - apse_angle_rho) <= 2.0_qp*eps_qp*psi) then
+            ! B at its apse to within two roundings of psi (R-bar = rho - u^2 with u of the
+            ! order of that difference; for tiny rho Theta(rho,rho) is pi/(n+1) to far
+            ! more than 34 digits, and the root would be sought next to u = 0)
             call at_the_apse(self, prob, solution)
             return
         end if
@@ -957,7 +1432,14 @@ contains
             call below_range(self, prob, solution)
             return
         end if
-        call double_phase(self, prob, lo, f_lo, hi, f_hi, x, slope, solution%steps)
+        hardware = self%law%has_terms_xp()
+        if (hardware) then
+            call hardware_phase(self, prob, lo, f_lo, hi, f_hi, x, slope_q, curvature, &
+                                solution%steps)
+            slope = real(slope_q, real64)
+        else
+            call double_phase(self, prob, lo, f_lo, hi, f_hi, x, slope, solution%steps)
+        end if
         prob%fall_rho = fall_piece(self, 0.0_qp, prob%delta_rho)
         if (.not. prob%use_u) then
             ! the quad phase in R itself: y = log R resolves R only to eps |log R|
@@ -966,6 +1448,12 @@ contains
             slope = slope/real(x, real64)
             lo = exp(lo)
             hi = half
+        end if
+        if (hardware) then
+            call final_steps(self, prob, x, lo, hi, curvature, solution, done, slope_q)
+            if (done) return
+            slope = real(slope_q, real64)
+            prob%form = 0
         end if
         call quad_phase(self, prob, x, slope, lo, hi, solution)
     end function general_solve

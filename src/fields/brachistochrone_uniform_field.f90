@@ -14,10 +14,14 @@ module brachistochrone_uniform_field
     use brachistochrone_arches, only: arch_first, arch_second, arch_complete, arch_radial
     use brachistochrone_field_interface, only: brachistochrone_field
     use brachistochrone_uniform_gravity, only: uniform_brachistochrone
+    use brachistochrone_double_quad, only: double_quad_number, two_product
     implicit none
     private
 
     public :: uniform_field
+
+    !> (pi - pi_qp)/2: the half of pi that binary128's pi leaves out (mpmath, 60 digits).
+    real(qp), parameter :: half_pi_tail = 0.5_qp*8.671810130123781024797044014623415e-35_qp
 
     !> Uniform gravity g = 1 downward: v^2 = 2 y; every point below A is accessible.
     type, extends(brachistochrone_field) :: uniform_field
@@ -53,7 +57,8 @@ contains
         else if (psi == 0.0_qp) then
             solution%arch = arch_complete
         else
-            solution%arch = merge(arch_first, arch_second, phi <= pi)
+            ! phi <= pi is x <= (pi/2) y, decided exactly (phi next to pi is not)
+            solution%arch = merge(arch_first, arch_second, before_lowest_point(rho, psi))
         end if
         solution%apse_radius = radius
         solution%arclength = arclength
@@ -62,6 +67,22 @@ contains
         solution%has_arclength = .true.
         solution%has_time = .true.
     end function uniform_solve
+
+    !> Whether B = (x, y), x, y > 0 finite, is on the descending half of its cycloid
+    !! (phi_B < pi), i.e. x < (pi/2) y, decided exactly: both scaled by the same power of
+    !! 2, (pi/2) y = two_product(pi_qp/2, y) + half_pi_tail y, and x minus the leading
+    !! part is exact when they are close (Sterbenz). x = (pi/2) y has no binary128 solution.
+    pure logical function before_lowest_point(x, y)
+        real(qp), intent(in) :: x, y
+        type(double_quad_number) :: product
+        real(qp) :: xs, ys
+        integer :: e
+        e = exponent(max(x, y))
+        xs = scale(x, -e)
+        ys = scale(y, -e)
+        product = two_product(0.5_qp*pi, ys)
+        before_lowest_point = (xs - product%hi) - product%lo - half_pi_tail*ys < 0.0_qp
+    end function before_lowest_point
 
     pure function uniform_name(self) result(text)
         class(uniform_field), intent(in) :: self

@@ -10,6 +10,7 @@
 !! to about 2^-170 for |k| < 2^14. Errors: a few units in the last place.
 module brachistochrone_fast_exp
     use brachistochrone_kinds, only: qp
+    use, intrinsic :: iso_fortran_env, only: real64
     implicit none
     private
 
@@ -40,7 +41,11 @@ module brachistochrone_fast_exp
     real(qp), parameter :: ln2 = log(2.0_qp)
     real(qp), parameter :: ln2_high = real(int(ln2*2.0_qp**60, kind=selected_int_kind(18)), &
                                            qp)/2.0_qp**60
-    real(qp), parameter :: ln2_low = ln2 - ln2_high
+    !> log 2 - ln2_high to full precision (mpmath): ln2 - ln2_high would carry the
+    !! rounding of ln2 (2^-114), k times, into the reduced argument
+    real(qp), parameter :: ln2_low = 6.39062950764503927593536380659998906464430009e-19_qp
+    !> 1/log 2 (k needs only to be near x/log 2: the reduction is exact for any k)
+    real(qp), parameter :: inverse_ln2 = 1.0_qp/ln2
 
 contains
 
@@ -54,7 +59,7 @@ contains
             y = exp(x)
             return
         end if
-        k = nint(x/ln2)
+        k = nint(x*inverse_ln2)
         reduced = (x - real(k, qp)*ln2_high) - real(k, qp)*ln2_low
         y = scale(1.0_qp + small_expm1(reduced), k)
     end function fast_exp
@@ -78,10 +83,12 @@ contains
         real(qp), intent(in) :: x
         real(qp) :: y, r, series
         integer :: j1, j2
-        j1 = min(int(abs(x)*256.0_qp), 255)
-        r = abs(x) - real(j1, qp)/256.0_qp
-        j2 = min(int(r*65536.0_qp), 255)
-        r = r - real(j2, qp)/65536.0_qp
+        ! the table indices from double precision (a rounding up by one step leaves r
+        ! slightly negative, which the series takes as well), the steps from the tables
+        j1 = max(0, min(int(abs(real(x, real64))*256.0_real64), 255))
+        r = abs(x) - steps_plus(j1)
+        j2 = max(0, min(int(real(r, real64)*65536.0_real64), 255))
+        r = r - fine_plus(j2)
         if (x < 0.0_qp) r = -r
         series = r*(1.0_qp + r*(1.0_qp/2 + r*(1.0_qp/6 + r*(1.0_qp/24 + r*(1.0_qp/120 &
                  + r*(1.0_qp/720 + r*(1.0_qp/5040)))))))

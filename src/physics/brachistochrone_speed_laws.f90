@@ -24,12 +24,21 @@ module brachistochrone_speed_laws
     use brachistochrone_kinds, only: qp
     use brachistochrone_quad_math, only: expm1, log1p
     use brachistochrone_fast_exp, only: fast_exp, fast_expm1
+    use brachistochrone_fast_math, only: inverse_sqrt
+    use brachistochrone_closed_forms, only: radial_time
     use, intrinsic :: iso_fortran_env, only: real64
     implicit none
     private
 
     public :: speed_law, inverse_square_law, power_law, logarithmic_law, harmonic_law
-    public :: max_power_exponent
+    public :: max_power_exponent, xp
+
+    !> The widest hardware real kind below binary128: x87 extended on x86-64 (64-bit
+    !! significand, the exponent range of binary128), double elsewhere; for the engine's
+    !! early phase and the slopes of its final step (`theta_terms_xp`).
+    integer, parameter :: xp_candidate = selected_real_kind(18, 4931)
+    integer, parameter :: xp = merge(xp_candidate, real64, &
+                                     xp_candidate > 0 .and. xp_candidate /= qp)
 
     !> Largest force exponent n of `power_law` the general engine accepts (checked against
     !! mpmath at n = 1.5, 3, 10 and converging on a grid up to n = 32; from n of about 100
@@ -37,6 +46,18 @@ module brachistochrone_speed_laws
     !! edge of the accessible region). Any n > 1 is accepted below it, n = 1 + 2^-100
     !! included (it agrees with the logarithmic law to O(n - 1)).
     real(qp), parameter :: max_power_exponent = 32.0_qp
+
+    !> Series of the power law's fall time (`power_fall_time`): most terms, 1/k, 1/(2k+1),
+    !! (k + 1/2)/(k + 1), log 2.
+    integer, parameter :: max_series_terms = 160
+    integer :: k_
+    real(qp), parameter :: inverse_integer(1:max_series_terms + 1) = &
+        [(1.0_qp/real(k_, qp), k_ = 1, max_series_terms + 1)]
+    real(qp), parameter :: inverse_odd(0:max_series_terms) = &
+        [(1.0_qp/real(2*k_ + 1, qp), k_ = 0, max_series_terms)]
+    real(qp), parameter :: half_step(0:max_series_terms) = &
+        [((real(k_, qp) + 0.5_qp)/real(k_ + 1, qp), k_ = 0, max_series_terms)]
+    real(qp), parameter :: log_two = log(2.0_qp)
 
     !> A speed law: v^2 and its divided difference. Attractive laws here: v > 0 for
     !! 0 < r < 1, v(1) = 0.
@@ -52,10 +73,23 @@ module brachistochrone_speed_laws
         !> sqrt(q/(1 - q)) exp(shift) in double precision, for the solver's early phase
         procedure :: theta_ratio64 => default_theta_ratio64
         procedure :: inverse_speed => default_inverse_speed !! 1/v(x) at x = exp(-delta)
+        !> x/v(x) at x = exp(-delta), the integrand of the fall time in delta
+        procedure :: fall_integrand => default_fall_integrand
+        !> The fall time from x = exp(-delta_lo) to exp(-delta_hi) in closed form, where
+        !! the law has one (`found`)
+        procedure :: closed_fall => default_closed_fall
         procedure :: conserved => default_conserved       !! K = R/v(R) (eq. 25)
         !> Distances (in lambda from the apse, delta from the start) of the nearest
         !! complex singularities of the integrands in those variables
         procedure :: log_scales => default_log_scales
+        !> Whether the law has the hardware-precision terms below (else the engine
+        !! takes its double-precision phase and quad-precision secant steps)
+        procedure :: has_terms_xp => default_has_terms_xp
+        !> Per-apse constants for theta_terms_xp, from Lambda = -log R
+        procedure :: apse_constants_xp => default_apse_constants_xp
+        !> sqrt(q/(1 - q)) exp(shift), 1 - q and d(log q)/d Lambda at fixed lambda, in
+        !! hardware precision
+        procedure :: theta_terms_xp => default_theta_terms_xp
     end type speed_law
 
     abstract interface
@@ -97,9 +131,14 @@ module brachistochrone_speed_laws
         procedure :: arch_terms => power_arch_terms
         procedure :: theta_ratio64 => power_theta_ratio64
         procedure :: inverse_speed => power_inverse_speed
+        procedure :: fall_integrand => power_fall_integrand
+        procedure :: closed_fall => power_closed_fall
         procedure :: conserved => power_conserved
         procedure :: log_scales => power_log_scales
         procedure :: valid => power_valid
+        procedure :: has_terms_xp => power_has_terms_xp
+        procedure :: apse_constants_xp => power_apse_constants_xp
+        procedure :: theta_terms_xp => power_theta_terms_xp
     end type power_law
 
     !> Logarithmic potential (F = 1/r, the power law n = 1): v^2 = -2 log x.
@@ -112,8 +151,13 @@ module brachistochrone_speed_laws
         procedure :: arch_terms => logarithmic_arch_terms
         procedure :: theta_ratio64 => logarithmic_theta_ratio64
         procedure :: inverse_speed => logarithmic_inverse_speed
+        procedure :: fall_integrand => logarithmic_fall_integrand
+        procedure :: closed_fall => logarithmic_closed_fall
         procedure :: conserved => logarithmic_conserved
         procedure :: log_scales => logarithmic_log_scales
+        procedure :: has_terms_xp => logarithmic_has_terms_xp
+        procedure :: apse_constants_xp => logarithmic_apse_constants_xp
+        procedure :: theta_terms_xp => logarithmic_theta_terms_xp
     end type logarithmic_law
 
     !> Inside a uniform planet (Saitoh), R_E = 1, omega = 1: v^2 = 1 - x^2.
@@ -129,6 +173,10 @@ module brachistochrone_speed_laws
         procedure :: theta_ratio64 => harmonic_theta_ratio64
         procedure :: inverse_speed => harmonic_inverse_speed
         procedure :: conserved => harmonic_conserved
+        procedure :: closed_fall => harmonic_closed_fall
+        procedure :: has_terms_xp => harmonic_has_terms_xp
+        procedure :: apse_constants_xp => harmonic_apse_constants_xp
+        procedure :: theta_terms_xp => harmonic_theta_terms_xp
     end type harmonic_law
 
 contains
@@ -275,28 +323,35 @@ contains
         real(qp), intent(in) :: big_r            !! apse radius R
         real(qp), intent(in) :: one_minus_big_r  !! 1 - R, exact
         real(qp), intent(in) :: big_lambda       !! -log R
-        real(qp) :: c(6)
+        real(qp) :: c(8)
         c = [big_r, one_minus_big_r, big_lambda, &
-             -one_minus_big_r*self%divided_difference(big_r, 1.0_qp), 0.0_qp, 0.0_qp]
+             -one_minus_big_r*self%divided_difference(big_r, 1.0_qp), 0.0_qp, 0.0_qp, &
+             0.0_qp, 0.0_qp]
     end function default_apse_constants
 
     !> q = (R/x)^2 P(x)/P(R), 1 - q = (x - R) M/x^2 with M = (x + R) - R^2 D(x,R)/P(R)
-    !! (a sum of positive terms for attractive laws), q/sqrt(P(x)), and x/R, at the node
+    !! (a sum of positive terms for attractive laws), q/sqrt(P(x)), and R/x, at the node
     !! lambda = log(x/R), delta = -log x.
     pure subroutine default_arch_terms(self, c, lambda, delta, q, one_minus_q, q_over_v, &
-                                       x_over_r)
+                                       r_over_x, root_q, log_slope)
         class(speed_law), intent(in) :: self
-        real(qp), intent(in) :: c(6)           !! from apse_constants
+        real(qp), intent(in) :: c(8)           !! from apse_constants
         real(qp), intent(in) :: lambda, delta  !! offsets from the apse and the start
-        real(qp), intent(out) :: q, one_minus_q, q_over_v, x_over_r
+        real(qp), intent(out) :: q, one_minus_q, q_over_v, r_over_x
+        real(qp), intent(out) :: root_q  !! sqrt(q)
+        !> d(log q)/d Lambda at fixed lambda in hardware precision (laws with
+        !! has_terms_xp; 0 otherwise)
+        real(xp), intent(out), optional :: log_slope
         real(qp) :: x, p_x, m
-        x_over_r = exp(lambda)
+        r_over_x = exp(-lambda)
         x = exp(-delta)
         p_x = -expm1(-delta)*(-self%divided_difference(x, 1.0_qp))
         m = (x + c(1)) - c(1)**2*self%divided_difference(x, c(1))/c(4)
         q = (c(1)/x)**2*p_x/c(4)
         one_minus_q = c(1)*expm1(lambda)*m/x**2
         q_over_v = q/sqrt(p_x)
+        root_q = sqrt(q)
+        if (present(log_slope)) log_slope = 0.0_xp
     end subroutine default_arch_terms
 
     !> 1/v(x) at x = exp(-delta): 1/sqrt((1 - x) V(x)), V = -D(x, 1).
@@ -307,10 +362,28 @@ contains
         w = 1.0_qp/sqrt(-expm1(-delta)*(-self%divided_difference(exp(-delta), 1.0_qp)))
     end function default_inverse_speed
 
+    !> x/v(x) at x = exp(-delta): exp(-delta)/v.
+    pure function default_fall_integrand(self, delta) result(w)
+        class(speed_law), intent(in) :: self
+        real(qp), intent(in) :: delta !! -log x > 0
+        real(qp) :: w
+        w = self%inverse_speed(delta)*fast_exp(-delta)
+    end function default_fall_integrand
+
+    !> No closed form here: `found` false, t = 0.
+    pure subroutine default_closed_fall(self, delta_lo, delta_hi, t, found)
+        class(speed_law), intent(in) :: self
+        real(qp), intent(in) :: delta_lo, delta_hi  !! 0 <= delta_lo <= delta_hi
+        real(qp), intent(out) :: t                  !! the fall time between them
+        logical, intent(out) :: found               !! a closed form was used
+        t = 0.0_qp
+        found = .false.
+    end subroutine default_closed_fall
+
     !> K = R/v(R), the conserved angular momentum of the associated free particle.
     pure function default_conserved(self, c) result(k)
         class(speed_law), intent(in) :: self
-        real(qp), intent(in) :: c(6) !! from apse_constants
+        real(qp), intent(in) :: c(8) !! from apse_constants
         real(qp) :: k
         k = c(1)/sqrt(c(4))
     end function default_conserved
@@ -330,12 +403,13 @@ contains
         sigma = [acos(-1.0_qp), acos(-1.0_qp)]
     end function harmonic_log_scales
 
-    !> exp(-lambda) and 1 - exp(-2 lambda), both to full relative precision (lambda >= 0);
+    !> exp(-lambda), 1 - exp(-lambda) and 1 - exp(-2 lambda), all to full relative precision
+    !! (lambda >= 0);
     !! where delta < lambda (nearer the start) exp(-lambda) = R exp(delta), since lambda =
     !! Lambda - delta carries an absolute rounding error of Lambda's size.
-    elemental subroutine exp_pair(lambda, delta, big_r, e1, om2)
+    elemental subroutine exp_pair(lambda, delta, big_r, e1, om1, om2)
         real(qp), intent(in) :: lambda, delta, big_r
-        real(qp), intent(out) :: e1, om2
+        real(qp), intent(out) :: e1, om1, om2
         real(qp) :: em1
         if (lambda > 0.5_qp) then
             if (delta < lambda .and. big_r > 0.0_qp) then
@@ -343,10 +417,12 @@ contains
             else
                 e1 = fast_exp(-lambda)
             end if
+            om1 = 1.0_qp - e1
             om2 = 1.0_qp - e1*e1
         else
             em1 = fast_expm1(-lambda)
             e1 = 1.0_qp + em1
+            om1 = -em1
             om2 = -em1*(2.0_qp + em1)
         end if
     end subroutine exp_pair
@@ -362,27 +438,46 @@ contains
     pure function power_apse_constants(self, big_r, one_minus_big_r, big_lambda) result(c)
         class(power_law), intent(in) :: self
         real(qp), intent(in) :: big_r, one_minus_big_r, big_lambda
-        real(qp) :: c(6), a
+        real(qp) :: c(8), a
         a = self%n - 1.0_qp
         ! R^a (powq) rather than exp(-a Lambda): Lambda's rounding would cost a Lambda eps
-        c = [big_lambda, decay(a, big_lambda), a, big_r**a, big_r, 0.0_qp]
+        c = [big_lambda, decay(a, big_lambda), a, big_r**a, big_r, 0.0_qp, 0.0_qp, 0.0_qp]
         if (a*big_lambda > 0.5_qp) c(2) = 1.0_qp - c(4)
         c(6) = 1.0_qp/c(2)
+        ! q/v = sqrt(q) exp(-lambda) R^(a/2) sqrt(a/(2 E(Lambda)))
+        c(7) = sqrt(0.5_qp*a*c(4)*c(6))
     end function power_apse_constants
 
-    !> Two expm1 per node (three where a delta < 1/4): exp(-lambda) = 1 + expm1(-lambda),
+    !> Two expm1 per node (three where a delta < 1/4; one less for n = 1.5, 2, 3, where
+    !! exp(-a lambda) follows from exp(-lambda)): exp(-lambda) = 1 + expm1(-lambda),
     !! 1 - exp(-2 lambda) = -expm1(-lambda) (2 + expm1(-lambda)), E(lambda) =
     !! -expm1(-a lambda), exp(-a delta) = exp(-a Lambda)/exp(-a lambda).
     pure subroutine power_arch_terms(self, c, lambda, delta, q, one_minus_q, q_over_v, &
-                                     x_over_r)
+                                     r_over_x, root_q, log_slope)
         class(power_law), intent(in) :: self
-        real(qp), intent(in) :: c(6), lambda, delta
-        real(qp), intent(out) :: q, one_minus_q, q_over_v, x_over_r
-        real(qp) :: a, om2, e1, e2, eam1, ea, e_delta, exp_delta
+        real(qp), intent(in) :: c(8), lambda, delta
+        real(qp), intent(out) :: q, one_minus_q, q_over_v, r_over_x
+        real(qp), intent(out) :: root_q  !! sqrt(q)
+        !> d(log q)/d Lambda at fixed lambda in hardware precision (laws with
+        !! has_terms_xp; 0 otherwise)
+        real(xp), intent(out), optional :: log_slope
+        real(qp) :: a, om1, om2, e1, e2, eam1, ea, e_delta, exp_delta
         a = c(3)
-        call exp_pair(lambda, delta, c(5), e1, om2)
+        call exp_pair(lambda, delta, c(5), e1, om1, om2)
         e2 = e1*e1
-        if (a*lambda > 0.5_qp) then
+        if (a == 2.0_qp) then
+            ! n = 3: exp(-a lambda) = exp(-2 lambda)
+            ea = e2
+            eam1 = -om2
+        else if (a == 1.0_qp) then
+            ! n = 2: exp(-a lambda) = exp(-lambda)
+            ea = e1
+            eam1 = -om1
+        else if (a == 0.5_qp) then
+            ! n = 1.5: exp(-lambda/2) = sqrt(exp(-lambda)), 1 - it = (1 - e1)/(1 + it)
+            ea = root(e1)
+            eam1 = -om1/(1.0_qp + ea)
+        else if (a*lambda > 0.5_qp) then
             if (delta < lambda .and. c(4) > 0.0_qp) then
                 ! nearer the start: exp(-a lambda) = R^a exp(a delta), exact arguments
                 ea = c(4)*fast_exp(a*delta)
@@ -401,11 +496,22 @@ contains
             e_delta = decay(a, delta)
             exp_delta = 1.0_qp - e_delta
         end if
-        q = e2*ea*e_delta*c(6)
+        root_q = e1*root(ea*e_delta*c(6))
+        q = root_q*root_q
         one_minus_q = om2 + e2*(-eam1)*c(6)
-        q_over_v = sqrt(0.5_qp*a*e_delta*exp_delta)*c(6)*(e2*ea)
-        x_over_r = 1.0_qp/e1
+        q_over_v = root_q*e1*c(7)
+        r_over_x = e1
+        ! a E(lambda) exp(-a delta)/(E(Lambda) E(delta)) (see power_theta_terms_xp)
+        if (present(log_slope)) log_slope = real(a, xp)*real(-eam1, xp)* &
+            real(exp_delta, xp)*real(c(6), xp)/real(e_delta, xp)
     end subroutine power_arch_terms
+
+    !> sqrt(z) = z/sqrt(z) with the hardware-seeded inverse square root (within 3 ulp).
+    elemental function root(z) result(r)
+        real(qp), intent(in) :: z
+        real(qp) :: r
+        r = z*inverse_sqrt(z)
+    end function root
 
     !> 1/v = sqrt(a/2) exp(-a delta/2)/sqrt(E(delta)).
     pure function power_inverse_speed(self, delta) result(w)
@@ -416,9 +522,96 @@ contains
         w = sqrt(0.5_qp*a/decay(a, delta))*fast_exp(-0.5_qp*a*delta)
     end function power_inverse_speed
 
+    !> x/v = exp(-(a/2 + 1) delta)/sqrt(2 E(delta)/a); n = 3: x^2/sqrt(1 - x^2); n = 2:
+    !! x^2/sqrt(2 x (1 - x)) (one exp less).
+    pure function power_fall_integrand(self, delta) result(w)
+        class(power_law), intent(in) :: self
+        real(qp), intent(in) :: delta
+        real(qp) :: w, a, em1, x, e
+        a = self%n - 1.0_qp
+        if (a == 2.0_qp .or. a == 1.0_qp) then
+            em1 = fast_expm1(-delta)
+            x = 1.0_qp + em1
+            if (a == 2.0_qp) then
+                w = x*x*inverse_sqrt(-em1*(2.0_qp + em1))
+            else
+                w = x*x*inverse_sqrt(-2.0_qp*x*em1)
+            end if
+        else
+            if (a*delta < 0.5_qp) then
+                e = -fast_expm1(-a*delta)
+            else
+                e = 1.0_qp - fast_exp(-a*delta)
+            end if
+            w = fast_exp(-(0.5_qp*a + 1.0_qp)*delta)*inverse_sqrt(2.0_qp*e/a)
+        end if
+    end function power_fall_integrand
+
+    !> n = 3: t0(x) = sqrt(1 - x^2); n = 2: the inverse-square fall time (Tee eq. 46);
+    !! 1/4 <= a = n - 1: an incomplete beta function (`power_fall_time`); below: none.
+    pure subroutine power_closed_fall(self, delta_lo, delta_hi, t, found)
+        class(power_law), intent(in) :: self
+        real(qp), intent(in) :: delta_lo, delta_hi
+        real(qp), intent(out) :: t
+        logical, intent(out) :: found
+        real(qp) :: a
+        a = self%n - 1.0_qp
+        found = a >= 0.25_qp
+        t = 0.0_qp
+        if (self%n == 3.0_qp) then
+            t = sqrt(-expm1(-2.0_qp*delta_hi)) - sqrt(-expm1(-2.0_qp*delta_lo))
+        else if (self%n == 2.0_qp) then
+            t = radial_time(exp(-delta_hi), -expm1(-delta_hi)) &
+                - radial_time(exp(-delta_lo), -expm1(-delta_lo))
+        else if (found) then
+            t = power_fall_time(a, delta_hi)
+            if (delta_lo > 0.0_qp) t = t - power_fall_time(a, delta_lo)
+        end if
+    end subroutine power_closed_fall
+
+    !> The fall time from 1 to x = exp(-delta) of the power law a = n - 1 >= 1/4:
+    !! t0 = I(y)/sqrt(2 a), I(y) = int_y^1 t^(p-1) (1-t)^(-1/2) dt, y = x^a, p = 1/a + 1/2
+    !! (t = y). For y >= 1/2, with 1 - t = w^2, I = 2 sum_k c_k W^(2k+1)/(2k+1), W^2 = 1 - y,
+    !! c_k the binomial series of (1 - w^2)^(p-1); below, I = B(p, 1/2) - sum_k d_k
+    !! y^(p+k)/(p+k), d_k = (1/2)_k/k!. Both series have ratio at most 1/2 (terms of one
+    !! sign after the first few); about 115 terms for 36 digits.
+    pure function power_fall_time(a, delta) result(t)
+        real(qp), intent(in) :: a, delta
+        real(qp) :: t, p, w2, power, c, term, total, y, beta
+        integer :: k
+        p = 1.0_qp/a + 0.5_qp
+        total = 0.0_qp
+        if (a*delta <= log_two) then
+            w2 = -fast_expm1(-a*delta)
+            power = sqrt(w2)
+            c = 1.0_qp
+            do k = 0, max_series_terms
+                term = c*power*inverse_odd(k)
+                total = total + term
+                if (abs(term) <= 1.0e-36_qp*abs(total)) exit
+                c = c*(real(k + 1, qp) - p)*inverse_integer(k + 1)
+                power = power*w2
+            end do
+            t = 2.0_qp*total/sqrt(2.0_qp*a)
+        else
+            y = fast_exp(-a*delta)
+            power = fast_exp(-(1.0_qp + 0.5_qp*a)*delta)   ! y^p
+            c = 1.0_qp
+            do k = 0, max_series_terms
+                term = c*power/(p + real(k, qp))
+                total = total + term
+                if (term <= 1.0e-36_qp*total) exit
+                c = c*half_step(k)
+                power = power*y
+            end do
+            beta = gamma(p)*sqrt(acos(-1.0_qp))/gamma(p + 0.5_qp)
+            t = (beta - total)/sqrt(2.0_qp*a)
+        end if
+    end function power_fall_time
+
     pure function power_conserved(self, c) result(k)
         class(power_law), intent(in) :: self
-        real(qp), intent(in) :: c(6)
+        real(qp), intent(in) :: c(8)
         real(qp) :: k
         k = sqrt(0.5_qp*c(3)/c(2))*exp(-(1.0_qp + 0.5_qp*c(3))*c(1))
     end function power_conserved
@@ -436,23 +629,31 @@ contains
         result(c)
         class(logarithmic_law), intent(in) :: self
         real(qp), intent(in) :: big_r, one_minus_big_r, big_lambda
-        real(qp) :: c(6)
-        c = [big_lambda, 0.0_qp, 0.0_qp, 0.0_qp, big_r, 0.0_qp]
+        real(qp) :: c(8)
+        c = [big_lambda, 0.0_qp, 0.0_qp, 0.0_qp, big_r, 1.0_qp/big_lambda, &
+             1.0_qp/sqrt(2.0_qp*big_lambda), 0.0_qp]
     end function logarithmic_apse_constants
 
     !> The power law's terms in the limit a -> 0: E(y)/a -> y, P = 2 delta.
     pure subroutine logarithmic_arch_terms(self, c, lambda, delta, q, one_minus_q, &
-                                           q_over_v, x_over_r)
+                                           q_over_v, r_over_x, root_q, log_slope)
         class(logarithmic_law), intent(in) :: self
-        real(qp), intent(in) :: c(6), lambda, delta
-        real(qp), intent(out) :: q, one_minus_q, q_over_v, x_over_r
-        real(qp) :: om2, e1, e2
-        call exp_pair(lambda, delta, c(5), e1, om2)
+        real(qp), intent(in) :: c(8), lambda, delta
+        real(qp), intent(out) :: q, one_minus_q, q_over_v, r_over_x
+        real(qp), intent(out) :: root_q  !! sqrt(q)
+        !> d(log q)/d Lambda at fixed lambda in hardware precision (laws with
+        !! has_terms_xp; 0 otherwise)
+        real(xp), intent(out), optional :: log_slope
+        real(qp) :: om1, om2, e1, e2
+        call exp_pair(lambda, delta, c(5), e1, om1, om2)
         e2 = e1*e1
-        q = e2*delta/c(1)
-        one_minus_q = om2 + e2*lambda/c(1)
-        q_over_v = e2*sqrt(0.5_qp*delta)/c(1)
-        x_over_r = 1.0_qp/e1
+        ! c(6) = 1/Lambda, c(7) = 1/sqrt(2 Lambda)
+        root_q = e1*root(delta*c(6))
+        q = root_q*root_q
+        one_minus_q = om2 + e2*lambda*c(6)
+        q_over_v = root_q*e1*c(7)
+        r_over_x = e1
+        if (present(log_slope)) log_slope = real(lambda, xp)/(real(delta, xp)*real(c(1), xp))
     end subroutine logarithmic_arch_terms
 
     pure function logarithmic_inverse_speed(self, delta) result(w)
@@ -462,9 +663,32 @@ contains
         w = 1.0_qp/sqrt(2.0_qp*delta)
     end function logarithmic_inverse_speed
 
+    pure function logarithmic_fall_integrand(self, delta) result(w)
+        class(logarithmic_law), intent(in) :: self
+        real(qp), intent(in) :: delta
+        real(qp) :: w
+        w = fast_exp(-delta)*inverse_sqrt(2.0_qp*delta)
+    end function logarithmic_fall_integrand
+
+    !> t0 = sqrt(pi/2) erf(sqrt(delta)) (x/v = exp(-delta)/sqrt(2 delta)); differences of
+    !! erfc where both arguments exceed 1.
+    pure subroutine logarithmic_closed_fall(self, delta_lo, delta_hi, t, found)
+        class(logarithmic_law), intent(in) :: self
+        real(qp), intent(in) :: delta_lo, delta_hi
+        real(qp), intent(out) :: t
+        logical, intent(out) :: found
+        found = .true.
+        if (delta_lo > 1.0_qp) then
+            t = erfc(sqrt(delta_lo)) - erfc(sqrt(delta_hi))
+        else
+            t = erf(sqrt(delta_hi)) - erf(sqrt(delta_lo))
+        end if
+        t = sqrt(0.5_qp*acos(-1.0_qp))*t
+    end subroutine logarithmic_closed_fall
+
     pure function logarithmic_conserved(self, c) result(k)
         class(logarithmic_law), intent(in) :: self
-        real(qp), intent(in) :: c(6)
+        real(qp), intent(in) :: c(8)
         real(qp) :: k
         k = exp(-c(1))/sqrt(2.0_qp*c(1))
     end function logarithmic_conserved
@@ -481,19 +705,19 @@ contains
     !! precision long before binary128 (the early phase of tiny R-bar).
     pure function default_theta_ratio64(self, c, lambda, delta, shift) result(g)
         class(speed_law), intent(in) :: self
-        real(qp), intent(in) :: c(6)                 !! from apse_constants
+        real(qp), intent(in) :: c(8)                 !! from apse_constants
         real(real64), intent(in) :: lambda, delta    !! offsets from the apse and the start
         real(real64), intent(in) :: shift            !! log of the scale factor
         real(real64) :: g
-        real(qp) :: q, one_minus_q, q_over_v, x_over_r
+        real(qp) :: q, one_minus_q, q_over_v, r_over_x, root_q
         call self%arch_terms(c, real(lambda, qp), real(delta, qp), q, one_minus_q, &
-                             q_over_v, x_over_r)
+                             q_over_v, r_over_x, root_q)
         g = real(sqrt(q/one_minus_q)*exp(real(shift, qp)), real64)
     end function default_theta_ratio64
 
     pure function power_theta_ratio64(self, c, lambda, delta, shift) result(g)
         class(power_law), intent(in) :: self
-        real(qp), intent(in) :: c(6)
+        real(qp), intent(in) :: c(8)
         real(real64), intent(in) :: lambda, delta, shift
         real(real64) :: g, a, e2, e_big
         a = real(c(3), real64)
@@ -506,7 +730,7 @@ contains
 
     pure function logarithmic_theta_ratio64(self, c, lambda, delta, shift) result(g)
         class(logarithmic_law), intent(in) :: self
-        real(qp), intent(in) :: c(6)
+        real(qp), intent(in) :: c(8)
         real(real64), intent(in) :: lambda, delta, shift
         real(real64) :: g, e2, big
         big = real(c(1), real64)
@@ -532,29 +756,41 @@ contains
         result(c)
         class(harmonic_law), intent(in) :: self
         real(qp), intent(in) :: big_r, one_minus_big_r, big_lambda
-        real(qp) :: c(6)
-        c = [big_lambda, one_minus_big_r*(1.0_qp + big_r), 0.0_qp, 0.0_qp, big_r, 0.0_qp]
+        real(qp) :: c(8)
+        c = [big_lambda, one_minus_big_r*(1.0_qp + big_r), 0.0_qp, 0.0_qp, big_r, 0.0_qp, &
+             0.0_qp, 0.0_qp]
+        c(6) = 1.0_qp/c(2)
+        c(7) = sqrt(c(6))
     end function harmonic_apse_constants
 
     !> P = 1 - x^2: q = exp(-2 lambda) (1 - x^2)/(1 - R^2), 1 - q = (1 - exp(-2 lambda))/
     !! (1 - R^2), q/v = q/sqrt(1 - x^2).
     pure subroutine harmonic_arch_terms(self, c, lambda, delta, q, one_minus_q, q_over_v, &
-                                        x_over_r)
+                                        r_over_x, root_q, log_slope)
         class(harmonic_law), intent(in) :: self
-        real(qp), intent(in) :: c(6), lambda, delta
-        real(qp), intent(out) :: q, one_minus_q, q_over_v, x_over_r
-        real(qp) :: e1, om2, p_x
-        call exp_pair(lambda, delta, c(5), e1, om2)
+        real(qp), intent(in) :: c(8), lambda, delta
+        real(qp), intent(out) :: q, one_minus_q, q_over_v, r_over_x
+        real(qp), intent(out) :: root_q  !! sqrt(q)
+        !> d(log q)/d Lambda at fixed lambda in hardware precision (laws with
+        !! has_terms_xp; 0 otherwise)
+        real(xp), intent(out), optional :: log_slope
+        real(qp) :: e1, om1, om2, p_x
+        call exp_pair(lambda, delta, c(5), e1, om1, om2)
         p_x = -fast_expm1(-2.0_qp*delta)
-        q = e1*e1*p_x/c(2)
-        one_minus_q = om2/c(2)
-        q_over_v = q/sqrt(p_x)
-        x_over_r = 1.0_qp/e1
+        ! c(6) = 1/(1 - R^2), c(7) = sqrt(c(6))
+        root_q = e1*root(p_x*c(6))
+        q = root_q*root_q
+        one_minus_q = om2*c(6)
+        q_over_v = root_q*e1*c(7)
+        r_over_x = e1
+        ! 2 x^2 (1 - exp(-2 lambda))/((1 - x^2)(1 - R^2)), x = R/exp(-lambda)
+        if (present(log_slope)) log_slope = 2.0_xp*(real(c(5), xp)/real(e1, xp))**2* &
+            real(om2, xp)*real(c(6), xp)/real(p_x, xp)
     end subroutine harmonic_arch_terms
 
     pure function harmonic_theta_ratio64(self, c, lambda, delta, shift) result(g)
         class(harmonic_law), intent(in) :: self
-        real(qp), intent(in) :: c(6)
+        real(qp), intent(in) :: c(8)
         real(real64), intent(in) :: lambda, delta, shift
         real(real64) :: g
         g = sqrt((-expm1_64(-2.0_real64*delta))/(-expm1_64(-2.0_real64*lambda))) &
@@ -570,9 +806,182 @@ contains
 
     pure function harmonic_conserved(self, c) result(k)
         class(harmonic_law), intent(in) :: self
-        real(qp), intent(in) :: c(6)
+        real(qp), intent(in) :: c(8)
         real(qp) :: k
         k = c(5)/sqrt(c(2))
     end function harmonic_conserved
+
+    pure logical function default_has_terms_xp(self)
+        class(speed_law), intent(in) :: self
+        default_has_terms_xp = .false.
+    end function default_has_terms_xp
+
+    pure logical function power_has_terms_xp(self)
+        class(power_law), intent(in) :: self
+        power_has_terms_xp = .true.
+    end function power_has_terms_xp
+
+    pure logical function logarithmic_has_terms_xp(self)
+        class(logarithmic_law), intent(in) :: self
+        logarithmic_has_terms_xp = .true.
+    end function logarithmic_has_terms_xp
+
+    !> No hardware-precision terms: zeros (see has_terms_xp).
+    pure function default_apse_constants_xp(self, big_lambda) result(c)
+        class(speed_law), intent(in) :: self
+        real(xp), intent(in) :: big_lambda  !! -log R
+        real(xp) :: c(4)
+        c = 0.0_xp
+    end function default_apse_constants_xp
+
+    !> No hardware-precision terms: zeros (see has_terms_xp).
+    pure subroutine default_theta_terms_xp(self, c, lambda, delta, shift, rough, g, &
+                                           one_minus_q, log_slope)
+        class(speed_law), intent(in) :: self
+        real(xp), intent(in) :: c(4)                 !! from apse_constants_xp
+        real(xp), intent(in) :: lambda, delta        !! offsets from the apse and the start
+        real(xp), intent(in) :: shift                !! log of the scale factor of g
+        logical, intent(in) :: rough                 !! transcendentals in double precision
+        real(xp), intent(out) :: g                   !! sqrt(q/(1 - q)) exp(shift)
+        real(xp), intent(out) :: one_minus_q         !! 1 - q
+        real(xp), intent(out) :: log_slope           !! d(log q)/d Lambda at fixed lambda
+        g = 0.0_xp
+        one_minus_q = 1.0_xp
+        log_slope = 0.0_xp
+    end subroutine default_theta_terms_xp
+
+    !> exp(-y) and E = 1 - exp(-y) = -expm1(-y), y >= 0, both to full relative precision
+    !! in hardware precision (2 exp(-y/2) sinh(y/2) where exp(-y) is close to 1), or
+    !! `rough`ly, in double precision.
+    elemental subroutine exp_and_decay_xp(y, e, one_minus_e, rough)
+        real(xp), intent(in) :: y
+        real(xp), intent(out) :: e, one_minus_e
+        logical, intent(in) :: rough
+        real(real64) :: y64, e64
+        if (rough) then
+            y64 = real(y, real64)
+            if (y64 < 0.5_real64) then
+                e64 = exp(-0.5_real64*y64)
+                one_minus_e = real(2.0_real64*e64*sinh(0.5_real64*y64), xp)
+                e = real(e64*e64, xp)
+            else
+                e64 = exp(-y64)
+                e = real(e64, xp)
+                one_minus_e = real(1.0_real64 - e64, xp)
+            end if
+        else if (y < 0.5_xp) then
+            e = exp(-0.5_xp*y)
+            one_minus_e = 2.0_xp*e*sinh(0.5_xp*y)
+            e = e*e
+        else
+            e = exp(-y)
+            one_minus_e = 1.0_xp - e
+        end if
+    end subroutine exp_and_decay_xp
+
+    !> exp(y) in hardware precision, or `rough`ly in double precision (0 below its range).
+    elemental function scaled_exp(y, rough) result(e)
+        real(xp), intent(in) :: y
+        logical, intent(in) :: rough
+        real(xp) :: e
+        if (rough) then
+            e = real(exp(real(max(y, -745.0_xp), real64)), xp)
+        else
+            e = exp(y)
+        end if
+    end function scaled_exp
+
+    !> Power law: [Lambda, E(Lambda), a, 0].
+    pure function power_apse_constants_xp(self, big_lambda) result(c)
+        class(power_law), intent(in) :: self
+        real(xp), intent(in) :: big_lambda
+        real(xp) :: c(4), a, e
+        a = real(self%n - 1.0_qp, xp)
+        c = [big_lambda, 0.0_xp, a, 0.0_xp]
+        call exp_and_decay_xp(a*big_lambda, e, c(2), .false.)
+    end function power_apse_constants_xp
+
+    !> Power law: q = exp(-(a+2) lambda) E(delta)/E(Lambda), 1 - q = (1 - exp(-2 lambda))
+    !! + exp(-2 lambda) E(lambda)/E(Lambda) and, since exp(-a lambda) E(delta) =
+    !! exp(-a lambda) - exp(-a Lambda), d(log q)/d Lambda = a E(lambda) exp(-a delta)/
+    !! (E(Lambda) E(delta)).
+    pure subroutine power_theta_terms_xp(self, c, lambda, delta, shift, rough, g, &
+                                         one_minus_q, log_slope)
+        class(power_law), intent(in) :: self
+        real(xp), intent(in) :: c(4), lambda, delta, shift
+        logical, intent(in) :: rough
+        real(xp), intent(out) :: g, one_minus_q, log_slope
+        real(xp) :: e2, om2, ea, e_lambda, ead, e_delta
+        call exp_and_decay_xp(2.0_xp*lambda, e2, om2, rough)
+        call exp_and_decay_xp(c(3)*lambda, ea, e_lambda, rough)
+        call exp_and_decay_xp(c(3)*delta, ead, e_delta, rough)
+        one_minus_q = om2 + e2*e_lambda/c(2)
+        g = sqrt(e_delta/(one_minus_q*c(2)))*scaled_exp(shift - 0.5_xp*(c(3) + 2.0_xp)*lambda, &
+                                                         rough)
+        log_slope = c(3)*e_lambda*ead/(c(2)*e_delta)
+    end subroutine power_theta_terms_xp
+
+    !> Logarithmic law: [Lambda, 0, 0, 0].
+    pure function logarithmic_apse_constants_xp(self, big_lambda) result(c)
+        class(logarithmic_law), intent(in) :: self
+        real(xp), intent(in) :: big_lambda
+        real(xp) :: c(4)
+        c = [big_lambda, 0.0_xp, 0.0_xp, 0.0_xp]
+    end function logarithmic_apse_constants_xp
+
+    !> Logarithmic law: q = exp(-2 lambda) delta/Lambda, 1 - q = (1 - exp(-2 lambda)) +
+    !! exp(-2 lambda) lambda/Lambda, d(log q)/d Lambda = lambda/(delta Lambda).
+    pure subroutine logarithmic_theta_terms_xp(self, c, lambda, delta, shift, rough, g, &
+                                               one_minus_q, log_slope)
+        class(logarithmic_law), intent(in) :: self
+        real(xp), intent(in) :: c(4), lambda, delta, shift
+        logical, intent(in) :: rough
+        real(xp), intent(out) :: g, one_minus_q, log_slope
+        real(xp) :: e2, om2
+        call exp_and_decay_xp(2.0_xp*lambda, e2, om2, rough)
+        one_minus_q = om2 + e2*lambda/c(1)
+        g = sqrt(delta/(one_minus_q*c(1)))*scaled_exp(shift - lambda, rough)
+        log_slope = lambda/(delta*c(1))
+    end subroutine logarithmic_theta_terms_xp
+
+    pure logical function harmonic_has_terms_xp(self)
+        class(harmonic_law), intent(in) :: self
+        harmonic_has_terms_xp = .true.
+    end function harmonic_has_terms_xp
+
+    !> Harmonic law: [Lambda, 1 - R^2, 0, 0].
+    pure function harmonic_apse_constants_xp(self, big_lambda) result(c)
+        class(harmonic_law), intent(in) :: self
+        real(xp), intent(in) :: big_lambda
+        real(xp) :: c(4), e
+        c = [big_lambda, 0.0_xp, 0.0_xp, 0.0_xp]
+        call exp_and_decay_xp(2.0_xp*big_lambda, e, c(2), .false.)
+    end function harmonic_apse_constants_xp
+
+    !> Harmonic law: q = exp(-2 lambda) (1 - x^2)/(1 - R^2), 1 - q = (1 - exp(-2 lambda))/
+    !! (1 - R^2), d(log q)/d Lambda = 2 x^2 (1 - exp(-2 lambda))/((1 - x^2)(1 - R^2)).
+    pure subroutine harmonic_theta_terms_xp(self, c, lambda, delta, shift, rough, g, &
+                                            one_minus_q, log_slope)
+        class(harmonic_law), intent(in) :: self
+        real(xp), intent(in) :: c(4), lambda, delta, shift
+        logical, intent(in) :: rough
+        real(xp), intent(out) :: g, one_minus_q, log_slope
+        real(xp) :: e2, om2, x2, p_x
+        call exp_and_decay_xp(2.0_xp*lambda, e2, om2, rough)
+        call exp_and_decay_xp(2.0_xp*delta, x2, p_x, rough)
+        one_minus_q = om2/c(2)
+        g = sqrt(p_x/om2)*scaled_exp(shift - lambda, rough)
+        log_slope = 2.0_xp*x2*om2/(p_x*c(2))
+    end subroutine harmonic_theta_terms_xp
+
+    !> Harmonic law: t0 = acos(x) = 2 asin(sqrt((1 - x)/2)).
+    pure subroutine harmonic_closed_fall(self, delta_lo, delta_hi, t, found)
+        class(harmonic_law), intent(in) :: self
+        real(qp), intent(in) :: delta_lo, delta_hi
+        real(qp), intent(out) :: t
+        logical, intent(out) :: found
+        found = .true.
+        t = 2.0_qp*(asin(sqrt(-0.5_qp*expm1(-delta_hi))) - asin(sqrt(-0.5_qp*expm1(-delta_lo))))
+    end subroutine harmonic_closed_fall
 
 end module brachistochrone_speed_laws
