@@ -35,7 +35,8 @@ module brachistochrone
     use brachistochrone_central_force_field, only: central_force_field, new_power_field, &
             new_logarithmic_field
     use brachistochrone_harmonic_field, only: harmonic_field
-    use brachistochrone_repulsive_field, only: repulsive_field, least_time_repulsive
+    use brachistochrone_repulsive_field, only: repulsive_field, new_repulsive_field, &
+            least_time_repulsive
     use brachistochrone_uniform_field, only: uniform_field
     use brachistochrone_inverse_square, only: inverse_square_model, new_inverse_square_model
     use brachistochrone_two_point, only: solve_endpoint, solve_endpoint_secant
@@ -51,7 +52,7 @@ module brachistochrone
     use brachistochrone_repulsive, only: repulsive_curve, repulsive_solution, &
             curve_from_k2, curve_from_gap, curve_from_apse, curve_from_apse_gap, &
             repulsive_values, critical_values, repulsive_radial_time, solve_repulsive, &
-            critical_k2
+            critical_k2, panel_rules, new_panel_rules
     use brachistochrone_uniform_gravity, only: uniform_brachistochrone, cycloid_point, &
             isochrone_time, isochrone_time_quadrature, joined_arches_period, &
             joined_arches_period_quadrature, complete_elliptic_k, pendulum_period, &
@@ -75,7 +76,7 @@ module brachistochrone
     public :: brachistochrone_field, new_field, field_names, endpoint_solution
     public :: inverse_square_field, new_inverse_square_field, central_force_field, &
               new_power_field, new_logarithmic_field, harmonic_field, repulsive_field, &
-              least_time_repulsive, uniform_field
+              new_repulsive_field, least_time_repulsive, uniform_field
     ! closed forms
     public :: fall_to_centre_time, apse_angle_limit, inaccessible_angle, &
               radial_fall_time, kappa_bound, radial_time, kappa_time
@@ -94,7 +95,7 @@ module brachistochrone
     ! repulsive (Tee sec. 6)
     public :: repulsive_curve, repulsive_solution, curve_from_k2, curve_from_gap, &
               curve_from_apse, curve_from_apse_gap, repulsive_values, critical_values, &
-              repulsive_radial_time, solve_repulsive, critical_k2
+              repulsive_radial_time, solve_repulsive, critical_k2, panel_rules, new_panel_rules
     ! uniform gravity (Tee sec. 1)
     public :: uniform_brachistochrone, cycloid_point, isochrone_time, &
               isochrone_time_quadrature, joined_arches_period, joined_arches_period_quadrature, &

@@ -32,14 +32,10 @@ module test_field_references
 
     integer, parameter :: class_length = 24
 
-    !> Rows of the repulsive table below 32 digits on main at 9c4f77a (issue 11, open),
-    !! printed but left out of the check: next to the apse, s and t lose about
-    !! log10(sqrt(rho/(R - rho))) digits (rows 21, 23, 24, 25, 27, 28: R - rho = 1e-17 ..
-    !! 1e-30, 19-26 digits); rho = 1 + 2^-112 with R - 1 = 1e-33 (row 37: 12.6 digits);
-    !! a complete arch with R - 1 = 1e-40, below binary128's spacing at 1 (row 42: the
-    !! curve R - 1 = 2^-112 is returned, s and t wrong). A row that reaches 32 digits is
-    !! announced so that it can be taken off this list.
-    integer, parameter :: repulsive_open(8) = [21, 23, 24, 25, 27, 28, 37, 42]
+    !> Rows of the repulsive table open (none since branch i11-repulsive: next to the
+    !! apse, rows 21-28, the solver's unknown is sqrt(R - rho); rows 37 and 42, rho and R
+    !! next to 1, keep their digits; all were below 32 digits on main at 9c4f77a).
+    integer, parameter :: repulsive_open(0) = [integer ::]
     !> Rows of the harmonic and inverse-square tables open on main (none known).
     integer, parameter :: harmonic_open(0) = [integer ::], inverse_square_open(0) = [integer ::]
     !> Rows of the uniform table open on main (none: row 15, B within 2e-34 of the lowest

@@ -13,7 +13,8 @@ module test_repulsive
     use brachistochrone_repulsive, only: repulsive_curve, repulsive_solution, curve_from_k2, &
                          curve_from_gap, curve_from_apse, curve_from_apse_gap, &
                          repulsive_values, critical_values, repulsive_radial_time, &
-                         solve_repulsive, critical_k2
+                         solve_repulsive, critical_k2, panel_values, panel_rules, &
+                         new_panel_rules
     use brachistochrone_arches, only: arch_unbounded, arch_first, arch_second
     use testing, only: check, check_close, check_digits, section, digits_of_agreement
     implicit none
@@ -30,9 +31,11 @@ contains
         call radial_closed_form()
         call critical_closed_form()
         call mpmath_reference()
+        call fixed_panels()
         call branch_structure()
         call two_point()
         call two_point_mpmath()
+        call next_to_the_apse()
         call winding_asymptotics()
         call constructors()
         call cycloid_limit()
@@ -215,6 +218,62 @@ contains
         write (output_unit, '(a,f6.2)') '   fewest digits against mpmath: ', worst_reference
     end subroutine mpmath_reference
 
+    !> The solver's fixed Gauss panels (rules chosen from the located singularities)
+    !! against the adaptive integrals (themselves checked against mpmath above): every
+    !! kind of piece, unbounded g = 3 .. 3 2^-160, bounded 3 - 2R = 2^-160 .. 1, both
+    !! half-arches, radii from 1 + 1e-30 to 100 (3/2 exactly, where the peak sits at the
+    !! endpoint); binary128 to a few eps, the hardware precision angle to about 1e-18.
+    !! A curve too close to the critical one for `max_panels` must say so (the solver
+    !! then integrates adaptively), never return a wrong value: checked down to g and
+    !! 3 - 2R of 2^-160; it must not happen above 1e-36.
+    subroutine fixed_panels()
+        real(qp), parameter :: radii(10) = [1.0_qp + 1.0e-30_qp, 1.001_qp, 1.1_qp, 1.25_qp, &
+                                           1.4_qp, 1.499_qp, 1.5_qp, 2.0_qp, 5.0_qp, 100.0_qp]
+        type(panel_rules) :: rules
+        type(repulsive_curve) :: curve
+        real(qp) :: a(3), b(3), x(3), r, worst(3), worst_xp, smallest_failed
+        integer :: i, j, kind, second, stat(3)
+        call section('repulsive: fixed Gauss panels against the adaptive integrals')
+        rules = new_panel_rules()
+        worst = 0.0_qp
+        worst_xp = 0.0_qp
+        smallest_failed = 0.0_qp
+        do kind = 1, 2
+            do j = 0, 160, 4
+                if (kind == 1) then
+                    call curve_from_gap(3.0_qp*2.0_qp**(-j), curve, stat(1))
+                else
+                    call curve_from_apse_gap(0.999_qp*2.0_qp**(-j), curve, stat(1))
+                end if
+                do i = 1, size(radii)
+                    do second = 0, merge(1, 0, curve%bounded)
+                        r = radii(i)
+                        if (curve%bounded) r = min(r, curve%apse)
+                        call repulsive_values(curve, r, second == 1, a(1), a(2), a(3), &
+                                              stat(1))
+                        call panel_values(curve, r, second == 1, rules, .false., b, stat(2))
+                        call panel_values(curve, r, second == 1, rules, .true., x, stat(3))
+                        if (stat(2) /= status_ok .or. stat(3) /= status_ok) then
+                            smallest_failed = max(smallest_failed, 2.0_qp**(-j))
+                            cycle
+                        end if
+                        worst = max(worst, abs(a - b)/max(abs(a), tiny(1.0_qp))/eps_qp)
+                        worst_xp = max(worst_xp, abs(a(1) - x(1))/max(abs(a(1)), tiny(1.0_qp)))
+                    end do
+                end do
+            end do
+        end do
+        write (output_unit, '(a,3f7.2)') '   binary128 panels vs adaptive, worst theta, s, t '// &
+            'in eps: ', worst
+        write (output_unit, '(a,es10.2)') '   hardware-precision angle vs adaptive, worst '// &
+            'relative: ', worst_xp
+        write (output_unit, '(a,es10.2)') '   largest g or 3 - 2R (/3) the panels decline: ', &
+            smallest_failed
+        call check(smallest_failed < 1.0e-36_qp, 'fixed panels: evaluated down to 1e-36')
+        call check(all(worst <= 8.0_qp), 'fixed panels = adaptive to 8 eps')
+        call check(worst_xp <= 1.0e-17_qp, 'hardware-precision panels to 1e-17')
+    end subroutine fixed_panels
+
     !> theta(rho) along the branch of curves through rho is increasing: unbounded (g from 3
     !! down to 0), then for rho < 3/2 first half-arches (R from 3/2 down to rho) and second
     !! ones (R from rho back up to 3/2); t increases with it.
@@ -270,7 +329,7 @@ contains
                                            5.0_qp]
         real(qp), parameter :: psis(4) = [0.0_qp, 0.4_qp, 1.0_qp, 3.0_qp]
         type(repulsive_solution), allocatable :: sol(:)
-        real(qp) :: worst, residual, apse(3)
+        real(qp) :: worst, residual, apse(3), angle, length, time
         type(repulsive_curve) :: curve
         integer :: i, j, k, best, status, arches(0:6)
         logical :: ordered, all_ok
@@ -286,7 +345,10 @@ contains
                 ordered = .true.
                 do k = 1, size(sol)
                     if (sol(k)%status /= status_ok) all_ok = .false.
-                    residual = abs(sol(k)%angle - sol(k)%target)/max(sol(k)%target, 1.0_qp)
+                    ! theta(rho) recomputed on the solved curve by the adaptive integrals
+                    call repulsive_values(sol(k)%curve, rhos(i), sol(k)%arch == arch_second, &
+                                          angle, length, time, status)
+                    residual = abs(angle - sol(k)%target)/max(sol(k)%target, 1.0_qp)
                     worst = max(worst, residual/eps_qp)
                     arches(sol(k)%arch) = arches(sol(k)%arch) + 1
                     if (k > 1) then
@@ -359,6 +421,41 @@ contains
         call check_digits(sol(1)%time, 2.998405500762512523847012785093331940808_qp, &
                           33.0_qp, 'rho = 1, psi = 1 (complete arch): t')
     end subroutine two_point_mpmath
+
+    !> B next to the apse, R - rho = 2^-60 and 2^-100 on both half-arches: the curve with
+    !! apse R = rho + 2^-k is exact in binary128 and its angle, s and t at rho come from
+    !! the adaptive integrals (R - rho formed exactly there); solving for that angle must
+    !! give back R and t (t is well conditioned in psi; the solver's unknown there is
+    !! sqrt(R - rho), which keeps it exact).
+    subroutine next_to_the_apse()
+        type(repulsive_curve) :: curve
+        type(repulsive_solution), allocatable :: sol(:)
+        real(qp), parameter :: rhos(2) = [1.25_qp, 1.4375_qp]
+        real(qp) :: v(3), worst_r, worst_t, rho
+        integer :: k, i, second, best, status
+        call section('repulsive: two-point problem next to the apse (R - rho = 2^-60, 2^-100)')
+        worst_r = 99.0_qp
+        worst_t = 99.0_qp
+        do i = 1, 2
+            rho = rhos(i)
+            do k = 60, 100, 40
+                call curve_from_apse(rho + 2.0_qp**(-k), curve, status)
+                do second = 0, 1
+                    call repulsive_values(curve, rho, second == 1, v(1), v(2), v(3), status)
+                    call solve_repulsive(rho, v(1), 0, sol, best, status, mirror=.false.)
+                    call check(status == status_ok .and. sol(1)%status == status_ok .and. &
+                               sol(1)%arch == merge(arch_second, arch_first, second == 1), &
+                               'next to the apse: solved on the right half-arch')
+                    worst_r = min(worst_r, digits_of_agreement(sol(1)%curve%apse - rho, &
+                                                               2.0_qp**(-k)))
+                    worst_t = min(worst_t, digits_of_agreement(sol(1)%time, v(3)))
+                end do
+            end do
+        end do
+        write (output_unit, '(a,2f7.2)') '   fewest digits of R - rho, t: ', worst_r, worst_t
+        call check(worst_r >= 15.0_qp, 'next to the apse: R - rho recovered (conditioning: 19)')
+        call check(worst_t >= 32.0_qp, 'next to the apse: t to 32 digits')
+    end subroutine next_to_the_apse
 
     !> Each extra turn costs, asymptotically, the time of one turn round the circle
     !! r = 3/2 (where the angular speed v/r is largest): 2 pi r/v = 2 pi sqrt(27/8), and

@@ -9,7 +9,7 @@ module brachistochrone_fields
     use brachistochrone_central_force_field, only: central_force_field, new_power_field, &
             new_logarithmic_field
     use brachistochrone_harmonic_field, only: harmonic_field
-    use brachistochrone_repulsive_field, only: repulsive_field
+    use brachistochrone_repulsive_field, only: new_repulsive_field
     use brachistochrone_uniform_field, only: uniform_field
     implicit none
     private
@@ -44,7 +44,7 @@ contains
         case ('harmonic')
             allocate (harmonic_field :: field)
         case ('repulsive')
-            allocate (repulsive_field :: field)
+            allocate (field, source=new_repulsive_field())
         case ('uniform')
             allocate (uniform_field :: field)
         case default

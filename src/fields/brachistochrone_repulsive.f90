@@ -60,6 +60,25 @@
 !! extra turn costs asymptotically 2 pi sqrt(27/8) = 11.5429... in time, and g shrinks
 !! by exp(-2 pi sqrt3) per turn;
 !! both limits are approached like O(g) (measured in test_repulsive).
+!!
+!! **The solver** (`solve_repulsive`; the unknown lambda = log g or log(3 - 2R) of each
+!! branch). The pieces above are integrated on fixed Gauss-Legendre panels chosen once
+!! per curve from the located singularities (`brachistochrone_repulsive_panels`; the sinh
+!! and nu maps in rational form, so a node needs square roots only). The root is found
+!! in hardware precision (x87 extended, about 19 digits: the bracket walked down from the
+!! branch's top, then regula falsi), then one binary128 evaluation of theta, s, t at that
+!! root x0 and a Newton step on the slopes d theta/d lambda, d s/d lambda obtained by
+!! the complex step in hardware precision (curve, pieces' ends and panels all carried
+!! through x + i h dx/dlambda); t by Hamilton-Jacobi, dt/d theta = K at fixed rho. The
+!! step is accepted when its error, 1e-17 |dx| + curvature dx^2 (the curvature and a
+!! cross-check of the slope from central differences), is below a rounding of lambda;
+!! else a second binary128 evaluation and the secant through both (certified by the
+!! residual's decrease), else the adaptive solver (`solve_branch`), which also takes
+!! the curves whose panels decline (g or 3 - 2R below about 1e-41). Next to the apse
+!! (R - rho below 1e-4 of 3 - 2 rho and rho - 1) the unknown is u = sqrt(R - rho)
+!! instead: theta is linear in u there (theta = Theta(rho, rho) -+ 2 A u, A =
+!! sqrt((rho - 1)/(rho (3 - 2 rho)))), and the curve keeps R - rho = u^2 exactly
+!! (`r_gap`), which lambda would form by cancellation.
 module brachistochrone_repulsive
     use brachistochrone_kinds, only: qp, pi, eps_qp
     use brachistochrone_status, only: status_ok, status_psi_out_of_range, &
@@ -70,8 +89,13 @@ module brachistochrone_repulsive
             gauss_legendre, integrate_adaptive
     use brachistochrone_roots, only: root_function, bracketed_secant
     use brachistochrone_quad_math, only: expm1
+    use brachistochrone_fast_math, only: inverse_sqrt
     use brachistochrone_solution, only: endpoint_status, region_outside
     use brachistochrone_arches, only: arch_unbounded, arch_first, arch_second
+    use brachistochrone_repulsive_panels, only: panel_rules, new_panel_rules, panel_piece, &
+            panel_curve, panel_integrals, panel_angle_xp, integrands, panel_slopes_xp, xp, &
+            max_pieces, piece_start, &
+            piece_below, piece_above, piece_far, piece_arch, piece_apse, piece_arch_start
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan, ieee_value, &
                                              ieee_positive_inf
     implicit none
@@ -82,6 +106,7 @@ module brachistochrone_repulsive
     public :: repulsive_values, critical_values, repulsive_radial_time
     public :: solve_repulsive
     public :: critical_k2, critical_floor
+    public :: panel_values, panel_rules, new_panel_rules
 
     !> K^2 of the critical brachistochrone.
     real(qp), parameter :: critical_k2 = 27.0_qp/8.0_qp
@@ -95,13 +120,20 @@ module brachistochrone_repulsive
     !> Breakpoints of the unbounded integrals: start piece up to x = 5/4, far piece beyond 4.
     real(qp), parameter :: start_end = 1.25_qp, far_start = 4.0_qp
     integer, parameter :: max_steps = 300
-    !> The sinh maps reach `stretch` widths from the near-double root (xi up to
-    !! asinh(64) ~ 4.85, so a rounded xi costs a few eps, not xi*eps ~ 70 eps).
-    real(qp), parameter :: stretch = 64.0_qp, xi_stretch = asinh(stretch)
+    !> The sinh maps reach `stretch` widths from the near-double root; they are taken in
+    !! t = tanh(xi/2), where 1 - t (rounded absolutely) stays above 1/9, so that a node
+    !! costs a few eps at most
+    real(qp), parameter :: stretch = 8.0_qp
+    !> sin(nu/2) where the apse's sinh map hands over to the nu map (the map's own
+    !! singularity is at sin(nu/2) = 1: at 1/2 its rule needs a third fewer nodes)
+    real(qp), parameter :: apse_split = 0.5_qp
     integer, parameter :: want_angle = 1, want_length = 2, want_time = 3
-    integer, parameter :: piece_start = 1, piece_below = 2, piece_above = 3, &
-                          piece_far = 4, piece_arch = 5, piece_apse = 6, &
-                          piece_arch_start = 7
+    !> The radius argument that means the apse of a bounded curve (R itself may round to
+    !! 1 when R - 1 is below binary128's spacing there)
+    real(qp), parameter :: the_apse = -1.0_qp
+    !> Added to arch_first, arch_second: the solver's unknown is u = sqrt(R - rho) (next
+    !! to the apse, where R - rho would be formed by cancellation from lambda)
+    integer, parameter :: near_apse = 100
 
     !> One brachistochrone from A, by its parameter. Build it with a `curve_from_*`.
     type :: repulsive_curve
@@ -116,6 +148,10 @@ module brachistochrone_repulsive
         real(qp) :: apse_m1 = 0.0_qp   !! R - 1 (bounded)
         real(qp) :: apse_gap = 0.0_qp  !! 3 - 2R (bounded)
         real(qp) :: split = 0.0_qp     !! d = r2 - R (bounded)
+        !> R - r for the radius r = r_gap_radius when the curve was made from it (exact;
+        !! -1: none, R - r is then formed from 3 - 2R or R - 1)
+        real(qp) :: r_gap = -1.0_qp
+        real(qp) :: r_gap_radius = 0.0_qp  !! the radius r of r_gap
     end type repulsive_curve
 
     !> One brachistochrone of the two-point problem.
@@ -285,106 +321,17 @@ contains
         curve%k = sqrt(curve%k2)
     end subroutine set_bounded
 
+    !> The integrand of one piece (`brachistochrone_repulsive_panels%integrands`).
     pure function integrand_evaluate(self, x) result(y)
         class(repulsive_integrand), intent(in) :: self
         real(qp), intent(in) :: x          ! the piece's variable
         real(qp) :: y
-        real(qp) :: point, xm1, q, jac, h, sn, cs, rmx, w
-        select case (self%piece)
-        case (piece_start)
-            ! point = 1 + L sigma^2, sigma = x: the 1/sqrt(x - 1) of t is cancelled
-            xm1 = self%span*x*x
-            point = 1.0_qp + xm1
-            q = (point + self%p)*((point - self%a)**2 + self%beta)
-            select case (self%kind)
-            case (want_angle)
-                y = self%k*sqrt2*2.0_qp*self%span*sqrt(self%span)*x*x/(point*sqrt(q))
-            case (want_length)
-                y = 2.0_qp*self%span*x*point*sqrt(point)/sqrt(q)
-            case default
-                y = sqrt2*sqrt(self%span)*point**2/sqrt(q)
-            end select
-        case (piece_below, piece_above)
-            ! point = a -+ h; stretched (beta > 0, within `stretch` widths of the peak):
-            ! h = sqrt(beta) sinh(x), the peak cancelled exactly; otherwise h = x
-            if (self%stretched) then
-                h = sqrt(self%beta)*sinh(x)
-                jac = 1.0_qp
-            else
-                h = x
-                jac = 1.0_qp/sqrt(h*h + self%beta)
-            end if
-            if (self%piece == piece_below) then
-                point = self%a - h
-                xm1 = (self%a - 1.0_qp) - h
-            else
-                point = self%a + h
-                xm1 = (self%a - 1.0_qp) + h
-            end if
-            ! jac = dx/sqrt((x - a)^2 + beta) per unit of the variable
-            w = point + self%p
-            select case (self%kind)
-            case (want_angle)
-                y = self%k*sqrt2*sqrt(xm1)/(point*sqrt(w))*jac
-            case (want_length)
-                y = point*sqrt(point)/sqrt(w)*jac
-            case default
-                y = point**2/(sqrt2*sqrt(xm1)*sqrt(w))*jac
-            end select
-        case (piece_far)
-            ! point = 4/z, z = x in (0, 1]: theta's integrand tends to K sqrt2/4 at z = 0
-            point = far_start/x
-            xm1 = point - 1.0_qp
-            q = (point + self%p)*((point - self%a)**2 + self%beta)
-            jac = far_start/(x*x)
-            select case (self%kind)
-            case (want_angle)
-                y = self%k*sqrt2*sqrt(xm1)/(point*sqrt(q))*jac
-            case (want_length)
-                y = point*sqrt(point)/sqrt(q)*jac
-            case default
-                y = point**2/(sqrt2*sqrt(xm1)*sqrt(q))*jac
-            end select
-        case default
-            ! bounded: R - x = (R-1) sn^2, x - 1 = (R-1) cs^2 (sn = sin(nu/2) or, near the
-            ! apse, sqrt(d/(R-1)) sinh(xi)); w = (r2 - x)(x + P) without its r2 - x factor
-            ! when that is cancelled against d nu/d xi (piece_apse)
-            if (self%piece == piece_arch) then
-                sn = sin(0.5_qp*x)
-                cs = cos(0.5_qp*x)
-                rmx = self%rm1*sn*sn
-                xm1 = self%rm1*cs*cs
-                point = 1.0_qp + xm1
-                w = (self%d + rmx)*(point + self%p)
-                jac = 1.0_qp
-            else if (self%piece == piece_arch_start) then
-                ! the same in mu = pi - nu (next to the start, where cos(nu/2) would lose
-                ! its relative accuracy): sin(nu/2) = cos(mu/2), cos(nu/2) = sin(mu/2)
-                sn = cos(0.5_qp*x)
-                cs = sin(0.5_qp*x)
-                rmx = self%rm1*sn*sn
-                xm1 = self%rm1*cs*cs
-                point = 1.0_qp + xm1
-                w = (self%d + rmx)*(point + self%p)
-                jac = 1.0_qp
-            else
-                sn = sqrt(self%d/self%rm1)*sinh(x)
-                cs = sqrt((1.0_qp - sn)*(1.0_qp + sn))
-                rmx = self%rm1*sn*sn
-                xm1 = self%rm1*cs*cs
-                point = 1.0_qp + xm1
-                w = point + self%p
-                jac = 2.0_qp/(sqrt(self%rm1)*cs)
-            end if
-            select case (self%kind)
-            case (want_angle)
-                y = self%k*sqrt2*xm1/(point*sqrt(w))*jac
-            case (want_length)
-                y = point*sqrt(point)*sqrt(xm1)/sqrt(w)*jac
-            case default
-                y = point**2/(sqrt2*sqrt(w))*jac
-            end select
-        end select
+        real(qp) :: values(3)
+        call integrands(panel_curve(bounded=self%piece >= piece_arch, k=self%k, p=self%p, &
+                                    a=self%a, beta=self%beta, span=self%span, rm1=self%rm1, &
+                                    d=self%d), &
+                        panel_piece(kind=self%piece, stretched=self%stretched), x, values)
+        y = values(self%kind)
     end function integrand_evaluate
 
     pure subroutine add_piece(f, piece, lower, upper, rule, total, status)
@@ -404,7 +351,7 @@ contains
         call keep_first(status, stat)
     end subroutine add_piece
 
-    !> One integral (kind) from radius 1 to r along the first (half-)arch.
+    !> One integral (kind) from radius 1 to r along the first (half-)arch, adaptively.
     pure subroutine first_integral(curve, kind, r, rule, value, status)
         type(repulsive_curve), intent(in) :: curve
         integer, intent(in) :: kind
@@ -413,90 +360,140 @@ contains
         real(qp), intent(out) :: value
         integer, intent(out) :: status
         type(repulsive_integrand) :: f
-        real(qp) :: top, r_gap, c, xi_mid, nu_mid, nu_r
+        type(panel_piece) :: pieces(max_pieces)
+        integer :: n, i
         value = 0.0_qp
         status = status_ok
-        if (r == 1.0_qp) return
+        call plan_pieces(curve, r, pieces, n, f%span)
         f%kind = kind
         f%k = curve%k
         f%p = curve%p
+        f%rm1 = curve%apse_m1
+        f%d = curve%split
+        f%a = curve%centre
+        f%beta = curve%width2
+        do i = 1, n
+            f%stretched = pieces(i)%stretched
+            call add_piece(f, pieces(i)%kind, pieces(i)%lower, pieces(i)%upper, rule, value, &
+                           status)
+        end do
+    end subroutine first_integral
+
+    !> The pieces (variable and interval) of the integrals from radius 1 to r along the
+    !! first (half-)arch, and the start piece's span (unbounded). No piece when r = 1.
+    pure subroutine plan_pieces(curve, r, pieces, n, span)
+        type(repulsive_curve), intent(in) :: curve
+        real(qp), intent(in) :: r
+        type(panel_piece), intent(out) :: pieces(max_pieces)
+        integer, intent(out) :: n
+        real(qp), intent(out) :: span
+        real(qp) :: r_gap, c, s_mid, sin_mid, v_mid, v_r, big
+        n = 0
+        span = 0.0_qp
+        if (r == 1.0_qp) return
         if (curve%bounded) then
-            f%rm1 = curve%apse_m1
-            f%d = curve%split
             ! R - r from 3 - 2r (exact near 3/2) and the stored 3 - 2R: R itself may not
             ! be representable next to 3/2 (R = 3/2 - d/2 with d below eps)
-            if (r >= curve%apse) then
+            if (r == the_apse .or. r >= curve%apse) then
                 r_gap = 0.0_qp    ! the apse (R itself may be rounded: r = R is the apse)
+            else if (curve%r_gap >= 0.0_qp .and. r == curve%r_gap_radius) then
+                r_gap = curve%r_gap
             else if (r > start_end) then
                 r_gap = 0.5_qp*((3.0_qp - 2.0_qp*r) - curve%apse_gap)
             else
                 r_gap = curve%apse_m1 - (r - 1.0_qp)
             end if
             r_gap = max(r_gap, 0.0_qp)
-            ! nu from nu_r to pi (x from r down to 1); within `stretch` widths sqrt(d) of
-            ! the apse (and nu < pi/2) in xi, sin(nu/2) = c sinh(xi), c = sqrt(d/(R-1)),
-            ! split at a float xi_mid so that both pieces meet at nu_mid to a few ulps
-            c = sqrt(f%d/f%rm1)
-            xi_mid = min(xi_stretch, asinh(sqrt(0.5_qp)/c))
-            nu_mid = 2.0_qp*asin(min(c*sinh(xi_mid), 1.0_qp))
-            nu_r = 2.0_qp*atan2(sqrt(r_gap), sqrt(r - 1.0_qp))
-            if (nu_r < nu_mid) then
-                call add_piece(f, piece_apse, asinh(sqrt(r_gap/f%d)), xi_mid, rule, value, &
-                               status)
-                call add_piece(f, piece_arch, nu_mid, pi, rule, value, status)
-            else if (nu_r > 0.5_qp*pi) then
-                ! r next to the start (r - 1 < R - r): in mu = pi - nu from 0, so that the
-                ! short interval keeps its relative accuracy as r -> 1
-                call add_piece(f, piece_arch_start, 0.0_qp, &
-                               2.0_qp*atan2(sqrt(r - 1.0_qp), sqrt(r_gap)), rule, value, status)
+            ! nu from nu_r to pi (x from r down to 1), in v = tan(nu/4) from v_r to 1;
+            ! within `stretch` widths sqrt(d) of the apse (and nu < pi/3) the sinh map
+            ! sin(nu/2) = c sinh(xi), c = sqrt(d/(R-1)), in w = tanh(xi/2), split where
+            ! sinh(xi) = s_mid, so that both pieces meet at the same point to a few ulps
+            c = root(curve%split/curve%apse_m1)
+            s_mid = min(stretch, apse_split/c)
+            sin_mid = min(c*s_mid, 1.0_qp)
+            v_mid = sin_mid/(1.0_qp + root((1.0_qp - sin_mid)*(1.0_qp + sin_mid)))
+            ! tan(nu_r/4) = tan(phi/2), phi = atan2(sqrt(r_gap), sqrt(r - 1))
+            big = 0.0_qp
+            v_r = 0.0_qp
+            if (r_gap > 0.0_qp) then
+                big = root(r_gap + (r - 1.0_qp))
+                v_r = root(r_gap)/(root(r - 1.0_qp) + big)
+            end if
+            if (v_r < v_mid) then
+                call add(pieces, n, piece_apse, .false., half_tanh(root(r_gap/curve%split)), &
+                         half_tanh(s_mid))
+                call add(pieces, n, piece_arch, .false., v_mid, 1.0_qp)
+            else if (r - 1.0_qp < r_gap) then
+                ! r next to the start: in mu = pi - nu from 0, so that the short interval
+                ! keeps its relative accuracy as r -> 1
+                call add(pieces, n, piece_arch_start, .false., 0.0_qp, &
+                         root(r - 1.0_qp)/(root(r_gap) + big))
             else
-                call add_piece(f, piece_arch, nu_r, pi, rule, value, status)
+                call add(pieces, n, piece_arch, .false., v_r, 1.0_qp)
             end if
             return
         end if
-        f%a = curve%centre
-        f%beta = curve%width2
-        top = min(r, start_end)
-        f%span = top - 1.0_qp
-        call add_piece(f, piece_start, 0.0_qp, 1.0_qp, rule, value, status)
+        span = min(r, start_end) - 1.0_qp
+        call add(pieces, n, piece_start, .false., 0.0_qp, 1.0_qp)
         if (r <= start_end) return
-        if (f%a > start_end) then
-            call peak_pieces(f, piece_below, f%a - min(r, f%a), f%a - start_end, value, status)
-        end if
-        if (r > f%a) then
-            call peak_pieces(f, piece_above, max(f%a, start_end) - f%a, &
-                             min(r, far_start) - f%a, value, status)
-        end if
-        if (r > far_start) then
-            call add_piece(f, piece_far, far_start/r, 1.0_qp, rule, value, status)
-        end if
+        ! distances to the peak a = 3/2 - g/2 formed from 3/2 - r (exact near 3/2) and g,
+        ! never from a rounded a: the peak's height 1/sqrt(beta) would amplify that
+        associate (g2 => 0.5_qp*curve%gap)
+            if (g2 < 0.25_qp) call peak_pieces(pieces, n, piece_below, &
+                                               max((1.5_qp - r) - g2, 0.0_qp), 0.25_qp - g2)
+            if ((1.5_qp - r) - g2 < 0.0_qp) call peak_pieces(pieces, n, piece_above, &
+                    max(g2 - 0.25_qp, 0.0_qp), (min(r, far_start) - 1.5_qp) + g2)
+        end associate
+        if (r > far_start) call add(pieces, n, piece_far, .false., far_start/r, 1.0_qp)
     contains
-        !> h from h_lo to h_hi (distance to the peak at a): in sinh variable up to
-        !! `stretch` widths sqrt(beta) (the split point a float xi, so both pieces meet
-        !! at the same h to a few ulps), plain h beyond.
-        pure subroutine peak_pieces(g, piece, h_lo, h_hi, total, stat)
-            type(repulsive_integrand), intent(inout) :: g
-            integer, intent(in) :: piece
+        !> h from h_lo to h_hi (distance to the peak at a): in the sinh map
+        !! h = sqrt(beta) sinh(xi), in t = tanh(xi/2), up to `stretch` widths
+        !! sqrt(beta), plain h beyond.
+        pure subroutine peak_pieces(pieces, n, kind, h_lo, h_hi)
+            type(panel_piece), intent(inout) :: pieces(:)
+            integer, intent(inout) :: n
+            integer, intent(in) :: kind
             real(qp), intent(in) :: h_lo, h_hi
-            real(qp), intent(inout) :: total
-            integer, intent(inout) :: stat
             real(qp) :: width, h_mid
             if (.not. (h_hi > h_lo)) return
-            width = sqrt(g%beta)
-            if (g%beta > 0.0_qp .and. h_lo < stretch*width) then
-                h_mid = width*sinh(xi_stretch)
-                g%stretched = .true.
-                call add_piece(g, piece, asinh(h_lo/width), &
-                               merge(xi_stretch, asinh(h_hi/width), h_hi > h_mid), &
-                               rule, total, stat)
-                g%stretched = .false.
-                if (h_hi > h_mid) call add_piece(g, piece, h_mid, h_hi, rule, total, stat)
+            width = root(curve%width2)
+            if (curve%width2 > 0.0_qp .and. h_lo < stretch*width) then
+                h_mid = width*stretch
+                call add(pieces, n, kind, .true., half_tanh(h_lo/width), &
+                         half_tanh(min(h_hi/width, stretch)))
+                if (h_hi > h_mid) call add(pieces, n, kind, .false., h_mid, h_hi)
             else
-                g%stretched = .false.
-                call add_piece(g, piece, h_lo, h_hi, rule, total, stat)
+                call add(pieces, n, kind, .false., h_lo, h_hi)
             end if
         end subroutine peak_pieces
-    end subroutine first_integral
+    end subroutine plan_pieces
+
+    !> tanh(asinh(s)/2) = s/(1 + sqrt(1 + s^2)), s >= 0.
+    elemental function half_tanh(s) result(t)
+        real(qp), intent(in) :: s
+        real(qp) :: t
+        t = s/(1.0_qp + root(1.0_qp + s*s))
+    end function half_tanh
+
+    !> sqrt(x) for x >= 0 within 2 ulp, from `inverse_sqrt` (a third of sqrt's cost): for
+    !! the pieces' ends, where it is formed many times per endpoint.
+    elemental function root(x) result(y)
+        real(qp), intent(in) :: x
+        real(qp) :: y
+        y = 0.0_qp
+        if (x > 0.0_qp) y = x*inverse_sqrt(x)
+    end function root
+
+    pure subroutine add(pieces, n, kind, stretched, lower, upper)
+        type(panel_piece), intent(inout) :: pieces(:)
+        integer, intent(inout) :: n
+        integer, intent(in) :: kind
+        logical, intent(in) :: stretched
+        real(qp), intent(in) :: lower, upper
+        if (.not. (upper > lower)) return
+        n = n + 1
+        pieces(n) = panel_piece(kind=kind, stretched=stretched, lower=lower, upper=upper)
+    end subroutine add
 
     !> theta, s, t at radius r along `curve` from A. Unbounded curves (g >= 0): any
     !! 1 <= r <= +Infinity (theta converges; s and t are then +Infinity); the critical
@@ -536,15 +533,55 @@ contains
         end if
         stat(4:6) = status_ok
         if (second) then
-            call first_integral(curve, want_angle, curve%apse, rule, apse(1), stat(4))
-            call first_integral(curve, want_length, curve%apse, rule, apse(2), stat(5))
-            call first_integral(curve, want_time, curve%apse, rule, apse(3), stat(6))
+            call first_integral(curve, want_angle, the_apse, rule, apse(1), stat(4))
+            call first_integral(curve, want_length, the_apse, rule, apse(2), stat(5))
+            call first_integral(curve, want_time, the_apse, rule, apse(3), stat(6))
             angle = 2.0_qp*apse(1) - angle
             length = 2.0_qp*apse(2) - length
             time = 2.0_qp*apse(3) - time
         end if
         status = first_failure(stat)
     end subroutine repulsive_values
+
+    !> theta, s, t at radius r as `repulsive_values` (same pieces), on fixed Gauss panels
+    !! chosen from the located singularities (`brachistochrone_repulsive_panels`); the
+    !! angle alone (`angle_only`) in hardware precision, about 19 digits. status:
+    !! status_ok or status_no_convergence (too many panels: integrate adaptively).
+    pure subroutine panel_values(curve, r, second, rules, angle_only, values, status)
+        type(repulsive_curve), intent(in) :: curve !! the curve
+        real(qp), intent(in) :: r                  !! radius, 1 <= r (<= R if bounded)
+        logical, intent(in) :: second              !! on the second half-arch (bounded)
+        type(panel_rules), intent(in) :: rules     !! the Gauss rules
+        logical, intent(in) :: angle_only          !! theta in hardware precision only
+        real(qp), intent(out) :: values(3)         !! theta, s, t (s, t: 0 if angle_only)
+        integer, intent(out) :: status             !! status_ok or the reason
+        real(qp) :: apse(3)
+        integer :: stat
+        call one_end(r, values, status)
+        if (second) then
+            call one_end(the_apse, apse, stat)
+            call keep_first(status, stat)
+            values = 2.0_qp*apse - values
+        end if
+    contains
+        pure subroutine one_end(radius, v, st)
+            real(qp), intent(in) :: radius
+            real(qp), intent(out) :: v(3)
+            integer, intent(out) :: st
+            type(panel_piece) :: pieces(max_pieces)
+            type(panel_curve) :: c
+            integer :: n
+            v = 0.0_qp
+            c = panel_curve(bounded=curve%bounded, k=curve%k, p=curve%p, a=curve%centre, &
+                            beta=curve%width2, rm1=curve%apse_m1, d=curve%split)
+            call plan_pieces(curve, radius, pieces, n, c%span)
+            if (angle_only) then
+                call panel_angle_xp(rules, c, pieces(1:n), v(1), st)
+            else
+                call panel_integrals(rules, c, pieces(1:n), v, st)
+            end if
+        end subroutine one_end
+    end subroutine panel_values
 
     !> The critical brachistochrone K^2 = 27/8, Q = (x - 3/2)^2 (x + 3), in closed form
     !! (1 <= r < 3/2). With u = sqrt((r-1)/(r+3)) (so x = (1+3u^2)/(1-u^2)),
@@ -594,16 +631,48 @@ contains
 
     !> The curve of the solver's unknown lambda: unbounded g = exp(lambda); bounded
     !! 3 - 2R = exp(lambda), R - 1 = -expm1(lambda)/2 (accurate as R -> 1 too).
-    pure subroutine curve_of_lambda(arch, lambda, curve)
+    pure subroutine curve_of_lambda(arch, lambda, curve, rho)
         integer, intent(in) :: arch
         real(qp), intent(in) :: lambda
         type(repulsive_curve), intent(out) :: curve
-        if (arch == arch_unbounded) then
+        real(qp), intent(in), optional :: rho !! the endpoint (arch + near_apse only)
+        if (arch > near_apse) then
+            call set_near_apse(rho, lambda*lambda, curve)
+        else if (arch == arch_unbounded) then
             call set_from_gap(exp(lambda), curve)
         else
             call set_bounded(-0.5_qp*expm1(lambda), exp(lambda), curve)
         end if
     end subroutine curve_of_lambda
+
+    !> The bounded curve with apse R = rho + r_gap, R - rho kept exactly.
+    pure subroutine set_near_apse(rho, r_gap, curve)
+        real(qp), intent(in) :: rho, r_gap
+        type(repulsive_curve), intent(out) :: curve
+        call set_bounded((rho - 1.0_qp) + r_gap, (3.0_qp - 2.0_qp*rho) - 2.0_qp*r_gap, curve)
+        curve%r_gap = r_gap
+        curve%r_gap_radius = rho
+    end subroutine set_near_apse
+
+    !> `curve_of_lambda` with exp and expm1 in hardware precision (about 1e-19): for
+    !! the hardware-precision evaluations, at a fraction of binary128's cost.
+    pure subroutine rough_curve_of_lambda(arch, lambda, curve, rho)
+        integer, intent(in) :: arch
+        real(qp), intent(in) :: lambda
+        type(repulsive_curve), intent(out) :: curve
+        real(qp), intent(in) :: rho
+        real(xp) :: x, e
+        x = real(lambda, xp)
+        e = exp(x)
+        if (arch > near_apse) then
+            call set_near_apse(rho, real(x*x, qp), curve)
+        else if (arch == arch_unbounded) then
+            call set_from_gap(real(e, qp), curve)
+        else
+            ! expm1(x) = 2 sinh(x/2) exp(x/2), accurate as x -> 0
+            call set_bounded(real(-sinh(0.5_xp*x)*exp(0.5_xp*x), qp), real(e, qp), curve)
+        end if
+    end subroutine rough_curve_of_lambda
 
     pure subroutine mismatch_evaluate(self, x, f, df, status)
         class(angle_mismatch), intent(in) :: self
@@ -617,7 +686,7 @@ contains
         call curve_of_lambda(self%arch, x, curve)
         call first_integral(curve, want_angle, self%rho, self%rule, angle, status)
         if (self%arch == arch_second) then
-            call first_integral(curve, want_angle, curve%apse, self%rule, apse, stat)
+            call first_integral(curve, want_angle, the_apse, self%rule, apse, stat)
             angle = 2.0_qp*apse - angle
             call keep_first(status, stat)
         end if
@@ -679,6 +748,434 @@ contains
         solution%status = status
     end subroutine solve_branch
 
+    !> theta(rho) - target on the curve of lambda, in hardware precision (fast panels).
+    pure subroutine mismatch_xp(rho, target, arch, rules, lambda, f, status)
+        real(qp), intent(in) :: rho, target, lambda
+        integer, intent(in) :: arch
+        type(panel_rules), intent(in) :: rules
+        real(qp), intent(out) :: f
+        integer, intent(out) :: status
+        type(repulsive_curve) :: curve
+        real(qp) :: values(3)
+        call rough_curve_of_lambda(arch, lambda, curve, rho)
+        call panel_values(curve, rho, mod(arch, near_apse) == arch_second, rules, .true., &
+                          values, status)
+        f = values(1) - target
+    end subroutine mismatch_xp
+
+    !> d theta/d lambda and d s/d lambda at radius r (second half-arch: 2 F(R) - F(r))
+    !! on the curve of lambda, by the complex step in hardware precision (about 18
+    !! digits; `panel_slopes_xp`). status: status_ok or a failure.
+    pure subroutine lambda_slopes(arch, curve, r, rules, slopes, status)
+        integer, intent(in) :: arch
+        type(repulsive_curve), intent(in) :: curve
+        real(qp), intent(in) :: r
+        type(panel_rules), intent(in) :: rules
+        real(qp), intent(out) :: slopes(2)
+        integer, intent(out) :: status
+        real(qp) :: apse(2)
+        integer :: stat
+        call one_end(r, slopes, status)
+        if (mod(arch, near_apse) == arch_second) then
+            call one_end(the_apse, apse, stat)
+            call keep_first(status, stat)
+            slopes = 2.0_qp*apse - slopes
+        end if
+    contains
+        pure subroutine one_end(radius, v, st)
+            real(qp), intent(in) :: radius
+            real(qp), intent(out) :: v(2)
+            integer, intent(out) :: st
+            real(xp), parameter :: h = 1.0e-40_xp
+            type(panel_piece) :: pieces(max_pieces)
+            type(panel_curve) :: c
+            complex(xp) :: cc(7), lower_c(max_pieces), upper_c(max_pieces)
+            integer :: n
+            v = 0.0_qp
+            c = panel_curve(bounded=curve%bounded, k=curve%k, p=curve%p, a=curve%centre, &
+                            beta=curve%width2, rm1=curve%apse_m1, d=curve%split)
+            call plan_pieces(curve, radius, pieces, n, c%span)
+            call complex_step(curve, radius, h, c%span, pieces(1:n), cc, lower_c, upper_c)
+            call panel_slopes_xp(rules, c, pieces(1:n), lower_c(1:n), upper_c(1:n), cc, h, &
+                                 v, st)
+        end subroutine one_end
+    end subroutine lambda_slopes
+
+    !> The curve's numbers [K, P, a, beta, span, R - 1, d] and the ends of its pieces
+    !! (`plan_pieces`) at radius r as complex hardware numbers x + i h dx/dlambda, the
+    !! unknown lambda = log g (unbounded) or log(3 - 2R) (bounded) moved by i h.
+    pure subroutine complex_step(curve, r, h, span, pieces, cc, lower_c, upper_c)
+        type(repulsive_curve), intent(in) :: curve
+        real(qp), intent(in) :: r, span
+        real(xp), intent(in) :: h
+        type(panel_piece), intent(in) :: pieces(:)
+        complex(xp), intent(out) :: cc(7), lower_c(:), upper_c(:)
+        complex(xp) :: g, p, big_r, rm1, e, d, rg, c, s_mid, sin_mid, big, a, width
+        real(xp) :: sg, se
+        integer :: i
+        ! every real part is the binary128 value rounded (differences near the peak or
+        ! the apse are formed there); the complex operations only carry the derivatives
+        cc = (0.0_xp, 0.0_xp)
+        if (.not. curve%bounded) then
+            sg = real(curve%gap, xp)
+            g = cmplx(sg, sg*h, xp)
+            p = cmplx(real(curve%p, xp), -sg*h, xp)
+            a = 0.5_xp*p
+            width = sqrt(p*p*g/(4.0_xp*(p + 1.0_xp)))
+            cc = [sqrt(p**3/(2.0_xp*(1.0_xp + p))), p, a, width*width, &
+                  cmplx(real(span, xp), 0.0_xp, xp), (0.0_xp, 0.0_xp), (0.0_xp, 0.0_xp)]
+            cc(1:4) = real_part(cc(1:4), [curve%k, curve%p, curve%centre, curve%width2])
+            width = real_part(width, sqrt(curve%width2))
+            do i = 1, size(pieces)
+                select case (pieces(i)%kind)
+                case (piece_start)
+                    lower_c(i) = 0.0_xp
+                    upper_c(i) = 1.0_xp
+                case (piece_far)
+                    lower_c(i) = real(far_start/r, xp)
+                    upper_c(i) = 1.0_xp
+                case default
+                    call peak_ends(pieces(i)%kind, pieces(i)%stretched, &
+                                   i > 1 .and. pieces(max(i - 1, 1))%stretched .and. &
+                                   pieces(max(i - 1, 1))%kind == pieces(i)%kind, &
+                                   lower_c(i), upper_c(i))
+                end select
+            end do
+            lower_c(1:size(pieces)) = real_part(lower_c(1:size(pieces)), pieces%lower)
+            upper_c(1:size(pieces)) = real_part(upper_c(1:size(pieces)), pieces%upper)
+            return
+        end if
+        se = real(curve%apse_gap, xp)
+        e = cmplx(se, se*h, xp)
+        rm1 = cmplx(real(curve%apse_m1, xp), -0.5_xp*se*h, xp)
+        if (curve%r_gap >= 0.0_qp) then
+            ! the unknown is u = sqrt(R - rho): d(R - rho) = dR = 2u du
+            sg = 2.0_xp*sqrt(real(curve%r_gap, xp))
+            e = cmplx(se, -2.0_xp*sg*h, xp)
+            rm1 = cmplx(real(curve%apse_m1, xp), sg*h, xp)
+        end if
+        big_r = 1.0_xp + rm1
+        d = 2.0_xp*big_r*e/(rm1*(sqrt((big_r + 3.0_xp)/rm1) + 3.0_xp))
+        d = real_part(d, curve%split)
+        cc = [sqrt(big_r**3/(2.0_xp*rm1)), 2.0_xp*big_r + d, (0.0_xp, 0.0_xp), &
+              (0.0_xp, 0.0_xp), (0.0_xp, 0.0_xp), rm1, d]
+        cc(1:2) = [real_part(cc(1), curve%k), real_part(cc(2), curve%p)]
+        ! as in plan_pieces (R - r with its binary128 real part)
+        if (r == the_apse .or. r >= curve%apse) then
+            rg = 0.0_xp
+        else if (curve%r_gap >= 0.0_qp .and. r == curve%r_gap_radius) then
+            rg = cmplx(real(curve%r_gap, xp), 2.0_xp*sqrt(real(curve%r_gap, xp))*h, xp)
+        else if (r > start_end) then
+            rg = real_part(-0.5_xp*e, 0.5_qp*((3.0_qp - 2.0_qp*r) - curve%apse_gap))
+        else
+            rg = real_part(rm1, curve%apse_m1 - (r - 1.0_qp))
+        end if
+        if (.not. real(rg) > 0.0_xp) rg = 0.0_xp
+        c = sqrt(d/rm1)
+        s_mid = real(apse_split, xp)/c
+        if (real(s_mid) > real(stretch, xp)) s_mid = real(stretch, xp)
+        sin_mid = c*s_mid
+        if (real(sin_mid) > 1.0_xp) sin_mid = 1.0_xp
+        big = 0.0_xp
+        if (real(rg) > 0.0_xp) big = sqrt(rg + real(r - 1.0_qp, xp))
+        do i = 1, size(pieces)
+            upper_c(i) = 1.0_xp
+            select case (pieces(i)%kind)
+            case (piece_apse)
+                lower_c(i) = half_tanh_c(sqrt(rg/d))
+                upper_c(i) = half_tanh_c(s_mid)
+            case (piece_arch_start)
+                lower_c(i) = 0.0_xp
+                upper_c(i) = sqrt(real(r - 1.0_qp, xp))/(sqrt(rg) + big)
+            case default
+                if (i > 1) then
+                    lower_c(i) = sin_mid/(1.0_xp + sqrt((1.0_xp - sin_mid)*(1.0_xp + sin_mid)))
+                else
+                    lower_c(i) = sqrt(rg)/(sqrt(real(r - 1.0_qp, xp)) + big)
+                end if
+            end select
+        end do
+        lower_c(1:size(pieces)) = real_part(lower_c(1:size(pieces)), pieces%lower)
+        upper_c(1:size(pieces)) = real_part(upper_c(1:size(pieces)), pieces%upper)
+    contains
+        !> The ends of a piece below or above the peak (`plan_pieces`' peak_pieces).
+        pure subroutine peak_ends(kind, stretched, after_stretched, lower, upper)
+            integer, intent(in) :: kind
+            logical, intent(in) :: stretched, after_stretched
+            complex(xp), intent(out) :: lower, upper
+            complex(xp) :: h_lo, h_hi
+            real(qp) :: ac
+            ac = 0.5_qp*curve%gap   ! 3/2 - a, as in plan_pieces
+            if (kind == piece_below) then
+                h_lo = 0.0_xp
+                if ((1.5_qp - r) - ac > 0.0_qp) h_lo = real_part(a, (1.5_qp - r) - ac)
+                h_hi = real_part(a, 0.25_qp - ac)
+            else
+                h_lo = 0.0_xp
+                if (ac > 0.25_qp) h_lo = real_part(-a, ac - 0.25_qp)
+                h_hi = real_part(-a, (min(r, far_start) - 1.5_qp) + ac)
+            end if
+            if (stretched) then
+                lower = half_tanh_c(h_lo/width)
+                upper = h_hi/width
+                if (real(upper) > real(stretch, xp)) upper = real(stretch, xp)
+                upper = half_tanh_c(upper)
+            else if (after_stretched) then
+                lower = width*real(stretch, xp)
+                upper = h_hi
+            else
+                lower = h_lo
+                upper = h_hi
+            end if
+        end subroutine peak_ends
+    end subroutine complex_step
+
+    !> The complex number with the imaginary part of z and the real part x (rounded).
+    elemental function real_part(z, x) result(w)
+        complex(xp), intent(in) :: z
+        real(qp), intent(in) :: x
+        complex(xp) :: w
+        w = cmplx(real(x, xp), aimag(z), xp)
+    end function real_part
+
+    !> tanh(asinh(s)/2) = s/(1 + sqrt(1 + s^2)) in complex hardware precision.
+    elemental function half_tanh_c(s) result(t)
+        complex(xp), intent(in) :: s
+        complex(xp) :: t
+        t = s/(1.0_xp + sqrt(1.0_xp + s*s))
+    end function half_tanh_c
+
+    !> The fast path of `solve_branch`: the bracket and the root to about 1e-17 on
+    !! hardware-precision panels (regula falsi with the Anderson-Bjorck correction), the
+    !! slope and curvature there by central differences; then two binary128 evaluations
+    !! of theta, s, t: at that root x0 and at its Newton step x1. The secant through both
+    !! gives the root x; s and t are interpolated there. Certified when |f(x1)| <= 1e-6
+    !! |f(x0)| (the step converged as Newton's does) and the secant's and the
+    !! interpolation's error, curvature |x - x0| |x - x1|, is below a rounding of x.
+    !! `done` is false otherwise (or on any failure): the caller then solves adaptively.
+    pure subroutine solve_branch_fast(rho, target, arch, lambda_top, f_top, rules, &
+                                      solution, done)
+        real(qp), intent(in) :: rho, target, lambda_top, f_top
+        integer, intent(in) :: arch
+        type(panel_rules), intent(in) :: rules
+        type(repulsive_solution), intent(inout) :: solution
+        logical, intent(out) :: done
+        real(qp) :: lo, f_lo, hi, f_hi, x0, fx0, x1, x, h, f_plus, f_minus, slope
+        real(qp) :: curvature, v0(3), v1(3), f0, f1, floor, rate(3), slopes(2), dx, conserved
+        real(qp) :: scale, check
+        integer :: status, steps, stat(2)
+        type(repulsive_curve) :: curve
+        done = .false.
+        if (f_top == 0.0_qp) return
+        floor = log(critical_floor)
+        hi = lambda_top
+        f_hi = f_top
+        lo = hi
+        steps = 0
+        if (arch > near_apse) then
+            call near_apse_bracket(rho, target, arch, f_top, rules, lo, f_lo, hi, f_hi, &
+                                   steps, status)
+            if (status /= status_ok) return
+        else
+            do
+                lo = max(lo - 4.0_qp, floor)
+                call mismatch_xp(rho, target, arch, rules, lo, f_lo, status)
+                steps = steps + 1
+                if (status /= status_ok) return
+                if ((f_lo > 0.0_qp) .neqv. (f_hi > 0.0_qp)) exit
+                if (lo <= floor) return
+                hi = lo
+                f_hi = f_lo
+            end do
+        end if
+        call falsi_xp(rho, target, arch, rules, lo, f_lo, hi, f_hi, x0, fx0, steps, status)
+        if (status /= status_ok) return
+        if (arch > near_apse) then
+            ! u may be far below the hardware phase's noise: one-sided differences over
+            ! 1e-3 of the square-root law's reach, from x0 up (theta is smooth in u
+            ! there); the slope cross-check to 1e-2
+            h = 1.0e-3_qp*sqrt(0.25_qp*min(3.0_qp - 2.0_qp*rho, rho - 1.0_qp))
+            call mismatch_xp(rho, target, arch, rules, x0 + h, f_plus, stat(1))
+            call mismatch_xp(rho, target, arch, rules, x0 + 2.0_qp*h, f_minus, stat(2))
+            slope = (f_plus - fx0)/h
+            curvature = abs(f_minus - 2.0_qp*f_plus + fx0)/(h*h)/abs(2.0_qp*slope) + 1.0_qp
+            check = 1.0e-2_qp
+        else
+            h = min(1.0e-6_qp*lambda_scale(arch, x0), 0.5_qp*(x0 - lo), 0.5_qp*(hi - x0))
+            if (.not. h > 0.0_qp) return
+            call mismatch_xp(rho, target, arch, rules, x0 + h, f_plus, stat(1))
+            call mismatch_xp(rho, target, arch, rules, x0 - h, f_minus, stat(2))
+            slope = (f_plus - f_minus)/(2.0_qp*h)
+            curvature = abs(f_plus - 2.0_qp*fx0 + f_minus)/(h*h)/abs(2.0_qp*slope) + 1.0_qp
+            check = 1.0e-6_qp
+        end if
+        steps = steps + 2
+        if (any(stat /= status_ok)) return
+        ! one binary128 evaluation, the Newton step on the complex-step slopes
+        call curve_of_lambda(arch, x0, curve, rho)
+        call panel_values(curve, rho, mod(arch, near_apse) == arch_second, rules, .false., &
+                          v0, stat(1))
+        f0 = v0(1) - target
+        call lambda_slopes(arch, curve, rho, rules, slopes, stat(2))
+        if (any(stat /= status_ok)) return
+        steps = steps + 1
+        ! the error of x that moves theta, s or t by a rounding (next to the apse, where
+        ! they vary like sqrt(R - rho) = exp(x/2), far more than a rounding of x)
+        scale = lambda_scale(arch, x0)
+        if (arch > near_apse) scale = 1.0_qp/max(abs(slopes(1))/target, &
+            abs(slopes(2)/v0(2)), abs(curve%k*slopes(1)/v0(3)), tiny(1.0_qp))
+        ! the cross-check against the central difference, to its rounding noise
+        if (abs(slopes(1) - slope) <= check*abs(slopes(1)) + 1.0e-17_qp*target/h) then
+            dx = -f0/slopes(1)
+            x = x0 + dx
+            if (x > lo .and. x < hi .and. 1.0e-17_qp*abs(dx) + curvature*dx*dx <= &
+                2.0_qp*eps_qp*scale) then
+                call curve_of_lambda(arch, x0 + 0.5_qp*dx, curve, rho)
+                conserved = curve%k
+                call curve_of_lambda(arch, x, solution%curve, rho)
+                solution%arch = mod(arch, near_apse)
+                solution%angle = v0(1) + slopes(1)*dx
+                solution%arclength = v0(2) + slopes(2)*dx
+                ! Hamilton-Jacobi: at fixed rho, dt/dtheta = K, the conserved momentum
+                solution%time = v0(3) - conserved*f0
+                solution%steps = steps
+                solution%status = status_ok
+                done = .true.
+                return
+            end if
+            slope = slopes(1)
+        end if
+        ! else a second binary128 evaluation at the Newton step, and the secant
+        x1 = x0 - f0/slope
+        call curve_of_lambda(arch, x1, curve, rho)
+        call panel_values(curve, rho, mod(arch, near_apse) == arch_second, rules, .false., &
+                          v1, stat(2))
+        f1 = v1(1) - target
+        steps = steps + 2
+        if (any(stat /= status_ok) .or. .not. (x1 > lo .and. x1 < hi)) return
+        if (f1 == f0 .or. abs(x1 - x0) > 1.0e-12_qp*scale) return
+        if (abs(f1) > 1.0e-6_qp*abs(f0) .and. abs(f1) > 4.0_qp*eps_qp*target) &
+            return
+        rate = (v1 - v0)/(x1 - x0)
+        x = x1 - f1/rate(1)
+        if (curvature*abs(x - x0)*abs(x - x1) > eps_qp*scale) return
+        call curve_of_lambda(arch, x, solution%curve, rho)
+        solution%arch = mod(arch, near_apse)
+        solution%angle = v1(1) + rate(1)*(x - x1)
+        solution%arclength = v1(2) + rate(2)*(x - x1)
+        solution%time = v1(3) + rate(3)*(x - x1)
+        solution%steps = steps
+        solution%status = status_ok
+        done = .true.
+    end subroutine solve_branch_fast
+
+    !> The bracket of u = sqrt(R - rho) next to the apse, from the square-root law there:
+    !! theta(rho) = Theta(rho, rho) -+ 2 A u + O(u^2) on the first (second) half-arch,
+    !! A = sqrt((rho - 1)/(rho (3 - 2 rho))) (from Q'(R) = R^2 (2R - 3)/(R - 1)), widened
+    !! by factors 4 until theta - target changes sign (R - rho up to (3 - 2 rho)/4).
+    !! status: status_ok, status_no_convergence (no bracket) or an evaluation's failure.
+    pure subroutine near_apse_bracket(rho, target, arch, f_top, rules, lo, f_lo, hi, f_hi, &
+                                      steps, status)
+        real(qp), intent(in) :: rho, target, f_top
+        integer, intent(in) :: arch
+        type(panel_rules), intent(in) :: rules
+        real(qp), intent(out) :: lo, f_lo, hi, f_hi
+        integer, intent(inout) :: steps
+        integer, intent(out) :: status
+        real(qp) :: centre, top
+        integer :: i
+        centre = abs(f_top)/(2.0_qp*sqrt((rho - 1.0_qp)/(rho*(3.0_qp - 2.0_qp*rho))))
+        top = sqrt(0.25_qp*(3.0_qp - 2.0_qp*rho))
+        lo = 0.5_qp*min(centre, top)
+        hi = min(2.0_qp*centre, top)
+        call mismatch_xp(rho, target, arch, rules, lo, f_lo, status)
+        if (status /= status_ok) return
+        call mismatch_xp(rho, target, arch, rules, hi, f_hi, status)
+        steps = steps + 2
+        do i = 1, 40
+            if (status /= status_ok) return
+            if ((f_lo > 0.0_qp) .neqv. (f_hi > 0.0_qp)) return
+            ! f -> f_top as u -> 0
+            if ((f_hi > 0.0_qp) .eqv. (f_top > 0.0_qp)) then
+                if (hi >= top) exit
+                lo = hi
+                f_lo = f_hi
+                hi = min(4.0_qp*hi, top)
+                call mismatch_xp(rho, target, arch, rules, hi, f_hi, status)
+            else
+                hi = lo
+                f_hi = f_lo
+                lo = 0.25_qp*lo
+                call mismatch_xp(rho, target, arch, rules, lo, f_lo, status)
+            end if
+            steps = steps + 1
+        end do
+        status = status_no_convergence
+    end subroutine near_apse_bracket
+
+    !> The scale of lambda's absolute error: 1 for unbounded curves (g = exp(lambda));
+    !! on bounded ones R - 1 = -expm1(lambda)/2 is relative to lambda as R -> 1, so
+    !! min(1, |lambda|).
+    elemental function lambda_scale(arch, lambda) result(scale)
+        integer, intent(in) :: arch
+        real(qp), intent(in) :: lambda
+        real(qp) :: scale
+        scale = 1.0_qp
+        if (arch == arch_first .or. arch == arch_second) &
+            scale = max(min(1.0_qp, abs(lambda)), tiny(1.0_qp))
+        if (arch > near_apse) scale = max(abs(lambda), tiny(1.0_qp))
+    end function lambda_scale
+
+    !> Regula falsi (Anderson-Bjorck) on the hardware-precision mismatch from the bracket
+    !! [lo, hi], to 1e-17 of lambda or to the evaluations' noise; x, fx: the last iterate.
+    !! status: status_ok or an evaluation's failure (running out of steps is not one:
+    !! the result is only the start of the binary128 phase, which certifies).
+    pure subroutine falsi_xp(rho, target, arch, rules, lo, f_lo, hi, f_hi, x, fx, steps, &
+                             status)
+        real(qp), intent(in) :: rho, target, lo, f_lo, hi, f_hi
+        integer, intent(in) :: arch
+        type(panel_rules), intent(in) :: rules
+        real(qp), intent(out) :: x, fx
+        integer, intent(inout) :: steps
+        integer, intent(out) :: status
+        real(qp) :: a, b, fa, fb, scale
+        integer :: side, i
+        a = lo
+        b = hi
+        fa = f_lo
+        fb = f_hi
+        side = 0
+        status = status_ok
+        x = b
+        fx = fb
+        do i = 1, 60
+            x = (a*fb - b*fa)/(fb - fa)
+            if (.not. (x > min(a, b) .and. x < max(a, b))) x = 0.5_qp*(a + b)
+            call mismatch_xp(rho, target, arch, rules, x, fx, status)
+            steps = steps + 1
+            if (status /= status_ok) return
+            if (abs(fx) <= 1.0e-18_qp*target) return
+            if ((fx > 0.0_qp) .eqv. (fb > 0.0_qp)) then
+                if (side == 1) then
+                    scale = 1.0_qp - fx/fb
+                    fa = fa*merge(scale, 0.5_qp, scale > 0.0_qp)
+                end if
+                b = x
+                fb = fx
+                side = 1
+            else
+                if (side == -1) then
+                    scale = 1.0_qp - fx/fa
+                    fb = fb*merge(scale, 0.5_qp, scale > 0.0_qp)
+                end if
+                a = x
+                fa = fx
+                side = -1
+            end if
+            if (abs(b - a) <= 1.0e-17_qp*lambda_scale(arch, x)) return
+        end do
+    end subroutine falsi_xp
+
     !> The two-point problem: every brachistochrone from A = (1, 0) to B = (rho, psi)
     !! sweeping an angle psi + 2 pi m (anticlockwise) or 2 pi (m + 1) - psi (clockwise,
     !! the mirror image), m = 0..max_windings, in increasing order of the swept angle
@@ -686,7 +1183,8 @@ contains
     !! time. One solution per target angle (the branch through rho is monotone).
     !! Solutions that need g or 3 - 2R below `critical_floor` carry
     !! status_no_convergence.
-    pure subroutine solve_repulsive(rho, psi, max_windings, solutions, best, status, mirror)
+    pure subroutine solve_repulsive(rho, psi, max_windings, solutions, best, status, mirror, &
+                                    rules)
         real(qp), intent(in) :: rho        !! endpoint radius, rho >= 1
         real(qp), intent(in) :: psi        !! endpoint angle, 0 <= psi <= pi
         integer, intent(in) :: max_windings !! largest m (>= 0)
@@ -696,7 +1194,9 @@ contains
         !> Also the clockwise mirror images (default .true.); without them only the
         !! anticlockwise targets psi + 2 pi m, which include the least time
         logical, intent(in), optional :: mirror
-        type(gauss_legendre_rule) :: rule
+        !> Gauss rules of the fast panels (`new_panel_rules`; built here when absent)
+        type(panel_rules), intent(in), optional :: rules
+        type(panel_rules) :: own_rules
         real(qp) :: target, angle_critical, angle_apse
         integer :: m, sense, n
         logical :: mirror_distinct
@@ -709,8 +1209,12 @@ contains
             status = status_invalid_argument
             return
         end if
-        rule = gauss_legendre(20)
-        call branch_angles(rho, rule, angle_critical, angle_apse, status)
+        if (.not. present(rules)) own_rules = new_panel_rules()
+        if (present(rules)) then
+            call branch_angles(rho, rules, angle_critical, angle_apse, status)
+        else
+            call branch_angles(rho, own_rules, angle_critical, angle_apse, status)
+        end if
         if (status /= status_ok) return
         mirror_distinct = psi > 0.0_qp .and. psi < pi
         if (present(mirror)) mirror_distinct = mirror_distinct .and. mirror
@@ -728,22 +1232,29 @@ contains
                 solutions(n)%target = target
                 solutions(n)%winding = m
                 solutions(n)%clockwise = sense == 1
-                call solve_target(rho, target, angle_critical, angle_apse, solutions(n))
+                if (present(rules)) then
+                    call solve_target(rho, target, angle_critical, angle_apse, rules, &
+                                      solutions(n))
+                else
+                    call solve_target(rho, target, angle_critical, angle_apse, own_rules, &
+                                      solutions(n))
+                end if
             end do
         end do
         best = least_time(solutions)
     end subroutine solve_repulsive
 
     !> For 1 < rho < 3/2, the angles at rho of the critical curve and of the curve with
-    !! its apse at rho, which split the targets among the branches (0 otherwise).
-    !! status: status_ok or the first failure of those integrals.
-    pure subroutine branch_angles(rho, rule, angle_critical, angle_apse, status)
+    !! its apse at rho, which split the targets among the branches (0 otherwise); the
+    !! latter in hardware precision (`solve_target` takes it in binary128 when a target
+    !! is within 1e-15 of it). status: status_ok or the first failure of those integrals.
+    pure subroutine branch_angles(rho, rules, angle_critical, angle_apse, status)
         real(qp), intent(in) :: rho
-        type(gauss_legendre_rule), intent(in) :: rule
+        type(panel_rules), intent(in) :: rules
         real(qp), intent(out) :: angle_critical, angle_apse
         integer, intent(out) :: status
         type(repulsive_curve) :: curve
-        real(qp) :: dummy(2)
+        real(qp) :: dummy(2), values(3)
         integer :: stat(3)
         angle_critical = 0.0_qp
         angle_apse = 0.0_qp
@@ -751,16 +1262,47 @@ contains
         if (.not. (rho > 1.0_qp .and. rho < 1.5_qp)) return
         call critical_values(rho, angle_critical, dummy(1), dummy(2), stat(1))
         call curve_from_apse(rho, curve, stat(2))
-        call first_integral(curve, want_angle, rho, rule, angle_apse, stat(3))
+        call panel_values(curve, rho, .false., rules, .true., values, stat(3))
+        angle_apse = values(1)
+        if (stat(3) /= status_ok) call apse_angle_exact(rho, rules, angle_apse, stat(3))
         status = first_failure(stat)
     end subroutine branch_angles
 
+    !> Theta(rho, rho) of the curve with its apse at rho, in binary128: fast panels, or
+    !! adaptively when they decline. status: status_ok or the integral's failure.
+    pure subroutine apse_angle_exact(rho, rules, angle_apse, status)
+        real(qp), intent(in) :: rho
+        type(panel_rules), intent(in) :: rules
+        real(qp), intent(out) :: angle_apse
+        integer, intent(out) :: status
+        type(repulsive_curve) :: curve
+        real(qp) :: values(3)
+        call curve_from_apse(rho, curve, status)
+        call panel_values(curve, rho, .false., rules, .false., values, status)
+        angle_apse = values(1)
+        if (status /= status_ok) then
+            call first_integral(curve, want_angle, rho, gauss_legendre(20), angle_apse, &
+                                status)
+        end if
+    end subroutine apse_angle_exact
+
     !> The curve from A through (rho, target): the radial path for target 0, else the
     !! branch that holds the target (complete arches when rho = 1).
-    pure subroutine solve_target(rho, target, angle_critical, angle_apse, solution)
-        real(qp), intent(in) :: rho, target, angle_critical, angle_apse
+    pure subroutine solve_target(rho, target, angle_critical, angle_apse_xp, rules, solution)
+        real(qp), intent(in) :: rho, target, angle_critical, angle_apse_xp
+        type(panel_rules), intent(in) :: rules
         type(repulsive_solution), intent(inout) :: solution
-        integer :: stat_values
+        integer :: stat_values, near
+        real(qp) :: angle_apse
+        angle_apse = angle_apse_xp
+        if (rho > 1.0_qp .and. rho < 1.5_qp .and. &
+            abs(target - angle_apse) <= 1.0e-15_qp*target) then
+            call apse_angle_exact(rho, rules, angle_apse, stat_values)
+            if (stat_values /= status_ok) then
+                solution%status = stat_values
+                return
+            end if
+        end if
         if (target == 0.0_qp) then
             ! psi = 0, m = 0: the radial path (K = 0); B = A when rho = 1
             call set_from_gap(3.0_qp, solution%curve)
@@ -770,17 +1312,35 @@ contains
             solution%status = stat_values
         else if (rho == 1.0_qp) then
             ! complete arches: lambda = log(3 - 2R) up to 0 (R -> 1, angle -> 0)
-            call solve_branch(rho, target, arch_second, 0.0_qp, -target, solution)
+            call solve_fast_or_slow(rho, target, arch_second, 0.0_qp, -target, &
+                                    rules, solution)
         else if (rho >= 1.5_qp .or. target < angle_critical) then
-            call solve_branch(rho, target, arch_unbounded, log(3.0_qp), -target, solution)
-        else if (target <= angle_apse) then
-            call solve_branch(rho, target, arch_first, log(3.0_qp - 2.0_qp*rho), &
-                              angle_apse - target, solution)
+            call solve_fast_or_slow(rho, target, arch_unbounded, log(3.0_qp), -target, &
+                                    rules, solution)
         else
-            call solve_branch(rho, target, arch_second, log(3.0_qp - 2.0_qp*rho), &
-                              angle_apse - target, solution)
+            ! next to the apse (R - rho below 1e-4 of 3 - 2 rho and of rho - 1 by the
+            ! square-root law of near_apse_bracket) the unknown is sqrt(R - rho)
+            near = merge(near_apse, 0, ((angle_apse - target)/2.0_qp)**2* &
+                         (rho*(3.0_qp - 2.0_qp*rho))/(rho - 1.0_qp) < &
+                         1.0e-4_qp*min(3.0_qp - 2.0_qp*rho, rho - 1.0_qp))
+            call solve_fast_or_slow(rho, target, merge(arch_first, arch_second, &
+                                    target <= angle_apse) + near, log(3.0_qp - 2.0_qp*rho), &
+                                    angle_apse - target, rules, solution)
         end if
     end subroutine solve_target
+
+    !> One target on one branch: the fast path, else the adaptive one.
+    pure subroutine solve_fast_or_slow(rho, target, arch, lambda_top, f_top, rules, &
+                                       solution)
+        real(qp), intent(in) :: rho, target, lambda_top, f_top
+        integer, intent(in) :: arch
+        type(panel_rules), intent(in) :: rules
+        type(repulsive_solution), intent(inout) :: solution
+        logical :: done
+        call solve_branch_fast(rho, target, arch, lambda_top, f_top, rules, solution, done)
+        if (.not. done) call solve_branch(rho, target, mod(arch, near_apse), lambda_top, &
+                                          f_top, solution)
+    end subroutine solve_fast_or_slow
 
     !> Index of the solved curve of least time (the first of equal times; 0 if none).
     pure function least_time(solutions) result(best)

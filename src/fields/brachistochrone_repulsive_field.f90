@@ -11,14 +11,19 @@ module brachistochrone_repulsive_field
     use brachistochrone_solution, only: endpoint_solution
     use brachistochrone_arches, only: arch_radial, arch_complete, arch_unbounded
     use brachistochrone_field_interface, only: brachistochrone_field
-    use brachistochrone_repulsive, only: repulsive_solution, solve_repulsive
+    use brachistochrone_repulsive, only: repulsive_solution, solve_repulsive, panel_rules, &
+                                         new_panel_rules
     implicit none
     private
 
-    public :: repulsive_field, least_time_repulsive
+    public :: repulsive_field, new_repulsive_field, least_time_repulsive
 
     !> F = -mu/r^2 (repulsive): v^2 = 2(r - 1)/r, endpoints rho >= 1.
+    !! Make it with `new_repulsive_field` (its Gauss rules built once); a default-built
+    !! value solves the same endpoints, building the rules on every call.
     type, extends(brachistochrone_field) :: repulsive_field
+        logical :: has_rules = .false.   !! rules built
+        type(panel_rules) :: rules       !! the fast panels' Gauss rules
     contains
         procedure :: solve => repulsive_solve
         procedure :: name => repulsive_name
@@ -28,12 +33,23 @@ module brachistochrone_repulsive_field
 
 contains
 
+    !> The repulsive field with its Gauss rules built (about a millisecond).
+    pure function new_repulsive_field() result(field)
+        type(repulsive_field) :: field
+        field%rules = new_panel_rules()
+        field%has_rules = .true.
+    end function new_repulsive_field
+
     !> `least_time_repulsive`.
     pure function repulsive_solve(self, rho, psi) result(solution)
         class(repulsive_field), intent(in) :: self
         real(qp), intent(in) :: rho, psi
         type(endpoint_solution) :: solution
-        solution = least_time_repulsive(rho, psi)
+        if (self%has_rules) then
+            solution = least_time_repulsive(rho, psi, self%rules)
+        else
+            solution = least_time_repulsive(rho, psi)
+        end if
     end function repulsive_solve
 
     !> The least-time brachistochrone from A through B = (rho, psi), rho >= 1: arch
@@ -41,9 +57,11 @@ contains
     !! arch_second; R-bar only for bounded curves. Statuses: status_ok,
     !! status_not_finite, status_rho_below_start, status_psi_out_of_range,
     !! status_no_convergence.
-    pure function least_time_repulsive(rho, psi) result(solution)
+    pure function least_time_repulsive(rho, psi, rules) result(solution)
         real(qp), intent(in) :: rho  !! endpoint radius, rho >= 1
         real(qp), intent(in) :: psi  !! endpoint angle, 0 <= psi <= pi
+        !> the fast panels' Gauss rules (`new_panel_rules`), built here when absent
+        type(panel_rules), intent(in), optional :: rules
         type(endpoint_solution) :: solution
         type(repulsive_solution), allocatable :: found(:)
         integer :: best, status
@@ -51,7 +69,7 @@ contains
         solution%psi = psi
         ! the least time is the anticlockwise curve sweeping psi itself (module notes of
         ! brachistochrone_repulsive, tested there): its mirror image need not be solved
-        call solve_repulsive(rho, psi, 0, found, best, status, mirror=.false.)
+        call solve_repulsive(rho, psi, 0, found, best, status, mirror=.false., rules=rules)
         solution%status = status
         if (status /= status_ok) return
         if (best == 0) then

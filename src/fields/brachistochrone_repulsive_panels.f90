@@ -1,0 +1,631 @@
+!> Fixed Gauss-Legendre panels for the repulsive field's integrals (the fast evaluator of
+!! `brachistochrone_repulsive`).
+!!
+!! The pieces of an integral (variable, interval) are laid out by
+!! `brachistochrone_repulsive`; their substitutions make every integrand analytic on the
+!! interval, with singularities at known complex points: the zeros of Q (0 is a pole of
+!! theta's integrand, -P and the near-double pair a +- i sqrt(beta) or r2 = R + d branch
+!! points), x = 1 where sqrt(x - 1) is not removed, and those of the maps themselves
+!! (sin(nu/2) = +-1 in the apse's sinh map, z = 0 in the far map). Mapped into the piece's
+!! variable they fix, for each panel, the Bernstein ellipse rho of Gauss convergence
+!! (error about rho^(-2n) for n nodes), so the rule is chosen once per curve, in double
+!! precision, before any integrand is evaluated (as on the inverse-square fast path). A
+!! panel that would need more than `max_nodes` nodes is bisected: near a singularity
+!! at one end this makes a geometric mesh. More than `max_panels` panels for one integral
+!! is a failure (the caller then integrates adaptively).
+!!
+!! Two precisions: all three integrals (theta, s, t) in binary128 aiming at 36 digits,
+!! and theta alone in the widest hardware precision (`xp`, x87 extended where there is
+!! one) aiming at 20 digits, for the root finder's early phase.
+module brachistochrone_repulsive_panels
+    use brachistochrone_kinds, only: qp, pi
+    use brachistochrone_status, only: status_ok, status_no_convergence
+    use brachistochrone_quadrature, only: gauss_legendre_rule, gauss_legendre
+    use brachistochrone_fast_math, only: inverse_sqrt
+    use, intrinsic :: iso_fortran_env, only: real64
+    implicit none
+    private
+
+    public :: xp, panel_rules, new_panel_rules, panel_piece, panel_curve
+    public :: panel_integrals, panel_angle_xp, integrands, panel_slopes_xp
+    public :: piece_start, piece_below, piece_above, piece_far, piece_arch, piece_apse, &
+              piece_arch_start, max_pieces
+
+    !> The widest hardware real kind below quad (x87 extended on x86-64, else double).
+    integer, parameter :: xp_candidate = selected_real_kind(18, 4931)
+    integer, parameter :: xp = merge(xp_candidate, real64, &
+                                     xp_candidate > 0 .and. xp_candidate /= qp)
+
+    !> Piece kinds (the variable of each): sigma from the start, h = |x - a| below/above the
+    !! peak (`stretched`: h = sqrt(beta) sinh(xi)), z = 4/x far out, nu of the bounded arch,
+    !! xi of the apse's sinh map, mu = pi - nu next to the start.
+    integer, parameter :: piece_start = 1, piece_below = 2, piece_above = 3, &
+                          piece_far = 4, piece_arch = 5, piece_apse = 6, &
+                          piece_arch_start = 7
+    integer, parameter :: max_pieces = 6
+    !> The ladder of rules and the most panels for one integral.
+    integer, parameter :: ladder(*) = [6, 8, 10, 12, 16, 20, 24, 28, 32, 40, 48]
+    integer, parameter :: max_nodes = 48, max_panels = 64
+    !> Digits aimed at: binary128 (with a margin over 34) and the hardware phase.
+    real(real64), parameter :: quad_digits = 35.0_real64, hardware_digits = 20.5_real64
+    !> Digits aimed at by the complex-step slopes (used only through a step below 1e-17)
+    real(real64), parameter :: slope_digits = 22.0_real64
+    real(qp), parameter :: sqrt2 = sqrt(2.0_qp), far_start = 4.0_qp
+
+    !> One Gauss-Legendre rule on [0, 1]: nodes and weights in both precisions.
+    type :: panel_rule
+        integer :: n = 0
+        real(qp), allocatable :: node(:), weight(:)
+        real(xp), allocatable :: node_xp(:), weight_xp(:)
+    end type panel_rule
+
+    !> The rules of `ladder`, built once (`new_panel_rules`) and then read only.
+    type :: panel_rules
+        type(panel_rule) :: rule(size(ladder))
+    end type panel_rules
+
+    !> One piece of an integral: its kind, its interval in its variable.
+    type :: panel_piece
+        integer :: kind = piece_start
+        logical :: stretched = .false.
+        real(qp) :: lower = 0.0_qp, upper = 0.0_qp
+    end type panel_piece
+
+    !> The curve's numbers the integrands need (see `brachistochrone_repulsive`).
+    type :: panel_curve
+        logical :: bounded = .false.
+        real(qp) :: k = 0.0_qp, p = 0.0_qp     !! K, P
+        real(qp) :: a = 0.0_qp, beta = 0.0_qp  !! unbounded: Q = (x + P)((x - a)^2 + beta)
+        real(qp) :: span = 0.0_qp              !! unbounded: start piece x - 1 = span sigma^2
+        real(qp) :: rm1 = 0.0_qp, d = 0.0_qp   !! bounded: R - 1, r2 - R
+    end type panel_curve
+
+    !> Per-curve constants of the integrands (`prepare`).
+    type :: prepared_curve
+        type(panel_curve) :: c
+        real(qp) :: k_root2 = 0.0_qp, root_span = 0.0_qp, span_root_span = 0.0_qp
+        real(qp) :: root_beta = 0.0_qp, root_ratio = 0.0_qp, root_rm1 = 0.0_qp
+        real(qp) :: a_m1 = 0.0_qp
+    end type prepared_curve
+
+contains
+
+    !> The constants of `integrands` for one curve.
+    pure function prepare(c) result(pc)
+        type(panel_curve), intent(in) :: c
+        type(prepared_curve) :: pc
+        pc%c = c
+        pc%k_root2 = c%k*sqrt2
+        pc%root_span = sqrt(c%span)
+        pc%span_root_span = c%span*pc%root_span
+        pc%root_beta = sqrt(c%beta)
+        pc%a_m1 = c%a - 1.0_qp
+        if (c%bounded) then
+            pc%root_rm1 = sqrt(c%rm1)
+            pc%root_ratio = sqrt(c%d/c%rm1)
+        end if
+    end function prepare
+
+    !> The rules of the ladder (about a millisecond: build once, share).
+    pure function new_panel_rules() result(rules)
+        type(panel_rules) :: rules
+        type(gauss_legendre_rule) :: g
+        integer :: j
+        do j = 1, size(ladder)
+            g = gauss_legendre(ladder(j))
+            rules%rule(j)%n = ladder(j)
+            rules%rule(j)%node = 0.5_qp*(1.0_qp + g%node)
+            rules%rule(j)%weight = 0.5_qp*g%weight
+            rules%rule(j)%node_xp = real(rules%rule(j)%node, xp)
+            rules%rule(j)%weight_xp = real(rules%rule(j)%weight, xp)
+        end do
+    end function new_panel_rules
+
+    !> theta, s, t (values(1:3)) over the pieces, in binary128. status: status_ok, or
+    !! status_no_convergence when a piece needs more than `max_panels` panels.
+    pure subroutine panel_integrals(rules, curve, pieces, values, status)
+        type(panel_rules), intent(in) :: rules
+        type(panel_curve), intent(in) :: curve
+        type(panel_piece), intent(in) :: pieces(:)
+        real(qp), intent(out) :: values(3)
+        integer, intent(out) :: status
+        real(qp) :: lo(max_panels), hi(max_panels), width, y(3), sums(3)
+        type(prepared_curve) :: pc
+        integer :: which(max_panels), count, i, j, m
+        values = 0.0_qp
+        status = status_ok
+        pc = prepare(curve)
+        do i = 1, size(pieces)
+            call plan_panels(curve, pieces(i), quad_digits, lo, hi, which, count, status)
+            if (status /= status_ok) return
+            do j = 1, count
+                width = hi(j) - lo(j)
+                sums = 0.0_qp
+                associate (r => rules%rule(which(j)))
+                    do m = 1, r%n
+                        call weighted_integrands(pc, pieces(i)%kind, pieces(i)%stretched, &
+                                                 lo(j) + width*r%node(m), r%weight(m), y)
+                        sums = sums + y
+                    end do
+                end associate
+                values = values + width*sums
+            end do
+        end do
+    end subroutine panel_integrals
+
+    !> theta over the pieces in hardware precision (about 19 digits). status as for
+    !! `panel_integrals`.
+    pure subroutine panel_angle_xp(rules, curve, pieces, value, status)
+        type(panel_rules), intent(in) :: rules
+        type(panel_curve), intent(in) :: curve
+        type(panel_piece), intent(in) :: pieces(:)
+        real(qp), intent(out) :: value
+        integer, intent(out) :: status
+        real(qp) :: lo(max_panels), hi(max_panels)
+        real(xp) :: c(7), width, start, total, sum
+        integer :: which(max_panels), count, i, j, m
+        value = 0.0_qp
+        status = status_ok
+        c = real([curve%k, curve%p, curve%a, curve%beta, curve%span, curve%rm1, curve%d], xp)
+        total = 0.0_xp
+        do i = 1, size(pieces)
+            call plan_panels(curve, pieces(i), hardware_digits, lo, hi, which, count, status)
+            if (status /= status_ok) return
+            do j = 1, count
+                start = real(lo(j), xp)
+                width = real(hi(j) - lo(j), xp)
+                sum = 0.0_xp
+                associate (r => rules%rule(which(j)))
+                    do m = 1, r%n
+                        sum = sum + r%weight_xp(m)*angle_xp(c, pieces(i)%kind, &
+                                  pieces(i)%stretched, start + width*r%node_xp(m))
+                    end do
+                end associate
+                total = total + width*sum
+            end do
+        end do
+        value = real(total, qp)
+    end subroutine panel_angle_xp
+
+    !> The derivatives of theta and s over the pieces with respect to the solver's
+    !! unknown, by the complex step in hardware precision: the curve's numbers `cc`
+    !! (order of `angle_xp`'s c) and the pieces' ends `lower_c`, `upper_c` carry
+    !! h d/dlambda in their imaginary parts; the panels and rules are those of the real
+    !! pieces, their ends moved with the pieces'. slopes = Im(theta, s)/h, to about the
+    !! hardware precision (no cancellation). status as for `panel_integrals`.
+    pure subroutine panel_slopes_xp(rules, curve, pieces, lower_c, upper_c, cc, h, slopes, &
+                                    status)
+        type(panel_rules), intent(in) :: rules
+        type(panel_curve), intent(in) :: curve
+        type(panel_piece), intent(in) :: pieces(:)
+        complex(xp), intent(in) :: lower_c(:), upper_c(:), cc(7)
+        real(xp), intent(in) :: h
+        real(qp), intent(out) :: slopes(2)
+        integer, intent(out) :: status
+        real(qp) :: lo(max_panels), hi(max_panels), length
+        complex(xp) :: a, b, width, total(2), sum(2)
+        integer :: which(max_panels), count, i, j, m
+        slopes = 0.0_qp
+        status = status_ok
+        total = (0.0_xp, 0.0_xp)
+        do i = 1, size(pieces)
+            call plan_panels(curve, pieces(i), slope_digits, lo, hi, which, count, status)
+            if (status /= status_ok) return
+            length = pieces(i)%upper - pieces(i)%lower
+            do j = 1, count
+                a = lower_c(i) + real((lo(j) - pieces(i)%lower)/length, xp)* &
+                    (upper_c(i) - lower_c(i))
+                b = lower_c(i) + real((hi(j) - pieces(i)%lower)/length, xp)* &
+                    (upper_c(i) - lower_c(i))
+                width = b - a
+                sum = (0.0_xp, 0.0_xp)
+                associate (r => rules%rule(which(j)))
+                    do m = 1, r%n
+                        sum = sum + r%weight_xp(m)*angle_length_c(cc, pieces(i)%kind, &
+                                  pieces(i)%stretched, a + width*r%node_xp(m))
+                    end do
+                end associate
+                total = total + width*sum
+            end do
+        end do
+        slopes = real(aimag(total)/h, qp)
+    end subroutine panel_slopes_xp
+
+    !> theta's and s's integrands in complex hardware precision (the maps of
+    !! `integrands`); c = [K, P, a, beta, span, R - 1, d].
+    pure function angle_length_c(c, kind, stretched, v) result(y)
+        complex(xp), intent(in) :: c(7)
+        integer, intent(in) :: kind
+        logical, intent(in) :: stretched
+        complex(xp), intent(in) :: v
+        complex(xp) :: y(2)
+        real(xp), parameter :: root2 = sqrt(2.0_xp)
+        complex(xp) :: point, xm1, h, jac, sn, cs, inv, one_minus, rq
+        select case (kind)
+        case (piece_start)
+            xm1 = c(5)*v*v
+            point = 1.0_xp + xm1
+            rq = 1.0_xp/sqrt((point + c(2))*((point - c(3))**2 + c(4)))
+            y(1) = c(1)*root2*2.0_xp*c(5)*sqrt(c(5))*v*v/point*rq
+            y(2) = 2.0_xp*c(5)*v*point*sqrt(point)*rq
+        case (piece_below, piece_above)
+            if (stretched) then
+                one_minus = (1.0_xp - v)*(1.0_xp + v)
+                h = sqrt(c(4))*2.0_xp*v/one_minus
+                jac = 2.0_xp/one_minus
+            else
+                h = v
+                jac = 1.0_xp/sqrt(h*h + c(4))
+            end if
+            if (kind == piece_below) h = -h
+            point = c(3) + h
+            xm1 = (c(3) - 1.0_xp) + h
+            rq = jac/sqrt(point + c(2))
+            y(1) = c(1)*root2*sqrt(xm1)/point*rq
+            y(2) = point*sqrt(point)*rq
+        case (piece_far)
+            point = 4.0_xp/v
+            rq = 4.0_xp/(v*v)/sqrt((point + c(2))*((point - c(3))**2 + c(4)))
+            y(1) = c(1)*root2*sqrt(point - 1.0_xp)/point*rq
+            y(2) = point*sqrt(point)*rq
+        case default
+            if (kind == piece_apse) then
+                one_minus = (1.0_xp - v)*(1.0_xp + v)
+                sn = sqrt(c(7)/c(6))*2.0_xp*v/one_minus
+                cs = sqrt((1.0_xp - sn)*(1.0_xp + sn))
+                xm1 = c(6)*cs*cs
+                point = 1.0_xp + xm1
+                rq = 4.0_xp/(sqrt(c(6))*cs*one_minus)/sqrt(point + c(2))
+            else
+                inv = 1.0_xp/(1.0_xp + v*v)
+                sn = 2.0_xp*v*inv
+                cs = (1.0_xp - v)*(1.0_xp + v)*inv
+                if (kind == piece_arch_start) then
+                    h = sn
+                    sn = cs
+                    cs = h
+                end if
+                xm1 = c(6)*cs*cs
+                point = 1.0_xp + xm1
+                rq = 4.0_xp*inv/sqrt((c(7) + c(6)*sn*sn)*(point + c(2)))
+            end if
+            y(1) = c(1)*root2*xm1/point*rq
+            y(2) = point*sqrt(point)*(sqrt(c(6))*cs)*rq
+        end select
+    end function angle_length_c
+
+    !> The panels of one piece and the rule (index into the ladder) of each, aiming at
+    !! `digits`: bisection until every panel's Bernstein ellipse allows the digits with
+    !! at most `max_nodes` nodes. status_no_convergence past `max_panels`.
+    pure subroutine plan_panels(curve, piece, digits, lo, hi, which, count, status)
+        type(panel_curve), intent(in) :: curve
+        type(panel_piece), intent(in) :: piece
+        real(real64), intent(in) :: digits
+        real(qp), intent(out) :: lo(max_panels), hi(max_panels)
+        integer, intent(out) :: which(max_panels), count, status
+        complex(real64) :: points(16)
+        real(qp) :: stack_lo(max_panels), stack_hi(max_panels), a, b
+        integer :: top, n, j, np
+        count = 0
+        status = status_ok
+        if (.not. (piece%upper > piece%lower)) return
+        call singular_points(curve, piece, points, np)
+        top = 1
+        stack_lo(1) = piece%lower
+        stack_hi(1) = piece%upper
+        do while (top > 0)
+            a = stack_lo(top)
+            b = stack_hi(top)
+            top = top - 1
+            n = nodes_for(points(1:np), real(a, real64), real(b, real64), digits)
+            if (n <= max_nodes .or. b - a <= 1.0e-3_qp*epsilon(1.0_real64)*abs(b)) then
+                if (count >= max_panels) then
+                    status = status_no_convergence
+                    return
+                end if
+                count = count + 1
+                lo(count) = a
+                hi(count) = b
+                which(count) = size(ladder)
+                do j = size(ladder), 1, -1
+                    if (ladder(j) >= n) which(count) = j
+                end do
+            else
+                if (top + 2 > max_panels) then
+                    status = status_no_convergence
+                    return
+                end if
+                ! the half nearer the start is integrated first (pushed last)
+                stack_lo(top + 1) = 0.5_qp*(a + b)
+                stack_hi(top + 1) = b
+                stack_lo(top + 2) = a
+                stack_hi(top + 2) = 0.5_qp*(a + b)
+                top = top + 2
+            end if
+        end do
+    end subroutine plan_panels
+
+    !> Gauss nodes for `digits` on [a, b] given the singular points (huge if more than
+    !! `max_nodes`). z -+ 1 are formed from the distances to the ends, so that a point
+    !! next to an end keeps its relative distance.
+    pure function nodes_for(points, a, b, digits) result(n)
+        complex(real64), intent(in) :: points(:)
+        real(real64), intent(in) :: a, b, digits
+        integer :: n
+        complex(real64) :: z_plus, z_minus, root
+        real(real64) :: rho, rho_min, wanted
+        integer :: k
+        rho_min = huge(1.0_real64)
+        do k = 1, size(points)
+            z_plus = 2.0_real64*(points(k) - a)/(b - a)
+            z_minus = 2.0_real64*(points(k) - b)/(b - a)
+            root = sqrt(z_minus)*sqrt(z_plus)
+            rho = max(abs(z_plus - 1.0_real64 + root), abs(z_plus - 1.0_real64 - root))
+            rho_min = min(rho_min, rho)
+        end do
+        n = huge(1)
+        if (.not. rho_min == rho_min .or. rho_min <= 1.0_real64) return
+        wanted = digits*log(10.0_real64)/(2.0_real64*log(rho_min))
+        if (wanted > real(max_nodes, real64)) return
+        n = max(ceiling(wanted), ladder(1))
+    end function nodes_for
+
+    !> The singular points of the piece's integrands in its variable (double precision).
+    pure subroutine singular_points(curve, piece, points, np)
+        type(panel_curve), intent(in) :: curve
+        type(panel_piece), intent(in) :: piece
+        complex(real64), intent(out) :: points(16)
+        integer, intent(out) :: np
+        complex(real64) :: x(4), c, i1
+        real(real64) :: a, p, w, rm1, d, s(3)
+        integer :: k
+        i1 = (0.0_real64, 1.0_real64)
+        np = 0
+        points = (0.0_real64, 0.0_real64)
+        p = real(curve%p, real64)
+        if (.not. curve%bounded) then
+            a = real(curve%a, real64)
+            w = sqrt(real(curve%beta, real64))
+            ! the zeros of x Q(x)
+            x = [(0.0_real64, 0.0_real64), cmplx(-p, 0.0_real64, real64), a + i1*w, a - i1*w]
+            select case (piece%kind)
+            case (piece_start)
+                do k = 1, 4
+                    c = sqrt((x(k) - 1.0_real64)/real(curve%span, real64))
+                    call add(points, np, c)
+                    call add(points, np, -c)
+                end do
+            case (piece_far)
+                call add(points, np, (0.0_real64, 0.0_real64))
+                call add(points, np, cmplx(4.0_real64, 0.0_real64, real64))
+                do k = 2, 4
+                    if (abs(x(k)) > 0.0_real64) call add(points, np, 4.0_real64/x(k))
+                end do
+            case default
+                ! h = -+(x - a): the zeros 0, -P and x = 1 (sqrt(x - 1)); the pair at
+                ! h = +-i w is cancelled by the sinh map, else a singularity of the jacobian
+                x(4) = (1.0_real64, 0.0_real64)
+                do k = 1, 4
+                    if (k == 3) cycle
+                    c = merge(-1.0_real64, 1.0_real64, piece%kind == piece_below)*(x(k) - a)
+                    if (piece%stretched) then
+                        c = asinh(c/w)
+                        call add(points, np, tanh(0.5_real64*c))
+                        call add(points, np, tanh(0.5_real64*(i1*pi_64() - c)))
+                    else
+                        call add(points, np, c)
+                    end if
+                end do
+                if (piece%stretched) then
+                    ! the map's poles t = +-1
+                    call add(points, np, (1.0_real64, 0.0_real64))
+                    call add(points, np, (-1.0_real64, 0.0_real64))
+                else
+                    call add(points, np, i1*w)
+                    call add(points, np, -i1*w)
+                end if
+            end select
+            return
+        end if
+        rm1 = real(curve%rm1, real64)
+        d = real(curve%d, real64)
+        if (piece%kind == piece_apse) then
+            ! sin(nu/2) = sqrt(d/(R-1)) sinh(xi) = +-1; x + P = 0; x = 0
+            s = [sqrt(rm1/d), sqrt((1.0_real64 + rm1 + p)/d), sqrt((1.0_real64 + rm1)/d)]
+            ! in w = tanh(xi/2); the map's poles w = +-1
+            do k = 1, 3
+                c = asinh(cmplx(s(k), 0.0_real64, real64))
+                call add(points, np, tanh(0.5_real64*c))
+                call add(points, np, tanh(-0.5_real64*c))
+                call add(points, np, tanh(0.5_real64*(i1*pi_64() - c)))
+            end do
+            call add(points, np, (1.0_real64, 0.0_real64))
+            call add(points, np, (-1.0_real64, 0.0_real64))
+            return
+        end if
+        ! nu: cos(nu) = 2 (x - 1)/(R - 1) - 1 at x = R + d (1 + 2 d/(R-1)), 0 and -P
+        ! (-(1 + 2 (1 + P)/(R-1))): nu = 2i asinh(sqrt(d/(R-1))) and
+        ! pi + 2i asinh(sqrt(1/(R-1))), pi + 2i asinh(sqrt((1 + P)/(R-1)))
+        s = [sqrt(d/rm1), sqrt(1.0_real64/rm1), sqrt((1.0_real64 + p)/rm1)]
+        ! in v = tan(nu/4) (or tan(mu/4), mu = pi - nu); the map's poles v = +-i
+        do k = 1, 3
+            c = 2.0_real64*i1*asinh(s(k))
+            if (k > 1) c = c + pi_64()
+            if (piece%kind == piece_arch_start) c = pi_64() - c
+            ! nu + 2 pi k: tan(nu/4) and -cot(nu/4)
+            call add(points, np, tan(0.25_real64*c))
+            call add(points, np, tan(-0.25_real64*c))
+            call add(points, np, -1.0_real64/tan(0.25_real64*c))
+            call add(points, np, 1.0_real64/tan(0.25_real64*c))
+        end do
+        call add(points, np, i1)
+        call add(points, np, -i1)
+    end subroutine singular_points
+
+    pure subroutine add(points, np, point)
+        complex(real64), intent(inout) :: points(:)
+        integer, intent(inout) :: np
+        complex(real64), intent(in) :: point
+        ! points at infinity (or not finite) bound nothing
+        if (.not. abs(point) < huge(1.0_real64)) return
+        if (np < size(points)) then
+            np = np + 1
+            points(np) = point
+        end if
+    end subroutine add
+
+    pure real(real64) function pi_64()
+        pi_64 = real(pi, real64)
+    end function pi_64
+
+    !> theta, s, t integrands (binary128) at the piece variable v; the formulas of
+    !! `brachistochrone_repulsive` (see its notes), with the maps in rational form:
+    !! stretched h = sqrt(beta) 2t/(1 - t^2) (t = tanh(xi/2), dxi = 2 dt/(1 - t^2));
+    !! bounded sin(nu/2) = 2v/(1 + v^2), cos(nu/2) = (1 - v^2)/(1 + v^2) (v = tan(nu/4),
+    !! dnu = 4 dv/(1 + v^2); swapped for mu = pi - nu); apse sin(nu/2) = c 2w/(1 - w^2).
+    !! No elementary function but square roots (`inverse_sqrt`, within 2 ulp).
+    pure subroutine integrands(c, piece, v, y)
+        type(panel_curve), intent(in) :: c   !! the curve's numbers
+        type(panel_piece), intent(in) :: piece !! kind (and stretched) of the piece
+        real(qp), intent(in) :: v            !! the piece's variable
+        real(qp), intent(out) :: y(3)        !! theta, s, t integrands
+        call weighted_integrands(prepare(c), piece%kind, piece%stretched, v, 1.0_qp, y)
+    end subroutine integrands
+
+    !> `integrands` times the weight w, with the curve's constants prepared.
+    pure subroutine weighted_integrands(pc, kind, stretched, v, w, y)
+        type(prepared_curve), intent(in) :: pc
+        integer, intent(in) :: kind
+        logical, intent(in) :: stretched
+        real(qp), intent(in) :: v, w
+        real(qp), intent(out) :: y(3)
+        real(qp), parameter :: half_root2 = 0.5_qp*sqrt2
+        real(qp) :: point, xm1, h, sn, cs, rw, rx, ip, inv, one_minus, p2
+        associate (c => pc%c)
+        select case (kind)
+        case (piece_start)
+            xm1 = c%span*v*v
+            point = 1.0_qp + xm1
+            rw = w*inverse_sqrt((point + c%p)*((point - c%a)**2 + c%beta))
+            ip = inverse_sqrt(point)
+            p2 = point*point
+            y(1) = pc%k_root2*2.0_qp*pc%span_root_span*v*v*(ip*ip)*rw
+            y(2) = 2.0_qp*c%span*v*p2*ip*rw
+            y(3) = sqrt2*pc%root_span*p2*rw
+            return
+        case (piece_below, piece_above)
+            if (stretched) then
+                one_minus = (1.0_qp - v)*(1.0_qp + v)
+                inv = 2.0_qp/one_minus
+                h = pc%root_beta*v*inv
+                point = c%a + merge(-h, h, kind == piece_below)
+                rw = w*inv*inverse_sqrt(point + c%p)
+            else
+                h = v
+                point = c%a + merge(-h, h, kind == piece_below)
+                rw = w*inverse_sqrt((v*v + c%beta)*(point + c%p))
+            end if
+            xm1 = pc%a_m1 + merge(-h, h, kind == piece_below)
+        case (piece_far)
+            point = far_start/v
+            xm1 = point - 1.0_qp
+            rw = w*far_start/(v*v)*inverse_sqrt((point + c%p)*((point - c%a)**2 + c%beta))
+        case default
+            if (kind == piece_apse) then
+                one_minus = (1.0_qp - v)*(1.0_qp + v)
+                inv = 2.0_qp/one_minus
+                sn = pc%root_ratio*v*inv
+                one_minus = (1.0_qp - sn)*(1.0_qp + sn)
+                rx = inverse_sqrt(one_minus)
+                cs = one_minus*rx
+                xm1 = c%rm1*one_minus
+                point = 1.0_qp + xm1
+                rw = w*2.0_qp*inv*rx/pc%root_rm1*inverse_sqrt(point + c%p)
+            else
+                inv = 1.0_qp/(1.0_qp + v*v)
+                sn = 2.0_qp*v*inv
+                cs = (1.0_qp - v)*(1.0_qp + v)*inv
+                if (kind == piece_arch_start) then
+                    h = sn
+                    sn = cs
+                    cs = h
+                end if
+                xm1 = c%rm1*cs*cs
+                point = 1.0_qp + xm1
+                rw = w*4.0_qp*inv*inverse_sqrt((c%d + c%rm1*sn*sn)*(point + c%p))
+            end if
+            ip = inverse_sqrt(point)
+            p2 = point*point
+            y(1) = pc%k_root2*xm1*(ip*ip)*rw
+            y(2) = p2*ip*(pc%root_rm1*cs)*rw
+            y(3) = half_root2*p2*rw
+            return
+        end select
+        ! unbounded pieces beyond the start: sqrt(x - 1) and sqrt(x) explicit
+        rx = inverse_sqrt(xm1)
+        ip = inverse_sqrt(point)
+        p2 = point*point
+        y(1) = pc%k_root2*(xm1*rx)*(ip*ip)*rw
+        y(2) = p2*ip*rw
+        y(3) = half_root2*p2*rx*rw
+        end associate
+    end subroutine weighted_integrands
+
+    !> theta's integrand in hardware precision (the maps of `integrands`);
+    !! c = [K, P, a, beta, span, R - 1, d].
+    pure function angle_xp(c, kind, stretched, v) result(y)
+        real(xp), intent(in) :: c(7)
+        integer, intent(in) :: kind
+        logical, intent(in) :: stretched
+        real(xp), intent(in) :: v
+        real(xp) :: y
+        real(xp), parameter :: root2 = sqrt(2.0_xp)
+        real(xp) :: point, xm1, h, jac, sn, cs, inv, one_minus
+        select case (kind)
+        case (piece_start)
+            xm1 = c(5)*v*v
+            point = 1.0_xp + xm1
+            y = c(1)*root2*2.0_xp*c(5)*sqrt(c(5))*v*v/(point* &
+                sqrt((point + c(2))*((point - c(3))**2 + c(4))))
+        case (piece_below, piece_above)
+            if (stretched) then
+                one_minus = (1.0_xp - v)*(1.0_xp + v)
+                h = sqrt(c(4))*2.0_xp*v/one_minus
+                jac = 2.0_xp/one_minus
+            else
+                h = v
+                jac = 1.0_xp/sqrt(h*h + c(4))
+            end if
+            if (kind == piece_below) h = -h
+            point = c(3) + h
+            xm1 = (c(3) - 1.0_xp) + h
+            y = c(1)*root2*sqrt(xm1)/(point*sqrt(point + c(2)))*jac
+        case (piece_far)
+            point = 4.0_xp/v
+            y = c(1)*root2*sqrt(point - 1.0_xp)/(point* &
+                sqrt((point + c(2))*((point - c(3))**2 + c(4))))*4.0_xp/(v*v)
+        case default
+            if (kind == piece_apse) then
+                one_minus = (1.0_xp - v)*(1.0_xp + v)
+                sn = sqrt(c(7)/c(6))*2.0_xp*v/one_minus
+                cs = sqrt((1.0_xp - sn)*(1.0_xp + sn))
+                xm1 = c(6)*cs*cs
+                point = 1.0_xp + xm1
+                y = c(1)*root2*xm1/(point*sqrt(point + c(2)))*4.0_xp/(sqrt(c(6))*cs*one_minus)
+            else
+                inv = 1.0_xp/(1.0_xp + v*v)
+                sn = 2.0_xp*v*inv
+                cs = (1.0_xp - v)*(1.0_xp + v)*inv
+                if (kind == piece_arch_start) then
+                    h = sn
+                    sn = cs
+                    cs = h
+                end if
+                xm1 = c(6)*cs*cs
+                point = 1.0_xp + xm1
+                y = c(1)*root2*xm1/(point*sqrt((c(7) + c(6)*sn*sn)*(point + c(2))))*4.0_xp*inv
+            end if
+        end select
+    end function angle_xp
+
+end module brachistochrone_repulsive_panels
