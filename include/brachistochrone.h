@@ -26,9 +26,11 @@
  * 14: unknown field name, 15: bad exponent). Unknown names and bad exponents return a
  * status; nothing aborts.
  *
- * Thread safety: every function may be called from several threads at once. The
- * inverse-square model (about 70 ms to build) is built on the first "inverse_square"
- * call, once, and shared read-only afterwards.
+ * Thread safety: every function may be called from several threads at once. A field
+ * (the inverse-square model or a power law's rules: about 50 ms of CPU to build) is
+ * built on the first call that names it (for "power": with that exponent), once, and
+ * shared read-only afterwards; up to 16 fields are kept, a 17th distinct one is built
+ * for its call only.
  */
 #ifndef BRACHISTOCHRONE_H
 #define BRACHISTOCHRONE_H

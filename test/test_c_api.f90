@@ -41,6 +41,7 @@ contains
         call check_quad()
         call check_missing_values()
         call check_many()
+        call check_kept_fields()
     end subroutine run_c_api_tests
 
     !> A NUL-terminated copy of `text` (static, so that c_loc is valid).
@@ -186,6 +187,36 @@ contains
         call check(failures == 6 .and. all(status == status_unknown_field) .and. &
                    all(ieee_is_nan(t)), 'solve_many: unknown force on every row')
     end subroutine check_many
+
+    !> Fields are kept between calls, keyed by name and exponent, up to 16; more distinct
+    !! ones are built per call. 20 power laws with n = 2 + k 2^-40 (each a different
+    !! field, all within 2e-11 of the inverse-square law) give Table 1 row 4 to 1e-9, the
+    !! kept ones again afterwards; 'power' with n = 3 after n = 2 is not served n = 2's.
+    subroutine check_kept_fields()
+        character(kind=c_char), allocatable, target :: force(:)
+        real(c_double), target :: r, t, r3
+        integer(c_int) :: status
+        logical :: ok
+        integer :: k, pass
+        real(c_double), parameter :: step = 2.0_c_double**(-40)
+        force = c_string('power')
+        ok = .true.
+        do pass = 1, 2
+            do k = 0, 19
+                status = brachistochrone_solve(c_loc(force), 2.0_c_double + k*step, &
+                                               table_rho(4), table_psi(4), c_loc(r), &
+                                               c_null_ptr, c_loc(t))
+                ok = ok .and. status == status_ok .and. &
+                     abs(r - table_r(4)) <= 1e-9_c_double .and. &
+                     abs(t - table_t(4)) <= 1e-9_c_double
+            end do
+        end do
+        call check(ok, 'C interface: 20 distinct power laws twice (16 kept, 4 built per call)')
+        status = brachistochrone_solve(c_loc(force), 3.0_c_double, table_rho(4), &
+                                       table_psi(4), c_loc(r3), c_null_ptr, c_null_ptr)
+        call check(status == status_ok .and. abs(r3 - table_r(4)) > 1e-3_c_double, &
+                   'C interface: power n = 3 after n = 2 is another field')
+    end subroutine check_kept_fields
 
     !> Four OpenMP threads call brachistochrone_solve at once, each on all of Table 1; run
     !! first, so the threads also race to build the shared inverse-square model.

@@ -9,10 +9,13 @@
 !! kappa(rho), the greatest lower bound), all three when the status is an error. Any
 !! output pointer may be NULL (that output is not written).
 !!
-!! Thread safety: no shared mutable state except the inverse-square field (Gauss rules and
-!! the tables of the whole half-arch, about 55 ms of CPU to build), which is built once, inside
-!! an OpenMP critical section, and only read afterwards; the messages are filled the same
-!! way. Every function may be called from several threads at once.
+!! Thread safety: the only shared mutable state is a cache of built fields (the
+!! inverse-square model's Gauss rules and tables cost about 50 ms of CPU, a power law's
+!! rules about as much, the repulsive field's a few ms): the first call that names a field
+!! (name and, for 'power', exponent) builds it inside an OpenMP critical section and keeps
+!! it; later calls only read it. At most `max_cached` fields are kept; a call naming yet
+!! another one builds it for that call only. The messages are filled once the same way.
+!! Every function may be called from several threads at once.
 !!
 !! Statuses (brachistochrone_status): status_ok; status_unknown_field for a name that is
 !! not a field's (or NULL); status_bad_exponent for 'power' with an exponent that is not a
@@ -41,16 +44,27 @@ module brachistochrone_c_api
     !> Status codes with a message table entry, and the room for each message.
     integer, parameter :: max_code = 63, message_length = 200
 
-    !> A field named by a string, ready to solve endpoints: its own, or the shared
-    !! inverse-square field.
+    !> Most fields kept built (distinct names and power-law exponents).
+    integer, parameter :: max_cached = 16
+
+    !> A field named by a string, ready to solve endpoints: an entry of the cache, or
+    !! (cache full) its own.
     type :: named_field
         class(brachistochrone_field), allocatable :: own
-        logical :: shared = .false.
+        integer :: entry = 0  !! index in `cache`; 0: `own`
     end type named_field
 
-    !> The inverse-square field (its model), built once (see the module notes).
-    class(brachistochrone_field), allocatable, save :: shared_field
-    logical, save :: shared_field_ready = .false.
+    !> A built field and what it was built from.
+    type :: cached_field
+        class(brachistochrone_field), allocatable :: field
+        character(len=max_name_length) :: name = ''
+        real(qp) :: exponent = 0.0_qp  !! 0 except for 'power'
+    end type cached_field
+
+    !> The fields built so far (see the module notes); entries 1..cached are complete and
+    !! never change again.
+    type(cached_field), save :: cache(max_cached)
+    integer, save :: cached = 0
     !> NUL-terminated messages, filled once; c_loc of a column is handed to C.
     character(kind=c_char), save, target :: messages(message_length, -1:max_code)
     logical, save :: messages_ready = .false.
@@ -175,26 +189,37 @@ contains
         text = c_loc(messages(1, k))
     end function brachistochrone_status_message
 
-    !> The field named `name` from the library's factory (`new_field`): status_ok,
-    !! status_unknown_field, or status_bad_exponent. The inverse-square field is the
-    !! shared one, built on first use.
+    !> The field named `name` from the library's factory (`new_field`), built once and
+    !! kept (`cache`): status_ok, status_unknown_field, or status_bad_exponent.
     subroutine prepare_field(name, exponent, field, status)
         character(len=*), intent(in) :: name    !! 'inverse_square', 'power', ...
         real(qp), intent(in) :: exponent        !! n of F = mu/r^n, used by 'power' only
         type(named_field), intent(out) :: field !! ready to solve
         integer(c_int), intent(out) :: status   !! what went wrong
-        integer :: code
+        real(qp) :: key
+        integer :: code, k
         status = status_unknown_field
         ! ask the factory only about names it knows (it would build a model otherwise)
         if (len(name) == 0 .or. index(field_names, "'"//name//"'") == 0) return
-        if (name == 'inverse_square') then
-            call build_shared_field()
-            field%shared = .true.
-            status = status_ok
-        else
+        key = merge(exponent, 0.0_qp, name == 'power')
+        code = status_ok
+        !$omp critical (brachistochrone_c_api_model)
+        do k = 1, cached
+            if (cache(k)%name == name .and. cache(k)%exponent == key) field%entry = k
+        end do
+        if (field%entry == 0 .and. cached < max_cached) then
+            call new_field(name, exponent, cache(cached + 1)%field, code)
+            if (code == status_ok) then
+                cache(cached + 1)%name = name
+                cache(cached + 1)%exponent = key
+                cached = cached + 1
+                field%entry = cached
+            end if
+        else if (field%entry == 0) then
             call new_field(name, exponent, field%own, code)
-            status = int(code, c_int)
         end if
+        !$omp end critical (brachistochrone_c_api_model)
+        status = int(code, c_int)
     end subroutine prepare_field
 
     !> Solve endpoint (rho, psi) in the field named at `force`; a bad name or exponent is
@@ -219,24 +244,12 @@ contains
         type(named_field), intent(in) :: field  !! from prepare_field, status_ok
         real(qp), intent(in) :: rho, psi        !! the endpoint
         type(endpoint_solution) :: solution
-        if (field%shared) then
-            solution = shared_field%solve(rho, psi)
+        if (field%entry > 0) then
+            solution = cache(field%entry)%field%solve(rho, psi)
         else
             solution = field%own%solve(rho, psi)
         end if
     end function solve_in_field
-
-    !> Build the inverse-square field on the first call (one thread builds, the others
-    !! wait); afterwards it is only read.
-    subroutine build_shared_field()
-        integer :: code
-        !$omp critical (brachistochrone_c_api_model)
-        if (.not. shared_field_ready) then
-            call new_field('inverse_square', 0.0_qp, shared_field, code)
-            shared_field_ready = .true.
-        end if
-        !$omp end critical (brachistochrone_c_api_model)
-    end subroutine build_shared_field
 
     !> The NUL-terminated string at `force` (at most max_name_length characters; a
     !! longer or NULL string gives a name that is not a field's).
