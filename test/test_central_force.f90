@@ -481,6 +481,14 @@ contains
                 end do
             end do
         end do
+        ! the reduced argument next to its largest, 2^-16 (the series' tail largest)
+        do j = -255, 255
+            x = real(j, qp)/256.0_qp + sign(real(mod(abs(j), 256), qp) + 0.999_qp, &
+                                          real(j, qp))/65536.0_qp
+            if (abs(x) < 0.5_qp .and. x /= 0.0_qp) worst = max(worst, &
+                abs(fast_expm1(x) - expm1(x))/(eps_qp*abs(expm1(x))))
+            worst = max(worst, abs(fast_exp(x) - exp(x))/(eps_qp*exp(x)))
+        end do
         step = 1.0_qp/3.0_qp
         do j = -3000, 3000
             x = real(j, qp)*step

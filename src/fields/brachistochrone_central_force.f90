@@ -462,8 +462,8 @@ contains
         real(xp), intent(out), optional :: slopes(2)
         type(panel) :: panels(max_panels)
         real(qp) :: part(3), last(3), share, v, lambda, delta, jacobian, q, omq, qv, rx
-        real(qp) :: root, inverse_root, common, g(3), root_q
-        real(xp) :: part_xp(2), carry(2), carry_all(2), omq_xp, log_slope, half_slope
+        real(qp) :: inverse_root, common, g(3), root_q, weighted, width
+        real(xp) :: part_xp(2), carry(2), carry_all(2), log_slope, g_xp
         integer :: count, p, k, j
         call arch_panels(model, a, panels, count)
         sums = 0.0_qp
@@ -485,8 +485,9 @@ contains
             part = 0.0_qp
             part_xp = 0.0_xp
             carry = 0.0_xp
+            width = pan%hi - pan%lo
             do k = 1, model%gauss(j)%n
-                v = pan%lo + (pan%hi - pan%lo)*model%gauss(j)%offset(k)
+                v = pan%lo + width*model%gauss(j)%offset(k)
                 call node_point(pan%kind, pan%scale, a%big_lambda, v, lambda, delta, &
                                 jacobian)
                 if (present(slopes)) then
@@ -495,28 +496,31 @@ contains
                 else
                     call model%law%arch_terms(a%c, lambda, delta, q, omq, qv, rx, root_q)
                 end if
-                ! 1/sqrt(1 - q) and sqrt(q/(1 - q)) by a double seed and Newton steps
+                ! 1/sqrt(1 - q) and sqrt(q/(1 - q)) by a double seed and Newton steps;
+                ! the Gauss weight folded into the Jacobian (g: weighted integrands)
                 inverse_root = inverse_sqrt(omq)
-                g(1) = root_q*inverse_root*jacobian
+                weighted = inverse_root*(jacobian*model%gauss(j)%weight(k))
+                g(1) = root_q*weighted
                 if (want_length_time) then
-                    root = omq*inverse_root
-                    common = inverse_root/(rx*(1.0_qp + root))*jacobian
+                    common = weighted/(rx*(1.0_qp + omq*inverse_root))
                     g(2) = q*common
                     g(3) = qv*common
                 else
                     g(2:3) = 0.0_qp
                 end if
-                part = part + model%gauss(j)%weight(k)*g
+                part = part + g
                 if (present(slopes)) then
-                    omq_xp = real(omq, xp)
-                    half_slope = 0.5_xp*model%gauss(j)%weight_xp(k)*log_slope/omq_xp
+                    ! g q'/(2 q (1 - q)) and e^lambda q'/(2 (1 - q)^(3/2)) = the same
+                    ! times sqrt(q)/rx (weighted)
+                    g_xp = real(g(1), xp)*(0.5_xp*log_slope/real(omq, xp))
                     ! compensated sums: the error bound of `arch_values` counts on it
-                    call add_compensated(part_xp, carry, half_slope*[real(g(1), xp), &
-                                         real(q*inverse_root*jacobian, xp)/real(rx, xp)])
+                    call add_compensated(part_xp, carry, &
+                                         [g_xp, g_xp*(real(root_q, xp)/real(rx, xp))])
                 end if
                 ! the node nearest the next panel
                 if (k == merge(1, model%gauss(j)%n, pan%kind >= kind_start .and. &
-                               pan%kind <= kind_start_root)) last = abs(g/jacobian)
+                               pan%kind <= kind_start_root)) &
+                    last = abs(g/(jacobian*model%gauss(j)%weight(k)))
             end do
             sums = sums + pan%weight*(pan%hi - pan%lo)*part
             if (present(slopes)) call add_compensated(slopes, carry_all, &
