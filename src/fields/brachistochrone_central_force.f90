@@ -1234,7 +1234,12 @@ contains
         if (.not. (x > lo .and. x < hi)) return
         x_next = x
         error = curve*dx*dx + abs(dx)*real(slopes(3)/abs(slopes(1)), qp)
-        if (.not. error <= 1.0e-35_qp*max(abs(x), floor)) return
+        ! below 1e-35 of the unknown, or, for the unknown R (below rho/2), moving Upsilon
+        ! by less than 1e-35 psi (within the rounding of psi: R-bar's conditioning, next
+        ! to the edge of the sector) and s by less than 1e-35 of itself
+        if (.not. (error <= 1.0e-35_qp*max(abs(x), floor) .or. (.not. prob%use_u .and. &
+                   error*abs(slope_next) <= 1.0e-35_qp*prob%psi .and. &
+                   error*abs(real(slopes(2), qp)*lambda_slope) <= 1.0e-35_qp*abs(s)))) return
         if (.not. abs(dx*lambda_slope*real(slopes(4), qp)) <= eps_qp*abs(s)) return
         solution%arclength = s + real(slopes(2), qp)*lambda_slope*dx
         solution%time = t - model%law%conserved(a%c)*f
