@@ -359,17 +359,20 @@ contains
                 image(1:2) = [point, -point]
             end if
             do m = 1, images
-                rho_min = min(rho_min, bernstein((2.0_real64*image(m) - (lo + hi))/(hi - lo)))
+                rho_min = min(rho_min, bernstein2((2.0_real64*image(m) - (lo + hi))/(hi - lo)))
             end do
         end do
-        log_rho = max(log(rho_min), 1.0e-3_real64)
+        log_rho = max(0.5_real64*log(rho_min), 1.0e-3_real64)
     contains
-        pure real(real64) function bernstein(x)
+        !> The square of the Bernstein parameter through x: the larger of |x -+ root|
+        !! (their product is 1), squared (no hypot).
+        pure real(real64) function bernstein2(x)
             complex(real64), intent(in) :: x
-            complex(real64) :: root
+            complex(real64) :: root, w
             root = sqrt(x*x - 1.0_real64)
-            bernstein = max(abs(x + root), abs(x - root))
-        end function bernstein
+            w = merge(x + root, x - root, real(conjg(x)*root) >= 0.0_real64)
+            bernstein2 = real(w)**2 + aimag(w)**2
+        end function bernstein2
     end function bernstein_log
 
     !> The rule (element of model%gauss) for `digits` digits on a panel. An n-point
@@ -389,6 +392,8 @@ contains
         target = real(max(digits, 2.0_qp), real64)*log(10.0_real64)
         best = huge(1.0_real64)
         do k = 1, size(fractions)
+            ! without growth the full ellipse is best
+            if (growth == 0.0_real64 .and. k > 1) exit
             lr = log_rho*fractions(k)
             need = (target + growth*(cosh(lr) - 1.0_real64))/(2.0_real64*0.95_real64*lr)
             best = min(best, need)
