@@ -1410,7 +1410,7 @@ contains
         type(endpoint_problem) :: prob
         real(qp) :: limit, apse_angle_rho, half, x, lo, hi, slope_q, curvature
         real(real64) :: f_lo, f_hi, slope
-        logical :: below, hardware, done
+        logical :: below, hardware, done, near
 
         solution%rho = rho
         solution%psi = psi
@@ -1447,7 +1447,20 @@ contains
             return
         end if
         hardware = self%law%has_terms_xp()
-        if (hardware) then
+        near = .false.
+        if (hardware .and. prob%use_u .and. prob%rho < 1.0_qp) then
+            ! B within 1e-16 of its apse angle (not at it): below what the early phase
+            ! resolves; the root from the slope next to u = 0
+            if (abs(f_lo) <= 1.0e-16_real64*real(psi, real64)) &
+                call apse_start(self, prob, hi, f_lo, x, slope_q, near)
+            if (near) then
+                curvature = 0.0_qp
+                solution%steps = solution%steps + 1
+            end if
+        end if
+        if (near) then
+            slope = real(slope_q, real64)
+        else if (hardware) then
             call hardware_phase(self, prob, lo, f_lo, hi, f_hi, x, slope_q, curvature, &
                                 solution%steps)
             slope = real(slope_q, real64)
@@ -1558,6 +1571,28 @@ contains
         solution%has_arclength = .true.
         solution%has_time = .true.
     end subroutine at_the_apse
+
+    !> B next to its apse angle (|f_lo| = |Theta(rho,rho) - psi| below the early phase's
+    !! resolution): Upsilon is linear in u next to u = 0 (the square-root end of the
+    !! integrals), so the root is u0 = -f_lo/c with c from one hardware-precision residual
+    !! at u1 = 1e-6 of the bracket (c to about 1e-6, u0 as well: the certified step's
+    !! error ~ (1e-6 u0)^2/bracket is far below 1e-35 u0). `found` unless u0 is not
+    !! within 1e-3 of the bracket [0, hi].
+    pure subroutine apse_start(model, prob, hi, f_lo, x, slope, found)
+        type(central_force_model), intent(in) :: model
+        type(endpoint_problem), intent(in) :: prob
+        real(qp), intent(in) :: hi
+        real(real64), intent(in) :: f_lo
+        real(qp), intent(out) :: x, slope
+        logical, intent(out) :: found
+        real(xp) :: u1, f1, d1, c
+        u1 = 1.0e-6_xp*real(hi, xp)
+        call residual_xp(model, prob, u1, .false., f1, d1)
+        c = (f1 - real(f_lo, xp))/u1
+        x = real(-real(f_lo, xp)/c, qp)
+        slope = real(c, qp)
+        found = x > 0.0_qp .and. x < 1.0e-3_qp*hi .and. ieee_is_finite(x)
+    end subroutine apse_start
 
     !> Which part of (0, rho] holds the root (Upsilon at R = rho/2), its unknown and
     !! bracket: u = sqrt(rho - R) on [0, sqrt(rho/2)], or y = log R on [y_lo, log(rho/2)]
