@@ -44,7 +44,8 @@
 !! a Newton step of relative size about 1e-18, certified when its curvature and slope
 !! errors are below 1e-35 of the unknown (otherwise the next step from there; secant
 !! steps as the last resort), s corrected along its slope and t by Hamilton-Jacobi
-!! (dt/dpsi = K at fixed rho). Other laws: a double-precision phase (regula falsi with
+!! (dt/dpsi = K at fixed rho). B within 1e-16 of its apse angle (below what the early
+!! phase resolves) starts from the slope next to u = 0 instead (`apse_start`). Other laws: a double-precision phase (regula falsi with
 !! the Anderson-Bjorck correction) and quad-precision secant steps (`quad_phase`).
 module brachistochrone_central_force
     use brachistochrone_kinds, only: qp, pi, eps_qp
