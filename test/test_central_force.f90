@@ -52,6 +52,7 @@ contains
         call fast_exponentials()
         call next_to_the_start()
         call two_root_finders()
+        call next_to_the_apse_angle()
         call general_references('power1.5', power_law(n=1.5_qp))
         call general_references('power3', power_law(n=3.0_qp))
         call general_references('logarithmic', logarithmic_law())
@@ -345,6 +346,57 @@ contains
         no_terms_xp = .false.
     end function no_terms_xp
 
+    !> B within 1e-16 of its apse angle, not at it (psi = Theta(rho,rho) (1 + k 1e-18)):
+    !! the root next to u = 0 from the slope there (`apse_start`, three evaluations)
+    !! against the double-precision phase with secant steps: s, t to >= 32 digits, the
+    !! gap rho - R-bar (= u^2, u ~ psi - Theta(rho,rho)) with its conditioning
+    !! psi/|psi - Theta(rho,rho)| credited.
+    subroutine next_to_the_apse_angle()
+        type(central_force_model) :: hardware, secant
+        type(endpoint_solution) :: a, b
+        real(qp), parameter :: radii(4) = [1.0e-30_qp, 1.0e-6_qp, 0.5_qp, 0.99_qp]
+        real(qp), parameter :: offsets(6) = [-30.0_qp, -3.0_qp, -1.0_qp, 1.0_qp, 3.0_qp, &
+                                             30.0_qp]
+        real(qp), parameter :: exponents(3) = [1.5_qp, 6.0_qp, 10.0_qp]
+        real(qp) :: psi, apse, worst, digits(3)
+        integer :: law, i, k, status, most_steps, failed
+        call section('central force: B within 1e-16 of its apse angle')
+        worst = 99.0_qp
+        most_steps = 0
+        failed = 0
+        do law = 1, 3
+            hardware = new_central_force_model(power_law(n=exponents(law)))
+            secant = new_central_force_model(secant_power_law(n=exponents(law)))
+            do i = 1, size(radii)
+                call hardware%apse_angle(radii(i), apse, status)
+                do k = 1, size(offsets)
+                    psi = apse*(1.0_qp + offsets(k)*1.0e-18_qp)
+                    a = hardware%solve(radii(i), psi)
+                    b = secant%solve(radii(i), psi)
+                    if (a%status /= status_ok .or. b%status /= status_ok) then
+                        failed = failed + 1
+                        cycle
+                    end if
+                    most_steps = max(most_steps, a%steps)
+                    digits = [digits_of_agreement(a%apse_gap, b%apse_gap) + &
+                              log10(psi/abs(psi - apse)), &
+                              digits_of_agreement(a%arclength, b%arclength), &
+                              digits_of_agreement(a%time, b%time)]
+                    if (minval(digits) < 32.0_qp) write (output_unit, &
+                        '(5x,a,f6.2,2es12.3,3f7.2)') 'weakest: n, rho, offset, digits', &
+                        exponents(law), radii(i), offsets(k), digits
+                    worst = min(worst, minval(digits))
+                end do
+            end do
+        end do
+        write (output_unit, '(a,f6.2,a,i0,a,i0)') '   n = 1.5, 6, 10, 4 radii, 6 offsets: '// &
+            'fewest digits (gap credited) ', worst, ', most evaluations ', most_steps, &
+            ', unsolved ', failed
+        call check(failed == 0 .and. worst >= 32.0_qp, &
+                   'next to the apse angle: = double phase and secant steps to >= 32 digits')
+        call check(most_steps <= 4, 'next to the apse angle: at most 4 evaluations')
+    end subroutine next_to_the_apse_angle
+
     !> The hardware-precision early phase with one certified full-precision step against
     !! the double-precision phase with secant steps, on a grid of endpoints scaled to the
     !! sector: R-bar, s and t with their conditioning credited. Next to the sector's edge
@@ -480,6 +532,14 @@ contains
                     worst = max(worst, abs(fast_exp(x) - exp(x))/(eps_qp*exp(x)))
                 end do
             end do
+        end do
+        ! the reduced argument next to its largest, 2^-16 (the series' tail largest)
+        do j = -255, 255
+            x = real(j, qp)/256.0_qp + sign(real(mod(abs(j), 256), qp) + 0.999_qp, &
+                                          real(j, qp))/65536.0_qp
+            if (abs(x) < 0.5_qp .and. x /= 0.0_qp) worst = max(worst, &
+                abs(fast_expm1(x) - expm1(x))/(eps_qp*abs(expm1(x))))
+            worst = max(worst, abs(fast_exp(x) - exp(x))/(eps_qp*exp(x)))
         end do
         step = 1.0_qp/3.0_qp
         do j = -3000, 3000

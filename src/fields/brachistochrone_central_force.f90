@@ -44,7 +44,8 @@
 !! a Newton step of relative size about 1e-18, certified when its curvature and slope
 !! errors are below 1e-35 of the unknown (otherwise the next step from there; secant
 !! steps as the last resort), s corrected along its slope and t by Hamilton-Jacobi
-!! (dt/dpsi = K at fixed rho). Other laws: a double-precision phase (regula falsi with
+!! (dt/dpsi = K at fixed rho). B within 1e-16 of its apse angle (below what the early
+!! phase resolves) starts from the slope next to u = 0 instead (`apse_start`). Other laws: a double-precision phase (regula falsi with
 !! the Anderson-Bjorck correction) and quad-precision secant steps (`quad_phase`).
 module brachistochrone_central_force
     use brachistochrone_kinds, only: qp, pi, eps_qp
@@ -359,17 +360,20 @@ contains
                 image(1:2) = [point, -point]
             end if
             do m = 1, images
-                rho_min = min(rho_min, bernstein((2.0_real64*image(m) - (lo + hi))/(hi - lo)))
+                rho_min = min(rho_min, bernstein2((2.0_real64*image(m) - (lo + hi))/(hi - lo)))
             end do
         end do
-        log_rho = max(log(rho_min), 1.0e-3_real64)
+        log_rho = max(0.5_real64*log(rho_min), 1.0e-3_real64)
     contains
-        pure real(real64) function bernstein(x)
+        !> The square of the Bernstein parameter through x: the larger of |x -+ root|
+        !! (their product is 1), squared (no hypot).
+        pure real(real64) function bernstein2(x)
             complex(real64), intent(in) :: x
-            complex(real64) :: root
+            complex(real64) :: root, w
             root = sqrt(x*x - 1.0_real64)
-            bernstein = max(abs(x + root), abs(x - root))
-        end function bernstein
+            w = merge(x + root, x - root, real(conjg(x)*root) >= 0.0_real64)
+            bernstein2 = real(w)**2 + aimag(w)**2
+        end function bernstein2
     end function bernstein_log
 
     !> The rule (element of model%gauss) for `digits` digits on a panel. An n-point
@@ -389,6 +393,8 @@ contains
         target = real(max(digits, 2.0_qp), real64)*log(10.0_real64)
         best = huge(1.0_real64)
         do k = 1, size(fractions)
+            ! without growth the full ellipse is best
+            if (growth == 0.0_real64 .and. k > 1) exit
             lr = log_rho*fractions(k)
             need = (target + growth*(cosh(lr) - 1.0_real64))/(2.0_real64*0.95_real64*lr)
             best = min(best, need)
@@ -462,8 +468,8 @@ contains
         real(xp), intent(out), optional :: slopes(2)
         type(panel) :: panels(max_panels)
         real(qp) :: part(3), last(3), share, v, lambda, delta, jacobian, q, omq, qv, rx
-        real(qp) :: root, inverse_root, common, g(3), root_q
-        real(xp) :: part_xp(2), carry(2), carry_all(2), omq_xp, log_slope, half_slope
+        real(qp) :: inverse_root, common, g(3), root_q, weighted, width
+        real(xp) :: part_xp(2), carry(2), carry_all(2), log_slope, g_xp
         integer :: count, p, k, j
         call arch_panels(model, a, panels, count)
         sums = 0.0_qp
@@ -485,8 +491,9 @@ contains
             part = 0.0_qp
             part_xp = 0.0_xp
             carry = 0.0_xp
+            width = pan%hi - pan%lo
             do k = 1, model%gauss(j)%n
-                v = pan%lo + (pan%hi - pan%lo)*model%gauss(j)%offset(k)
+                v = pan%lo + width*model%gauss(j)%offset(k)
                 call node_point(pan%kind, pan%scale, a%big_lambda, v, lambda, delta, &
                                 jacobian)
                 if (present(slopes)) then
@@ -495,28 +502,31 @@ contains
                 else
                     call model%law%arch_terms(a%c, lambda, delta, q, omq, qv, rx, root_q)
                 end if
-                ! 1/sqrt(1 - q) and sqrt(q/(1 - q)) by a double seed and Newton steps
+                ! 1/sqrt(1 - q) and sqrt(q/(1 - q)) by a double seed and Newton steps;
+                ! the Gauss weight folded into the Jacobian (g: weighted integrands)
                 inverse_root = inverse_sqrt(omq)
-                g(1) = root_q*inverse_root*jacobian
+                weighted = inverse_root*(jacobian*model%gauss(j)%weight(k))
+                g(1) = root_q*weighted
                 if (want_length_time) then
-                    root = omq*inverse_root
-                    common = inverse_root/(rx*(1.0_qp + root))*jacobian
+                    common = weighted/(rx*(1.0_qp + omq*inverse_root))
                     g(2) = q*common
                     g(3) = qv*common
                 else
                     g(2:3) = 0.0_qp
                 end if
-                part = part + model%gauss(j)%weight(k)*g
+                part = part + g
                 if (present(slopes)) then
-                    omq_xp = real(omq, xp)
-                    half_slope = 0.5_xp*model%gauss(j)%weight_xp(k)*log_slope/omq_xp
+                    ! g q'/(2 q (1 - q)) and e^lambda q'/(2 (1 - q)^(3/2)) = the same
+                    ! times sqrt(q)/rx (weighted)
+                    g_xp = real(g(1), xp)*(0.5_xp*log_slope/real(omq, xp))
                     ! compensated sums: the error bound of `arch_values` counts on it
-                    call add_compensated(part_xp, carry, half_slope*[real(g(1), xp), &
-                                         real(q*inverse_root*jacobian, xp)/real(rx, xp)])
+                    call add_compensated(part_xp, carry, &
+                                         [g_xp, g_xp*(real(root_q, xp)/real(rx, xp))])
                 end if
                 ! the node nearest the next panel
                 if (k == merge(1, model%gauss(j)%n, pan%kind >= kind_start .and. &
-                               pan%kind <= kind_start_root)) last = abs(g/jacobian)
+                               pan%kind <= kind_start_root)) &
+                    last = abs(g/(jacobian*model%gauss(j)%weight(k)))
             end do
             sums = sums + pan%weight*(pan%hi - pan%lo)*part
             if (present(slopes)) call add_compensated(slopes, carry_all, &
@@ -1230,7 +1240,12 @@ contains
         if (.not. (x > lo .and. x < hi)) return
         x_next = x
         error = curve*dx*dx + abs(dx)*real(slopes(3)/abs(slopes(1)), qp)
-        if (.not. error <= 1.0e-35_qp*max(abs(x), floor)) return
+        ! below 1e-35 of the unknown, or, for the unknown R (below rho/2), moving Upsilon
+        ! by less than 1e-35 psi (within the rounding of psi: R-bar's conditioning, next
+        ! to the edge of the sector) and s by less than 1e-35 of itself
+        if (.not. (error <= 1.0e-35_qp*max(abs(x), floor) .or. (.not. prob%use_u .and. &
+                   error*abs(slope_next) <= 1.0e-35_qp*prob%psi .and. &
+                   error*abs(real(slopes(2), qp)*lambda_slope) <= 1.0e-35_qp*abs(s)))) return
         if (.not. abs(dx*lambda_slope*real(slopes(4), qp)) <= eps_qp*abs(s)) return
         solution%arclength = s + real(slopes(2), qp)*lambda_slope*dx
         solution%time = t - model%law%conserved(a%c)*f
@@ -1396,7 +1411,7 @@ contains
         type(endpoint_problem) :: prob
         real(qp) :: limit, apse_angle_rho, half, x, lo, hi, slope_q, curvature
         real(real64) :: f_lo, f_hi, slope
-        logical :: below, hardware, done
+        logical :: below, hardware, done, near
 
         solution%rho = rho
         solution%psi = psi
@@ -1433,7 +1448,20 @@ contains
             return
         end if
         hardware = self%law%has_terms_xp()
-        if (hardware) then
+        near = .false.
+        if (hardware .and. prob%use_u .and. prob%rho < 1.0_qp) then
+            ! B within 1e-16 of its apse angle (not at it): below what the early phase
+            ! resolves; the root from the slope next to u = 0
+            if (abs(f_lo) <= 1.0e-16_real64*real(psi, real64)) &
+                call apse_start(self, prob, hi, f_lo, x, slope_q, near)
+            if (near) then
+                curvature = 0.0_qp
+                solution%steps = solution%steps + 1
+            end if
+        end if
+        if (near) then
+            slope = real(slope_q, real64)
+        else if (hardware) then
             call hardware_phase(self, prob, lo, f_lo, hi, f_hi, x, slope_q, curvature, &
                                 solution%steps)
             slope = real(slope_q, real64)
@@ -1544,6 +1572,28 @@ contains
         solution%has_arclength = .true.
         solution%has_time = .true.
     end subroutine at_the_apse
+
+    !> B next to its apse angle (|f_lo| = |Theta(rho,rho) - psi| below the early phase's
+    !! resolution): Upsilon is linear in u next to u = 0 (the square-root end of the
+    !! integrals), so the root is u0 = -f_lo/c with c from one hardware-precision residual
+    !! at u1 = 1e-6 of the bracket (c to about 1e-6, u0 as well: the certified step's
+    !! error ~ (1e-6 u0)^2/bracket is far below 1e-35 u0). `found` unless u0 is not
+    !! within 1e-3 of the bracket [0, hi].
+    pure subroutine apse_start(model, prob, hi, f_lo, x, slope, found)
+        type(central_force_model), intent(in) :: model
+        type(endpoint_problem), intent(in) :: prob
+        real(qp), intent(in) :: hi
+        real(real64), intent(in) :: f_lo
+        real(qp), intent(out) :: x, slope
+        logical, intent(out) :: found
+        real(xp) :: u1, f1, d1, c
+        u1 = 1.0e-6_xp*real(hi, xp)
+        call residual_xp(model, prob, u1, .false., f1, d1)
+        c = (f1 - real(f_lo, xp))/u1
+        x = real(-real(f_lo, xp)/c, qp)
+        slope = real(c, qp)
+        found = x > 0.0_qp .and. x < 1.0e-3_qp*hi .and. ieee_is_finite(x)
+    end subroutine apse_start
 
     !> Which part of (0, rho] holds the root (Upsilon at R = rho/2), its unknown and
     !! bracket: u = sqrt(rho - R) on [0, sqrt(rho/2)], or y = log R on [y_lo, log(rho/2)]

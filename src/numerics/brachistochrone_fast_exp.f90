@@ -5,7 +5,8 @@
 !! exp(x) = 2^k (1 + expm1(...)), and expm1(a + r) = e^a expm1(r) + expm1(a) for each
 !! table step a (both terms of one sign: no cancellation). The tables e^a and expm1(a)
 !! are constant expressions (rounded by the compiler); expm1(r) is its Taylor series to
-!! r^7/7!. k log 2 is
+!! r^7/7!, the terms from r^4/24 on (below 2^-52 of r) in hardware extended precision
+!! where there is one. k (from double precision: only near x/log 2) times log 2 is
 !! subtracted in two parts (log 2 split into 60 + 113 bits), so the reduction is exact
 !! to about 2^-170 for |k| < 2^14. Errors: a few units in the last place.
 module brachistochrone_fast_exp
@@ -46,6 +47,13 @@ module brachistochrone_fast_exp
     real(qp), parameter :: ln2_low = 6.39062950764503927593536380659998906464430009e-19_qp
     !> 1/log 2 (k needs only to be near x/log 2: the reduction is exact for any k)
     real(qp), parameter :: inverse_ln2 = 1.0_qp/ln2
+    !> The widest hardware kind (x87 extended, 64-bit significand) for the series' tail:
+    !! with |r| < 2^-16 its terms from r^4/24 on are below 2^-52 of r, so 64 bits there
+    !! leave an error below 2^-115 of r. Without such a kind the whole series in qp.
+    integer, parameter :: tail_candidate = selected_real_kind(18, 4931)
+    integer, parameter :: tail_kind = merge(tail_candidate, real64, tail_candidate > 0 &
+                                            .and. tail_candidate /= qp)
+    logical, parameter :: tail_in_hardware = precision(1.0_tail_kind) >= 18
 
 contains
 
@@ -59,7 +67,8 @@ contains
             y = exp(x)
             return
         end if
-        k = nint(x*inverse_ln2)
+        ! k need only be near x/log 2 (the reduction below is exact for any k)
+        k = nint(real(x, real64)*real(inverse_ln2, real64))
         reduced = (x - real(k, qp)*ln2_high) - real(k, qp)*ln2_low
         y = scale(1.0_qp + small_expm1(reduced), k)
     end function fast_exp
@@ -82,6 +91,7 @@ contains
     elemental function small_expm1(x) result(y)
         real(qp), intent(in) :: x
         real(qp) :: y, r, series
+        real(tail_kind) :: rt, tail
         integer :: j1, j2
         ! the table indices from double precision (a rounding up by one step leaves r
         ! slightly negative, which the series takes as well), the steps from the tables
@@ -90,8 +100,16 @@ contains
         j2 = max(0, min(int(real(r, real64)*65536.0_real64), 255))
         r = r - fine_plus(j2)
         if (x < 0.0_qp) r = -r
-        series = r*(1.0_qp + r*(1.0_qp/2 + r*(1.0_qp/6 + r*(1.0_qp/24 + r*(1.0_qp/120 &
-                 + r*(1.0_qp/720 + r*(1.0_qp/5040)))))))
+        if (tail_in_hardware) then
+            ! the terms from r^4/24 on in hardware precision (see tail_kind)
+            rt = real(r, tail_kind)
+            tail = 1.0_tail_kind/24 + rt*(1.0_tail_kind/120 + rt*(1.0_tail_kind/720 &
+                   + rt*(1.0_tail_kind/5040)))
+            series = r*(1.0_qp + r*(1.0_qp/2 + r*(1.0_qp/6 + r*real(tail, qp))))
+        else
+            series = r*(1.0_qp + r*(1.0_qp/2 + r*(1.0_qp/6 + r*(1.0_qp/24 + r*(1.0_qp/120 &
+                     + r*(1.0_qp/720 + r*(1.0_qp/5040)))))))
+        end if
         if (x >= 0.0_qp) then
             if (j2 > 0) series = exp_fine(j2)*series + expm1_fine(j2)
             if (j1 > 0) series = exp_table(j1)*series + expm1_table(j1)

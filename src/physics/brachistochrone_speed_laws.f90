@@ -434,7 +434,7 @@ contains
         e = -fast_expm1(-a*y)
     end function decay
 
-    !> Power law: [Lambda, E(Lambda), a, R^a = exp(-a Lambda), R, 1/E(Lambda)].
+    !> Power law: [Lambda, E(Lambda), a, R^a = exp(-a Lambda), R, 1/E(Lambda), c7, 1/(4a)].
     pure function power_apse_constants(self, big_r, one_minus_big_r, big_lambda) result(c)
         class(power_law), intent(in) :: self
         real(qp), intent(in) :: big_r, one_minus_big_r, big_lambda
@@ -446,6 +446,8 @@ contains
         c(6) = 1.0_qp/c(2)
         ! q/v = sqrt(q) exp(-lambda) R^(a/2) sqrt(a/(2 E(Lambda)))
         c(7) = sqrt(0.5_qp*a*c(4)*c(6))
+        ! the offset 1/(4 a) where arch_terms switches from expm1 to exp
+        c(8) = 0.25_qp/a
     end function power_apse_constants
 
     !> Two expm1 per node (three where a delta < 1/4; one less for n = 1.5, 2, 3, where
@@ -477,7 +479,7 @@ contains
             ! n = 1.5: exp(-lambda/2) = sqrt(exp(-lambda)), 1 - it = (1 - e1)/(1 + it)
             ea = root(e1)
             eam1 = -om1/(1.0_qp + ea)
-        else if (a*lambda > 0.5_qp) then
+        else if (lambda > 2.0_qp*c(8)) then
             if (delta < lambda .and. c(4) > 0.0_qp) then
                 ! nearer the start: exp(-a lambda) = R^a exp(a delta), exact arguments
                 ea = c(4)*fast_exp(a*delta)
@@ -489,7 +491,7 @@ contains
             eam1 = fast_expm1(-a*lambda)
             ea = 1.0_qp + eam1
         end if
-        if (a*delta > 0.25_qp .and. c(4) > 0.0_qp) then
+        if (delta > c(8) .and. c(4) > 0.0_qp) then
             exp_delta = c(4)/ea
             e_delta = 1.0_qp - exp_delta
         else
