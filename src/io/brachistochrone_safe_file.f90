@@ -36,6 +36,7 @@ module brachistochrone_safe_file
 
     public :: safe_file, open_output, finish_output, commit_outputs, discard_outputs
     public :: file_identity, same_file, same_name, standard_output
+    public :: open_scratch, append_range, close_scratch
     public :: safe_ok, safe_refused, safe_io_error
 
     !> Status of `open_output`, `finish_output`, `commit_outputs`: done.
@@ -82,6 +83,8 @@ module brachistochrone_safe_file
         procedure :: put => put_line
         !> The output is open (requested and created).
         procedure :: is_open
+        !> Append bytes of a scratch file (`open_scratch`).
+        procedure :: append_range
     end type safe_file
 
     !> statx(2) result: the same layout on every Linux architecture.
@@ -118,6 +121,14 @@ module brachistochrone_safe_file
             integer(c_size_t), value :: count
             integer(c_intptr_t) :: written
         end function c_write
+        function c_pread(fd, buffer, count, offset) bind(c, name='pread') result(done)
+            import :: c_int, c_char, c_size_t, c_intptr_t, c_int64_t
+            integer(c_int), value :: fd
+            character(kind=c_char), intent(inout) :: buffer(*)
+            integer(c_size_t), value :: count
+            integer(c_int64_t), value :: offset
+            integer(c_intptr_t) :: done
+        end function c_pread
         function c_fsync(fd) bind(c, name='fsync') result(code)
             import :: c_int
             integer(c_int), value :: fd
@@ -259,6 +270,88 @@ contains
             call remember(file, 'fchmod')
         allocate (character(len=chunk) :: file%buffer)
     end subroutine open_output
+
+    !> A scratch file for the run's output `near`: written with `put`, read back with
+    !! `append_range`, never committed. It is created like a temporary file (in the
+    !! directory of `near`, so a full disk there is found, listed for the signal handler
+    !! meanwhile) and removed at once, so it has no name and leaves nothing behind. Write
+    !! errors are kept as for an output and passed on by `append_range` (messages name
+    !! `near`). status: `safe_ok` or `safe_io_error` (cannot create, with `message`).
+    subroutine open_scratch(file, near, status, message)
+        type(safe_file), intent(out) :: file                   !! the scratch file
+        character(len=*), intent(in) :: near                   !! the output it serves
+        integer, intent(out) :: status                         !! safe_ok or safe_io_error
+        character(len=:), allocatable, intent(out) :: message  !! why not
+        character(len=:), allocatable :: template
+        integer :: slot
+        file%path = near
+        file%failed = ''
+        message = ''
+        status = safe_io_error
+        template = temporary_template(near)
+        slot = findloc(slot_used, .false., dim=1)
+        if (len(template) > max_path .or. slot == 0) then
+            message = 'cannot write '//escape_text(near)//': no room for a scratch file'
+            return
+        end if
+        call install_handlers()
+        slot_name(:, slot) = c_null_char
+        slot_name(1:len(template), slot) = transfer(template, slot_name(:len(template), slot))
+        slot_used(slot) = .true.
+        file%fd = c_mkostemps(slot_name(1, slot), 4_c_int, o_cloexec)
+        if (file%fd < 0) then
+            slot_used(slot) = .false.
+            message = 'cannot write '//escape_text(near)//': cannot create a scratch file '// &
+                      'in its directory ('//error_text(errno())//')'
+            return
+        end if
+        if (c_unlink(slot_name(1, slot)) /= 0) call remember(file, 'unlink')
+        slot_used(slot) = .false.
+        allocate (character(len=chunk) :: file%buffer)
+        status = safe_ok
+    end subroutine open_scratch
+
+    !> Close a scratch file (`open_scratch`); nothing is left of it.
+    subroutine close_scratch(file)
+        type(safe_file), intent(inout) :: file !! the scratch file
+        integer(c_int) :: code
+        if (file%fd >= 0) code = c_close(file%fd)
+        file%fd = -1
+    end subroutine close_scratch
+
+    !> Append `length` bytes of the scratch file `source` from byte `offset` (0 first) to
+    !! this output, through its buffer (pread(2), EINTR retried). A write error of `source`
+    !! becomes this output's error (reported by `finish_output`), as does a failed read.
+    subroutine append_range(self, source, offset, length)
+        class(safe_file), intent(inout) :: self     !! the output
+        type(safe_file), intent(inout) :: source    !! the scratch file
+        integer(c_int64_t), intent(in) :: offset    !! where the bytes start in `source`
+        integer(c_int64_t), intent(in) :: length    !! how many
+        integer(c_int64_t) :: done
+        integer(c_intptr_t) :: got
+        integer(c_size_t) :: want
+        call flush_buffer(source)
+        if (source%error /= 0 .and. self%error == 0) then
+            self%error = source%error
+            self%failed = source%failed
+        end if
+        if (self%fd < 0 .or. source%fd < 0) return
+        done = 0
+        do while (done < length .and. self%error == 0)
+            if (self%used == len(self%buffer)) call flush_buffer(self)
+            want = int(min(length - done, int(len(self%buffer) - self%used, c_int64_t)), &
+                       c_size_t)
+            got = c_pread(source%fd, self%buffer(self%used + 1:), want, offset + done)
+            if (got > 0) then
+                done = done + got
+                self%used = self%used + int(got)
+            else if (got == 0) then
+                call remember(self, 'read', 5)     ! EIO: the scratch file is short
+            else if (errno() /= e_intr) then
+                call remember(self, 'read')
+            end if
+        end do
+    end subroutine append_range
 
     !> Without force the target must not exist; with force it may be a regular file or a
     !! symbolic link (never followed). Other errors than "no such file" are I/O errors.
