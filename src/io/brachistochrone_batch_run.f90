@@ -15,7 +15,7 @@ module brachistochrone_batch_run
                              write_table_row, result_stream, start_stream, format_stream_row, &
                              write_stream_block, finish_stream
     use brachistochrone_curve_output, only: write_curves
-    use brachistochrone_safe_file, only: safe_file, open_output, finish_output, &
+    use brachistochrone_safe_file, only: safe_file, open_output, finish_output, finish_outputs, &
             commit_outputs, discard_outputs, same_file, same_name, standard_output, safe_ok, &
             safe_refused
     use brachistochrone_version, only: program_name
@@ -166,13 +166,11 @@ contains
                 call write_table_row(outputs(table_on_stdout), field, i, solutions(i))
             end do
         end if
-        do i = 1, size(outputs)
-            call finish_output(outputs(i), status, problem)
-            if (status /= safe_ok) then
-                call give_up(exit_io, problem)
-                return
-            end if
-        end do
+        call finish_outputs(outputs, status, problem)
+        if (status /= safe_ok) then
+            call give_up(exit_io, problem)
+            return
+        end if
         call commit_outputs(outputs, status, problem)
         if (status /= safe_ok) then
             call give_up(merge(exit_input, exit_io, status == safe_refused), problem)

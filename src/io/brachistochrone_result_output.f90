@@ -342,21 +342,60 @@ contains
     end subroutine start_stream
 
     !> Format row `row` of a block (1 .. `block_rows`) into slot `slot` (1 or 2): its CSV
-    !! row and its namelist values. Called by the OpenMP threads at once, for different
-    !! rows; allocates nothing.
+    !! row and its namelist values (taken from the CSV row's fields: each value is
+    !! formatted once). Called by the OpenMP threads at once, for different rows;
+    !! allocates nothing.
     subroutine format_stream_row(stream, slot, row, solution)
         type(result_stream), intent(inout) :: stream    !! the stream
         integer, intent(in) :: slot, row                !! where the lines go
         type(endpoint_solution), intent(in) :: solution !! the solved row
-        integer :: k
-        if (stream%csv) call format_line(solution, csv_rows, stream%csv_lines(row, slot), &
-                                         stream%csv_lengths(row, slot))
-        if (.not. stream%nml) return
-        do k = 1, size(namelist_columns)
-            call format_line(solution, namelist_columns(k), stream%nml_lines(k, row, slot), &
-                             stream%nml_lengths(k, row, slot))
-        end do
+        character(len=csv_row_length) :: line
+        integer :: length
+        if (stream%csv) then
+            call csv_row_into(solution, stream%csv_lines(row, slot), &
+                              stream%csv_lengths(row, slot))
+            if (stream%nml) call namelist_lines(stream%csv_lines(row, slot) &
+                                                (1:stream%csv_lengths(row, slot)), &
+                                                stream%nml_lines(:, row, slot), &
+                                                stream%nml_lengths(:, row, slot))
+        else if (stream%nml) then
+            call csv_row_into(solution, line, length)
+            call namelist_lines(line(1:length), stream%nml_lines(:, row, slot), &
+                                stream%nml_lengths(:, row, slot))
+        end if
     end subroutine format_stream_row
+
+    !> The namelist's value lines of one row (`format_line` for each of
+    !! `namelist_columns`) from its CSV row `rho,psi,arch,R,s,t,steps,status` (the same
+    !! variables in the same order): `  x,`, `  0,` for an empty field, `  "word",` for
+    !! arch and status.
+    pure subroutine namelist_lines(row, lines, lengths)
+        character(len=*), intent(in) :: row             !! the CSV row
+        character(len=*), intent(inout) :: lines(:)     !! value_line_length long
+        integer, intent(out) :: lengths(:)              !! characters used
+        integer :: k, start, finish, n
+        start = 1
+        do k = 1, size(namelist_columns)
+            finish = index(row(start:), ',') + start - 2
+            if (finish < start - 1) finish = len(row)        ! the last field
+            n = finish - start + 1
+            if (any(namelist_columns(k) == [value_arch, value_status])) then
+                lines(k)(1:3) = '  "'
+                lines(k)(4:n + 3) = row(start:finish)
+                lines(k)(n + 4:n + 5) = '",'
+                lengths(k) = n + 5
+            else if (n == 0) then
+                lines(k)(1:4) = '  0,'
+                lengths(k) = 4
+            else
+                lines(k)(1:2) = '  '
+                lines(k)(3:n + 2) = row(start:finish)
+                lines(k)(n + 3:n + 3) = ','
+                lengths(k) = n + 3
+            end if
+            start = finish + 2
+        end do
+    end subroutine namelist_lines
 
     !> Write the next block, `rows` rows formatted in slot `slot`: the CSV rows and the
     !! namelist's first variable to the outputs, its other variables to the scratch file.

@@ -34,7 +34,8 @@ module brachistochrone_safe_file
     implicit none
     private
 
-    public :: safe_file, open_output, finish_output, commit_outputs, discard_outputs
+    public :: safe_file, open_output, finish_output, finish_outputs, commit_outputs, &
+              discard_outputs
     public :: file_identity, same_file, same_name, standard_output
     public :: open_scratch, append_range, close_scratch
     public :: safe_ok, safe_refused, safe_io_error
@@ -474,11 +475,46 @@ contains
         type(safe_file), intent(inout) :: file                 !! the output
         integer, intent(out) :: status                         !! safe_ok or safe_io_error
         character(len=:), allocatable, intent(out) :: message  !! what failed
+        call finish_one(file, .true., status, message)
+    end subroutine finish_output
+
+    !> `finish_output` for each of `files` in turn, their `fsync`s done at once by the
+    !! OpenMP threads (the disk's waits overlap). status and message: those of the first
+    !! output that failed, in order (`safe_ok` when none did).
+    subroutine finish_outputs(files, status, message)
+        type(safe_file), intent(inout) :: files(:)             !! the outputs
+        integer, intent(out) :: status                         !! safe_ok or safe_io_error
+        character(len=:), allocatable, intent(out) :: message  !! what failed
+        integer :: errors(size(files)), k
+        do k = 1, size(files)
+            if (files(k)%fd >= 0) call flush_buffer(files(k))
+        end do
+        errors = 0
+        !$omp parallel do schedule(static, 1) default(shared) private(k)
+        do k = 1, size(files)
+            if (files(k)%fd < 0 .or. files(k)%error /= 0) cycle
+            if (files(k)%path == standard_output) cycle
+            if (c_fsync(files(k)%fd) /= 0) errors(k) = max(errno(), 1)
+        end do
+        !$omp end parallel do
+        do k = 1, size(files)
+            if (errors(k) /= 0) call remember(files(k), 'fsync', errors(k))
+            call finish_one(files(k), .false., status, message)
+            if (status /= safe_ok) return
+        end do
+    end subroutine finish_outputs
+
+    !> `finish_output`, with the fsync (`sync`) or without (done already).
+    subroutine finish_one(file, sync, status, message)
+        type(safe_file), intent(inout) :: file
+        logical, intent(in) :: sync
+        integer, intent(out) :: status
+        character(len=:), allocatable, intent(out) :: message
         status = safe_ok
         message = ''
         if (file%fd < 0) return
         call flush_buffer(file)
-        if (file%path /= standard_output .and. file%error == 0) then
+        if (sync .and. file%path /= standard_output .and. file%error == 0) then
             if (c_fsync(file%fd) /= 0) call remember(file, 'fsync')
         end if
         if (file%error == e_pipe .and. file%path == standard_output) then
@@ -494,7 +530,7 @@ contains
                           ' (in '//file%failed//')'
             end if
         end if
-    end subroutine finish_output
+    end subroutine finish_one
 
     !> Put every finished output in place, or none: when one commit fails, the earlier
     !! ones are undone and every temporary file is removed. Standard output is skipped.
@@ -521,10 +557,13 @@ contains
                 call undo_one(files(j))
             end do
         end if
+        ! the replaced files' data is freed here: by the threads at once
+        !$omp parallel do schedule(static, 1) default(shared) private(k)
         do k = 1, size(files)
             if (.not. (files(k)%committed .and. allocated(files(k)%backup))) cycle
             if (c_unlink(files(k)%backup//c_null_char) /= 0) continue
         end do
+        !$omp end parallel do
         call discard_outputs(files)
         committing = .false.
         if (pending_signal /= 0) call c_exit_now(128_c_int + pending_signal)
