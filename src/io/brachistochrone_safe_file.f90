@@ -130,6 +130,13 @@ module brachistochrone_safe_file
             integer(c_int64_t), value :: offset
             integer(c_intptr_t) :: done
         end function c_pread
+        function c_sync_file_range(fd, offset, bytes, flags) bind(c, name='sync_file_range') &
+                result(code)
+            import :: c_int, c_int64_t
+            integer(c_int), value :: fd, flags
+            integer(c_int64_t), value :: offset, bytes
+            integer(c_int) :: code
+        end function c_sync_file_range
         function c_fsync(fd) bind(c, name='fsync') result(code)
             import :: c_int
             integer(c_int), value :: fd
@@ -432,7 +439,14 @@ contains
 
     subroutine flush_buffer(self)
         class(safe_file), intent(inout) :: self
+        integer(c_int) :: code
         if (self%used > 0) call write_bytes(self, self%buffer(:self%used))
+        ! a full buffer of a file: start writing it to disk now (SYNC_FILE_RANGE_WRITE,
+        ! asynchronous), so that the fsync at the end has little left to wait for
+        if (self%used > len(self%buffer)/2 .and. allocated(self%temporary)) then
+            if (self%error == 0) code = c_sync_file_range(self%fd, 0_c_int64_t, &
+                                                          0_c_int64_t, 2_c_int)
+        end if
         self%used = 0
     end subroutine flush_buffer
 
