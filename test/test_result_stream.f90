@@ -45,6 +45,8 @@ contains
         call compare(field, table, solutions, .true., .true., 'CSV and namelist')
         call compare(field, table, solutions, .false., .true., 'namelist alone')
         call compare(field, table, solutions(:1), .true., .true., 'one row')
+        ! the scratch file's memory (64 MiB) is one block: the rest from the file
+        call compare(field, table, solutions, .false., .true., 'scratch on disk', 200000)
     end subroutine run_result_stream_tests
 
     !> Solutions of every kind: inaccessible (no R, s), unconverged, values from 1e-2800
@@ -72,12 +74,13 @@ contains
     end function sample
 
     !> Write the rows both ways into build/ and compare the files' bytes.
-    subroutine compare(field, table, solutions, csv, nml, what)
+    subroutine compare(field, table, solutions, csv, nml, what, scratch_memory)
         type(harmonic_field), intent(in) :: field
         type(endpoint_table), intent(in) :: table
         type(endpoint_solution), intent(in) :: solutions(:)
         logical, intent(in) :: csv, nml
         character(len=*), intent(in) :: what
+        integer, intent(in), optional :: scratch_memory
         type(safe_file) :: whole(3), streamed(3)
         type(result_stream) :: stream
         character(len=:), allocatable :: problem
@@ -89,7 +92,8 @@ contains
         if (status == safe_ok) call open_both(streamed, 'build/test_stream_blocks', csv, nml, &
                                               status)
         if (status == safe_ok) call start_stream(stream, streamed(1), streamed(2), field, &
-                                                 table, 1, size(solutions), date, status, problem)
+                                                 table, 1, size(solutions), date, status, problem, &
+                                                 scratch_memory)
         if (status == safe_ok) then
             block = 0
             do first = 1, size(solutions), stream%block_rows

@@ -294,7 +294,7 @@ contains
     !! heading, and the namelist's scratch file. status: `safe_ok`, or the status of
     !! `open_scratch` with `message` (nothing more was written then).
     subroutine start_stream(stream, csv, nml, field, table, first, last, date, status, &
-                            message)
+                            message, scratch_memory)
         type(result_stream), intent(out) :: stream         !! the stream
         type(safe_file), intent(inout) :: csv, nml         !! the outputs (open or not)
         class(brachistochrone_field), intent(in) :: field  !! the field solved
@@ -303,6 +303,7 @@ contains
         character(len=*), intent(in) :: date               !! provenance date
         integer, intent(out) :: status                     !! safe_ok or why not
         character(len=:), allocatable, intent(out) :: message !! what failed
+        integer, intent(in), optional :: scratch_memory    !! for tests: `open_scratch`'s memory
         type(line_text), allocatable :: provenance(:)
         integer :: k
         status = safe_ok
@@ -312,7 +313,7 @@ contains
         stream%nml = nml%is_open()
         if (.not. (stream%csv .or. stream%nml)) return
         if (stream%nml) then
-            call open_scratch(stream%spill, nml%path, status, message)
+            call open_scratch(stream%spill, nml%path, status, message, scratch_memory)
             if (status /= safe_ok) return
             do k = 1, size(namelist_columns)
                 stream%headings(k) = namelist_heading(field, k)

@@ -52,6 +52,7 @@ module brachistochrone_safe_file
     character(len=*), parameter :: standard_output = '-'
 
     integer, parameter :: chunk = 1048576      ! bytes buffered before a write(2)
+    integer, parameter :: scratch_chunk = 64*chunk ! a scratch file's: written only beyond
     integer, parameter :: max_slots = 16       ! temporary files of one run at a time
     integer, parameter :: max_path = 4096      ! PATH_MAX
     integer, parameter :: max_base = 200       ! NAME_MAX 255 minus '.', '.XXXXXX.tmp'
@@ -78,6 +79,7 @@ module brachistochrone_safe_file
         character(len=:), allocatable :: failed    !! the call that failed
         character(len=:), allocatable :: buffer    !! bytes not yet written
         integer :: used = 0                        !! bytes of `buffer` in use
+        integer(c_int64_t) :: flushed = 0          !! bytes written out before `buffer`
         logical :: committed = .false.             !! in place under `path`
     contains
         !> Append one line (a newline is added); errors are kept for `finish_output`.
@@ -280,16 +282,18 @@ contains
     end subroutine open_output
 
     !> A scratch file for the run's output `near`: written with `put`, read back with
-    !! `append_range`, never committed. It is created like a temporary file (in the
+    !! `append_range`, never committed; its first 64 MiB stay in memory (only what is
+    !! written beyond goes to the file). It is created like a temporary file (in the
     !! directory of `near`, so a full disk there is found, listed for the signal handler
     !! meanwhile) and removed at once, so it has no name and leaves nothing behind. Write
     !! errors are kept as for an output and passed on by `append_range` (messages name
     !! `near`). status: `safe_ok` or `safe_io_error` (cannot create, with `message`).
-    subroutine open_scratch(file, near, status, message)
+    subroutine open_scratch(file, near, status, message, memory)
         type(safe_file), intent(out) :: file                   !! the scratch file
         character(len=*), intent(in) :: near                   !! the output it serves
         integer, intent(out) :: status                         !! safe_ok or safe_io_error
         character(len=:), allocatable, intent(out) :: message  !! why not
+        integer, intent(in), optional :: memory  !! bytes kept in memory (default 64 MiB)
         character(len=:), allocatable :: template
         integer :: slot
         file%path = near
@@ -315,7 +319,11 @@ contains
         end if
         if (c_unlink(slot_name(1, slot)) /= 0) call remember(file, 'unlink')
         slot_used(slot) = .false.
-        allocate (character(len=chunk) :: file%buffer)
+        if (present(memory)) then
+            allocate (character(len=max(memory, 256)) :: file%buffer)
+        else
+            allocate (character(len=scratch_chunk) :: file%buffer)
+        end if
         status = safe_ok
     end subroutine open_scratch
 
@@ -328,17 +336,17 @@ contains
     end subroutine close_scratch
 
     !> Append `length` bytes of the scratch file `source` from byte `offset` (0 first) to
-    !! this output, through its buffer (pread(2), EINTR retried). A write error of `source`
-    !! becomes this output's error (reported by `finish_output`), as does a failed read.
+    !! this output, through its buffer: from `source`'s buffer where they still are, else
+    !! with pread(2) (EINTR retried). A write error of `source` becomes this output's
+    !! error (reported by `finish_output`), as does a failed read.
     subroutine append_range(self, source, offset, length)
         class(safe_file), intent(inout) :: self     !! the output
         type(safe_file), intent(inout) :: source    !! the scratch file
         integer(c_int64_t), intent(in) :: offset    !! where the bytes start in `source`
         integer(c_int64_t), intent(in) :: length    !! how many
-        integer(c_int64_t) :: done
+        integer(c_int64_t) :: done, at
         integer(c_intptr_t) :: got
-        integer(c_size_t) :: want
-        call flush_buffer(source)
+        integer :: room, start
         if (source%error /= 0 .and. self%error == 0) then
             self%error = source%error
             self%failed = source%failed
@@ -347,9 +355,18 @@ contains
         done = 0
         do while (done < length .and. self%error == 0)
             if (self%used == len(self%buffer)) call flush_buffer(self)
-            want = int(min(length - done, int(len(self%buffer) - self%used, c_int64_t)), &
-                       c_size_t)
-            got = c_pread(source%fd, self%buffer(self%used + 1:), want, offset + done)
+            room = int(min(length - done, int(len(self%buffer) - self%used, c_int64_t)))
+            at = offset + done
+            if (at >= source%flushed) then           ! still in memory
+                start = int(at - source%flushed)
+                room = min(room, source%used - start)
+                self%buffer(self%used + 1:self%used + room) = &
+                    source%buffer(start + 1:start + room)
+                got = room
+            else
+                got = c_pread(source%fd, self%buffer(self%used + 1:), &
+                              int(min(int(room, c_int64_t), source%flushed - at), c_size_t), at)
+            end if
             if (got > 0) then
                 done = done + got
                 self%used = self%used + int(got)
@@ -431,8 +448,10 @@ contains
         if (self%used + length > len(self%buffer)) call flush_buffer(self)
         if (length > len(self%buffer)) then
             call write_bytes(self, line//new_line('a'))
+            self%flushed = self%flushed + length
         else
-            self%buffer(self%used + 1:self%used + length) = line//new_line('a')
+            self%buffer(self%used + 1:self%used + length - 1) = line
+            self%buffer(self%used + length:self%used + length) = new_line('a')
             self%used = self%used + length
         end if
     end subroutine put_line
@@ -441,6 +460,7 @@ contains
         class(safe_file), intent(inout) :: self
         integer(c_int) :: code
         if (self%used > 0) call write_bytes(self, self%buffer(:self%used))
+        self%flushed = self%flushed + self%used
         ! a full buffer of a file: start writing it to disk now (SYNC_FILE_RANGE_WRITE,
         ! asynchronous), so that the fsync at the end has little left to wait for
         if (self%used > len(self%buffer)/2 .and. allocated(self%temporary)) then
