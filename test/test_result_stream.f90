@@ -92,8 +92,8 @@ contains
         if (status == safe_ok) call open_both(streamed, 'build/test_stream_blocks', csv, nml, &
                                               status)
         if (status == safe_ok) call start_stream(stream, streamed(1), streamed(2), field, &
-                                                 table, 1, size(solutions), date, status, problem, &
-                                                 scratch_memory)
+                                                 table, 1, size(solutions), date, status, &
+                                                 problem, scratch_memory)
         if (status == safe_ok) then
             block = 0
             do first = 1, size(solutions), stream%block_rows
