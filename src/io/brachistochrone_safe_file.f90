@@ -80,6 +80,7 @@ module brachistochrone_safe_file
         character(len=:), allocatable :: buffer    !! bytes not yet written
         integer :: used = 0                        !! bytes of `buffer` in use
         integer(c_int64_t) :: flushed = 0          !! bytes written out before `buffer`
+        integer(c_int64_t) :: unsynced = 0         !! of them, not yet sent to the disk
         logical :: committed = .false.             !! in place under `path`
     contains
         !> Append one line (a newline is added); errors are kept for `finish_output`.
@@ -357,16 +358,21 @@ contains
             if (self%used == len(self%buffer)) call flush_buffer(self)
             room = int(min(length - done, int(len(self%buffer) - self%used, c_int64_t)))
             at = offset + done
-            if (at >= source%flushed) then           ! still in memory
+            if (at >= source%flushed) then           ! still in memory: written from there
                 start = int(at - source%flushed)
-                room = min(room, source%used - start)
-                self%buffer(self%used + 1:self%used + room) = &
-                    source%buffer(start + 1:start + room)
-                got = room
-            else
-                got = c_pread(source%fd, self%buffer(self%used + 1:), &
-                              int(min(int(room, c_int64_t), source%flushed - at), c_size_t), at)
+                room = int(min(length - done, int(source%used - start, c_int64_t)))
+                if (room <= 0) then
+                    call remember(self, 'read', 5)     ! EIO: beyond the scratch file
+                    exit
+                end if
+                call flush_buffer(self)
+                call write_bytes(self, source%buffer(start + 1:start + room))
+                call written_out(self, int(room, c_int64_t))
+                done = done + room
+                cycle
             end if
+            got = c_pread(source%fd, self%buffer(self%used + 1:), &
+                          int(min(int(room, c_int64_t), source%flushed - at), c_size_t), at)
             if (got > 0) then
                 done = done + got
                 self%used = self%used + int(got)
@@ -448,7 +454,7 @@ contains
         if (self%used + length > len(self%buffer)) call flush_buffer(self)
         if (length > len(self%buffer)) then
             call write_bytes(self, line//new_line('a'))
-            self%flushed = self%flushed + length
+            call written_out(self, int(length, c_int64_t))
         else
             self%buffer(self%used + 1:self%used + length - 1) = line
             self%buffer(self%used + length:self%used + length) = new_line('a')
@@ -458,17 +464,25 @@ contains
 
     subroutine flush_buffer(self)
         class(safe_file), intent(inout) :: self
-        integer(c_int) :: code
         if (self%used > 0) call write_bytes(self, self%buffer(:self%used))
-        self%flushed = self%flushed + self%used
-        ! a full buffer of a file: start writing it to disk now (SYNC_FILE_RANGE_WRITE,
-        ! asynchronous), so that the fsync at the end has little left to wait for
-        if (self%used > len(self%buffer)/2 .and. allocated(self%temporary)) then
-            if (self%error == 0) code = c_sync_file_range(self%fd, 0_c_int64_t, &
-                                                          0_c_int64_t, 2_c_int)
-        end if
+        call written_out(self, int(self%used, c_int64_t))
         self%used = 0
     end subroutine flush_buffer
+
+    !> `bytes` more were written out. Every half MiB of an output file, start writing it
+    !! to disk (SYNC_FILE_RANGE_WRITE, asynchronous), so that the fsync at the end has
+    !! little left to wait for.
+    subroutine written_out(self, bytes)
+        class(safe_file), intent(inout) :: self
+        integer(c_int64_t), intent(in) :: bytes
+        integer(c_int) :: code
+        self%flushed = self%flushed + bytes
+        self%unsynced = self%unsynced + bytes
+        if (self%unsynced < chunk/2 .or. .not. allocated(self%temporary)) return
+        if (self%error == 0) code = c_sync_file_range(self%fd, 0_c_int64_t, 0_c_int64_t, &
+                                                      2_c_int)
+        self%unsynced = 0
+    end subroutine written_out
 
     !> write(2) until every byte is out; EINTR is retried, any other error is kept.
     subroutine write_bytes(self, text)
