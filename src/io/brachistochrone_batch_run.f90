@@ -251,55 +251,72 @@ contains
         logical, intent(in) :: report                          !! progress on stderr
         type(result_stream), intent(inout), optional :: stream !! outputs to write meanwhile
         type(progress_type) :: progress
-        integer :: i, block, block_first, block_last, slot
+        integer :: i
         call progress%start(last - first + 1, report)
         if (present(stream)) then
             if (stream%csv .or. stream%nml) then
-                !$omp parallel default(shared) private(i, block, block_first, block_last, slot)
-                do block = 1, (last - first + stream%block_rows)/stream%block_rows
-                    block_first = first + (block - 1)*stream%block_rows
-                    block_last = min(last, block_first + stream%block_rows - 1)
-                    slot = 2 - mod(block, 2)
-                    !$omp do schedule(dynamic, 4)
-                    do i = block_first, block_last
-                        call solve_row(i)
-                        call format_stream_row(stream, slot, i - block_first + 1, solutions(i))
-                    end do
-                    !$omp end do
-                    ! written while the other threads solve the next block; slot 2 - mod(b, 2)
-                    ! is formatted again after the barrier that ends block b + 1
-                    !$omp single
-                    call write_stream_block(stream, outputs(csv_file), outputs(nml_file), &
-                                            slot, block_last - block_first + 1)
-                    !$omp end single nowait
-                end do
-                !$omp end parallel
+                call solve_in_blocks(field, table, first, last, solutions, stream, progress)
                 call progress%finish()
                 return
             end if
         end if
         !$omp parallel do schedule(dynamic, 16) default(shared) private(i)
         do i = first, last
-            call solve_row(i)
+            call solve_row(field, table, i, solutions(i), progress)
         end do
         !$omp end parallel do
         call progress%finish()
-
-    contains
-
-        subroutine solve_row(row)
-            integer, intent(in) :: row
-            if (table%has_estimates(row)) then
-                solutions(row) = field%solve_from_estimates(table%rho(row), table%psi(row), &
-                                                            table%r0(row), table%r1(row), &
-                                                            table%secant_tolerance)
-            else
-                solutions(row) = field%solve(table%rho(row), table%psi(row))
-            end if
-            call progress%step()
-        end subroutine solve_row
-
     end subroutine solve_rows
+
+    !> `solve_rows` with the CSV and namelist written meanwhile: blocks of
+    !! `stream%block_rows` rows, each row formatted by the thread that solved it into the
+    !! block's slot; after a block, one thread writes it while the others go on with the
+    !! next block (the slot of block b is used again only after the barrier that ends
+    !! block b + 1, which the writer reaches when it is done).
+    subroutine solve_in_blocks(field, table, first, last, solutions, stream, progress)
+        class(brachistochrone_field), intent(in) :: field
+        type(endpoint_table), intent(in) :: table
+        integer, intent(in) :: first, last
+        type(endpoint_solution), intent(inout) :: solutions(first:)
+        type(result_stream), intent(inout) :: stream
+        type(progress_type), intent(inout) :: progress
+        integer :: i, block, block_first, block_last, slot
+        !$omp parallel default(shared) private(i, block, block_first, block_last, slot)
+        do block = 1, (last - first + stream%block_rows)/stream%block_rows
+            block_first = first + (block - 1)*stream%block_rows
+            block_last = min(last, block_first + stream%block_rows - 1)
+            slot = 2 - mod(block, 2)
+            !$omp do schedule(dynamic, 4)
+            do i = block_first, block_last
+                call solve_row(field, table, i, solutions(i), progress)
+                call format_stream_row(stream, slot, i - block_first + 1, solutions(i))
+            end do
+            !$omp end do
+            !$omp single
+            call write_stream_block(stream, outputs(csv_file), outputs(nml_file), slot, &
+                                    block_last - block_first + 1)
+            !$omp end single nowait
+        end do
+        !$omp end parallel
+    end subroutine solve_in_blocks
+
+    !> Solve one row of the table (with the field's secant method where it has estimates
+    !! r0, r1) and count it in `progress`. Called by the OpenMP threads at once.
+    subroutine solve_row(field, table, row, solution, progress)
+        class(brachistochrone_field), intent(in) :: field
+        type(endpoint_table), intent(in) :: table
+        integer, intent(in) :: row
+        type(endpoint_solution), intent(out) :: solution
+        type(progress_type), intent(inout) :: progress
+        if (table%has_estimates(row)) then
+            solution = field%solve_from_estimates(table%rho(row), table%psi(row), &
+                                                  table%r0(row), table%r1(row), &
+                                                  table%secant_tolerance)
+        else
+            solution = field%solve(table%rho(row), table%psi(row))
+        end if
+        call progress%step()
+    end subroutine solve_row
 
     !> Resolve the rows to solve: slice K of N nearly equal slices (`slice` > 0: rows
     !! (K-1) n/N + 1 to K n/N, any N <= n), or first..last (-1 means the table's first or
