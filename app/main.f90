@@ -21,7 +21,8 @@ program main
     use brachistochrone_command_line, only: run_options, parse_command_line, write_usage, &
                                             max_threads, exit_ok, exit_input
     use brachistochrone_batch_run, only: prepare_run, print_report, solve_rows, deliver_results, &
-                                         abandon_outputs
+                                         abandon_outputs, start_results
+    use brachistochrone_result_output, only: result_stream
     use brachistochrone_strings, only: integer_text
     use brachistochrone_app_family, only: run_family
     use brachistochrone_app_tunnel, only: run_tunnel
@@ -34,6 +35,7 @@ program main
     class(brachistochrone_field), allocatable :: field
     type(endpoint_solution), allocatable :: solutions(:)
     type(message), allocatable :: report(:)
+    type(result_stream) :: stream
     character(len=:), allocatable :: problem
     integer :: status, first, last, code, stat
     logical :: finished
@@ -76,9 +78,12 @@ program main
                   integer_text(last - first + 1)//' endpoints; solve fewer rows at a time '// &
                   'with --first/--last')
     end if
-    call solve_rows(field, table, first, last, solutions, .not. options%quiet)
+    ! the CSV and namelist are written while the rows are solved (issue 12)
+    call start_results(field, table, first, last, stream, code)
+    if (code /= exit_ok) stop code, quiet=.true.
+    call solve_rows(field, table, first, last, solutions, .not. options%quiet, stream)
 
-    call deliver_results(options, field, table, first, last, solutions, code)
+    call deliver_results(options, field, table, first, last, solutions, code, stream)
     stop code, quiet=.true.
 
 contains

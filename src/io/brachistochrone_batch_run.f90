@@ -12,9 +12,10 @@ module brachistochrone_batch_run
     use brachistochrone_endpoint_input, only: endpoint_table, message, read_endpoint_file, &
             max_curve_points
     use brachistochrone_result_output, only: output_request, write_outputs, write_table_header, &
-                             write_table_row
+                             write_table_row, result_stream, start_stream, format_stream_row, &
+                             write_stream_block, finish_stream
     use brachistochrone_curve_output, only: write_curves
-    use brachistochrone_safe_file, only: safe_file, open_output, finish_output, &
+    use brachistochrone_safe_file, only: safe_file, open_output, finish_output, finish_outputs, &
             commit_outputs, discard_outputs, same_file, same_name, standard_output, safe_ok, &
             safe_refused
     use brachistochrone_version, only: program_name
@@ -25,7 +26,7 @@ module brachistochrone_batch_run
     private
 
     public :: prepare_run, print_report, solve_rows, deliver_results, check_slice, &
-              check_targets, abandon_outputs
+              check_targets, abandon_outputs, start_results
 
     !> The outputs of this run (CSV, namelist, table, curves, and the table on standard
     !! output), opened by `prepare_run` before any endpoint is solved, so that a missing
@@ -128,20 +129,31 @@ contains
     !! code: exit_ok; exit_unsolved when an endpoint has no solution or a solved one has
     !! no curve; exit_input when a target appeared during the run or memory ran out;
     !! exit_io when an output could not be written (then no file of the run is left).
-    subroutine deliver_results(options, field, table, first, last, solutions, code)
+    !! With `stream` (`start_results`, then `solve_rows` with it), the CSV and namelist
+    !! were written during the solving: only the namelist's end remains of them.
+    subroutine deliver_results(options, field, table, first, last, solutions, code, stream)
         type(run_options), intent(in) :: options       !! the command line
         class(brachistochrone_field), intent(in) :: field !! the field solved
         type(endpoint_table), intent(in) :: table      !! the input
         integer, intent(in) :: first, last             !! the rows solved
         type(endpoint_solution), intent(in) :: solutions(first:) !! their solutions
         integer, intent(out) :: code                   !! the exit code
+        type(result_stream), intent(inout), optional :: stream !! the streamed outputs
         character(len=:), allocatable :: problem, date
+        type(safe_file) :: streamed(2)                 ! not open: written already
         integer :: status, missing, unsolved, i
         logical :: ok
 
-        date = timestamp()
-        call write_outputs(outputs(csv_file), outputs(nml_file), outputs(table_file), field, &
-                           table, first, last, solutions, date)
+        if (present(stream)) then
+            date = stream%date
+            call finish_stream(stream, outputs(nml_file))
+            call write_outputs(streamed(1), streamed(2), outputs(table_file), field, table, &
+                               first, last, solutions, date)
+        else
+            date = timestamp()
+            call write_outputs(outputs(csv_file), outputs(nml_file), outputs(table_file), &
+                               field, table, first, last, solutions, date)
+        end if
         call write_curves(outputs(curves_file), field, table, first, last, solutions, date, &
                           .not. options%quiet, missing, ok, problem)
         if (.not. ok) then
@@ -154,13 +166,11 @@ contains
                 call write_table_row(outputs(table_on_stdout), field, i, solutions(i))
             end do
         end if
-        do i = 1, size(outputs)
-            call finish_output(outputs(i), status, problem)
-            if (status /= safe_ok) then
-                call give_up(exit_io, problem)
-                return
-            end if
-        end do
+        call finish_outputs(outputs, status, problem)
+        if (status /= safe_ok) then
+            call give_up(exit_io, problem)
+            return
+        end if
         call commit_outputs(outputs, status, problem)
         if (status /= safe_ok) then
             call give_up(merge(exit_input, exit_io, status == safe_refused), problem)
@@ -204,33 +214,109 @@ contains
         call discard_outputs(outputs)
     end subroutine abandon_outputs
 
+    !> Start writing the CSV and namelist outputs (provenance, headers) so that
+    !! `solve_rows` can write them while it solves; pass `stream` to both and to
+    !! `deliver_results`. code: exit_ok, or exit_io (the namelist's scratch file cannot
+    !! be created: the message is printed and no output of the run is left).
+    subroutine start_results(field, table, first, last, stream, code)
+        class(brachistochrone_field), intent(in) :: field !! the field to solve
+        type(endpoint_table), intent(in) :: table         !! the input
+        integer, intent(in) :: first, last                !! the rows to solve
+        type(result_stream), intent(out) :: stream        !! the streamed outputs
+        integer, intent(out) :: code                      !! exit_ok or exit_io
+        character(len=:), allocatable :: problem
+        integer :: status
+        code = exit_ok
+        call start_stream(stream, outputs(csv_file), outputs(nml_file), field, table, first, &
+                          last, timestamp(), status, problem)
+        if (status == safe_ok) return
+        write (error_unit, '(a)') program_name//': '//problem//'; no output file of this '// &
+            'run was kept'
+        call abandon_outputs()
+        code = exit_io
+    end subroutine start_results
+
     !> Solve rows first..last of the table in `field`, in parallel over OpenMP threads
     !! (dynamic schedule; each row is independent and `pure`, so the results do not
     !! depend on the number of threads), with a progress report on stderr when `report`
-    !! is set. Rows with estimates r0, r1 use the field's secant method.
-    subroutine solve_rows(field, table, first, last, solutions, report)
+    !! is set. Rows with estimates r0, r1 use the field's secant method. With `stream`
+    !! (`start_results`), the rows are solved in blocks, formatted by the threads as they
+    !! are solved, and each block is written (in row order) by one thread while the
+    !! others solve the next.
+    subroutine solve_rows(field, table, first, last, solutions, report, stream)
         class(brachistochrone_field), intent(in) :: field      !! the force field
         type(endpoint_table), intent(in) :: table              !! the input
         integer, intent(in) :: first, last                     !! rows to solve
         type(endpoint_solution), intent(out) :: solutions(first:) !! their solutions
         logical, intent(in) :: report                          !! progress on stderr
+        type(result_stream), intent(inout), optional :: stream !! outputs to write meanwhile
         type(progress_type) :: progress
         integer :: i
         call progress%start(last - first + 1, report)
+        if (present(stream)) then
+            if (stream%csv .or. stream%nml) then
+                call solve_in_blocks(field, table, first, last, solutions, stream, progress)
+                call progress%finish()
+                return
+            end if
+        end if
         !$omp parallel do schedule(dynamic, 16) default(shared) private(i)
         do i = first, last
-            if (table%has_estimates(i)) then
-                solutions(i) = field%solve_from_estimates(table%rho(i), table%psi(i), &
-                                                          table%r0(i), table%r1(i), &
-                                                          table%secant_tolerance)
-            else
-                solutions(i) = field%solve(table%rho(i), table%psi(i))
-            end if
-            call progress%step()
+            call solve_row(field, table, i, solutions(i), progress)
         end do
         !$omp end parallel do
         call progress%finish()
     end subroutine solve_rows
+
+    !> `solve_rows` with the CSV and namelist written meanwhile: blocks of
+    !! `stream%block_rows` rows, each row formatted by the thread that solved it into the
+    !! block's slot; after a block, one thread writes it while the others go on with the
+    !! next block (the slot of block b is used again only after the barrier that ends
+    !! block b + 1, which the writer reaches when it is done).
+    subroutine solve_in_blocks(field, table, first, last, solutions, stream, progress)
+        class(brachistochrone_field), intent(in) :: field
+        type(endpoint_table), intent(in) :: table
+        integer, intent(in) :: first, last
+        type(endpoint_solution), intent(inout) :: solutions(first:)
+        type(result_stream), intent(inout) :: stream
+        type(progress_type), intent(inout) :: progress
+        integer :: i, block, block_first, block_last, slot
+        !$omp parallel default(shared) private(i, block, block_first, block_last, slot)
+        do block = 1, (last - first + stream%block_rows)/stream%block_rows
+            block_first = first + (block - 1)*stream%block_rows
+            block_last = min(last, block_first + stream%block_rows - 1)
+            slot = 2 - mod(block, 2)
+            !$omp do schedule(dynamic, 4)
+            do i = block_first, block_last
+                call solve_row(field, table, i, solutions(i), progress)
+                call format_stream_row(stream, slot, i - block_first + 1, solutions(i))
+            end do
+            !$omp end do
+            !$omp single
+            call write_stream_block(stream, outputs(csv_file), outputs(nml_file), slot, &
+                                    block_last - block_first + 1)
+            !$omp end single nowait
+        end do
+        !$omp end parallel
+    end subroutine solve_in_blocks
+
+    !> Solve one row of the table (with the field's secant method where it has estimates
+    !! r0, r1) and count it in `progress`. Called by the OpenMP threads at once.
+    subroutine solve_row(field, table, row, solution, progress)
+        class(brachistochrone_field), intent(in) :: field
+        type(endpoint_table), intent(in) :: table
+        integer, intent(in) :: row
+        type(endpoint_solution), intent(out) :: solution
+        type(progress_type), intent(inout) :: progress
+        if (table%has_estimates(row)) then
+            solution = field%solve_from_estimates(table%rho(row), table%psi(row), &
+                                                  table%r0(row), table%r1(row), &
+                                                  table%secant_tolerance)
+        else
+            solution = field%solve(table%rho(row), table%psi(row))
+        end if
+        call progress%step()
+    end subroutine solve_row
 
     !> Resolve the rows to solve: slice K of N nearly equal slices (`slice` > 0: rows
     !! (K-1) n/N + 1 to K n/N, any N <= n), or first..last (-1 means the table's first or

@@ -9,7 +9,7 @@
 !! partial file under the target name, and an existing file is replaced only when the
 !! caller says so.
 module brachistochrone_result_output
-    use, intrinsic :: iso_fortran_env, only: compiler_version, compiler_options
+    use, intrinsic :: iso_fortran_env, only: compiler_version, compiler_options, int64
     use brachistochrone_kinds, only: qp
     use brachistochrone_status, only: status_word, status_word_fixed, status_ok, status_inaccessible
     use brachistochrone_version, only: program_name, program_version
@@ -19,7 +19,7 @@ module brachistochrone_result_output
     use brachistochrone_endpoint_input, only: endpoint_table, group_name
     use brachistochrone_strings, only: integer_text, escape_text, put_integer
     use brachistochrone_format, only: format_quad, write_quad
-    use brachistochrone_safe_file, only: safe_file
+    use brachistochrone_safe_file, only: safe_file, open_scratch, close_scratch, safe_ok
     implicit none
     private
 
@@ -27,6 +27,7 @@ module brachistochrone_result_output
     public :: output_request, write_outputs, provenance_lines, write_results_namelist
     public :: results_group_name, max_echoed_rows
     public :: write_provenance
+    public :: result_stream, start_stream, format_stream_row, write_stream_block, finish_stream
 
     !> Header line of the CSV output.
     character(len=*), parameter :: csv_header = 'rho,psi,arch,R,s,t,steps,status'
@@ -36,7 +37,14 @@ module brachistochrone_result_output
     integer, parameter :: format_block = 8192, csv_row_length = 256
     !> What `put_lines` writes: CSV rows, or the namelist values of one variable.
     integer, parameter :: csv_rows = 0, value_rho = 1, value_psi = 2, &
-                          value_apse_radius = 3, value_arclength = 4, value_time = 5
+                          value_apse_radius = 3, value_arclength = 4, value_time = 5, &
+                          value_arch = 6, value_steps = 7, value_status = 8
+    !> The variables of the namelist output in file order, and room for one value line.
+    integer, parameter :: namelist_columns(8) = [value_rho, value_psi, value_arch, &
+                          value_apse_radius, value_arclength, value_time, value_steps, &
+                          value_status], value_line_length = 48
+    !> Rows per block of a `result_stream`.
+    integer, parameter :: stream_block = 2048
     !> The effective input echoed into provenance lists its arrays up to this many rows.
     integer, parameter :: max_echoed_rows = 1000
 
@@ -53,6 +61,29 @@ module brachistochrone_result_output
     type :: line_text
         character(len=:), allocatable :: text
     end type line_text
+
+    !> The CSV and namelist outputs written while the rows are solved: `start_stream`
+    !! writes the provenance and headings; the threads format each solved row
+    !! (`format_stream_row`) into one of two slots of `stream_block` rows, and one
+    !! thread at a time writes a finished block (`write_stream_block`, blocks in row
+    !! order) while the others solve the next. The CSV gets its rows and the namelist its
+    !! first variable directly; the namelist's other variables (one after the other in
+    !! the file) go to a scratch file, block by block, and `finish_stream` appends them.
+    !! The bytes are those of `write_outputs`.
+    type :: result_stream
+        logical :: csv = .false.          !! the CSV is written
+        logical :: nml = .false.          !! the namelist is written
+        integer :: block_rows = stream_block !! rows per block
+        character(len=:), allocatable :: date !! the provenance date
+        character(len=csv_row_length), allocatable :: csv_lines(:, :)   !! (row, slot)
+        integer, allocatable :: csv_lengths(:, :)                       !! (row, slot)
+        character(len=value_line_length), allocatable :: nml_lines(:, :, :) !! (var, row, slot)
+        integer, allocatable :: nml_lengths(:, :, :)                        !! (var, row, slot)
+        character(len=16) :: headings(8) = ''     !! ' RHO=', ' PSI=', ' ARCH=', ...
+        type(safe_file) :: spill                  !! the namelist's variables 2..8
+        integer(int64), allocatable :: spilled(:, :) !! bytes of variable k of block b
+        integer :: blocks = 0                     !! blocks written
+    end type result_stream
 
 contains
 
@@ -258,6 +289,165 @@ contains
         end if
     end subroutine write_outputs
 
+    !> Start a `result_stream` into the open outputs among `csv` and `nml`: their
+    !! provenance (dated `date`), the CSV header, the namelist up to its first variable's
+    !! heading, and the namelist's scratch file. status: `safe_ok`, or the status of
+    !! `open_scratch` with `message` (nothing more was written then).
+    subroutine start_stream(stream, csv, nml, field, table, first, last, date, status, &
+                            message, scratch_memory)
+        type(result_stream), intent(out) :: stream         !! the stream
+        type(safe_file), intent(inout) :: csv, nml         !! the outputs (open or not)
+        class(brachistochrone_field), intent(in) :: field  !! the field solved
+        type(endpoint_table), intent(in) :: table          !! the input
+        integer, intent(in) :: first, last                 !! rows to solve
+        character(len=*), intent(in) :: date               !! provenance date
+        integer, intent(out) :: status                     !! safe_ok or why not
+        character(len=:), allocatable, intent(out) :: message !! what failed
+        integer, intent(in), optional :: scratch_memory    !! for tests: `open_scratch`'s memory
+        type(line_text), allocatable :: provenance(:)
+        integer :: k
+        status = safe_ok
+        message = ''
+        stream%date = date
+        stream%csv = csv%is_open()
+        stream%nml = nml%is_open()
+        if (.not. (stream%csv .or. stream%nml)) return
+        if (stream%nml) then
+            call open_scratch(stream%spill, nml%path, status, message, scratch_memory)
+            if (status /= safe_ok) return
+            do k = 1, size(namelist_columns)
+                stream%headings(k) = namelist_heading(field, k)
+            end do
+            allocate (stream%nml_lines(size(namelist_columns), stream_block, 2), &
+                      stream%nml_lengths(size(namelist_columns), stream_block, 2), &
+                      stream%spilled(2:size(namelist_columns), &
+                                     (last - first + stream_block)/stream_block))
+        end if
+        if (stream%csv) allocate (stream%csv_lines(stream_block, 2), &
+                                  stream%csv_lengths(stream_block, 2))
+        provenance = provenance_lines(field, table, first, last, date)
+        if (stream%csv) then
+            do k = 1, size(provenance)
+                call csv%put('# '//provenance(k)%text)
+            end do
+            call csv%put(field_csv_header(field))
+        end if
+        if (stream%nml) then
+            do k = 1, size(provenance)
+                call nml%put('! '//provenance(k)%text)
+            end do
+            call nml%put('&RESULTS')
+            call nml%put(' N='//integer_text(last - first + 1)//',')
+            call nml%put(trim(stream%headings(1)))
+        end if
+    end subroutine start_stream
+
+    !> Format row `row` of a block (1 .. `block_rows`) into slot `slot` (1 or 2): its CSV
+    !! row and its namelist values (taken from the CSV row's fields: each value is
+    !! formatted once). Called by the OpenMP threads at once, for different rows;
+    !! allocates nothing.
+    subroutine format_stream_row(stream, slot, row, solution)
+        type(result_stream), intent(inout) :: stream    !! the stream
+        integer, intent(in) :: slot, row                !! where the lines go
+        type(endpoint_solution), intent(in) :: solution !! the solved row
+        character(len=csv_row_length) :: line
+        integer :: length
+        if (stream%csv) then
+            call csv_row_into(solution, stream%csv_lines(row, slot), &
+                              stream%csv_lengths(row, slot))
+            if (stream%nml) call namelist_lines(stream%csv_lines(row, slot) &
+                                                (1:stream%csv_lengths(row, slot)), &
+                                                stream%nml_lines(:, row, slot), &
+                                                stream%nml_lengths(:, row, slot))
+        else if (stream%nml) then
+            call csv_row_into(solution, line, length)
+            call namelist_lines(line(1:length), stream%nml_lines(:, row, slot), &
+                                stream%nml_lengths(:, row, slot))
+        end if
+    end subroutine format_stream_row
+
+    !> The namelist's value lines of one row (`format_line` for each of
+    !! `namelist_columns`) from its CSV row `rho,psi,arch,R,s,t,steps,status` (the same
+    !! variables in the same order): `  x,`, `  0,` for an empty field, `  "word",` for
+    !! arch and status.
+    pure subroutine namelist_lines(row, lines, lengths)
+        character(len=*), intent(in) :: row             !! the CSV row
+        character(len=*), intent(inout) :: lines(:)     !! value_line_length long
+        integer, intent(out) :: lengths(:)              !! characters used
+        integer :: k, start, finish, n
+        start = 1
+        do k = 1, size(namelist_columns)
+            finish = index(row(start:), ',') + start - 2
+            if (finish < start - 1) finish = len(row)        ! the last field
+            n = finish - start + 1
+            if (any(namelist_columns(k) == [value_arch, value_status])) then
+                lines(k)(1:3) = '  "'
+                lines(k)(4:n + 3) = row(start:finish)
+                lines(k)(n + 4:n + 5) = '",'
+                lengths(k) = n + 5
+            else if (n == 0) then
+                lines(k)(1:4) = '  0,'
+                lengths(k) = 4
+            else
+                lines(k)(1:2) = '  '
+                lines(k)(3:n + 2) = row(start:finish)
+                lines(k)(n + 3:n + 3) = ','
+                lengths(k) = n + 3
+            end if
+            start = finish + 2
+        end do
+    end subroutine namelist_lines
+
+    !> Write the next block, `rows` rows formatted in slot `slot`: the CSV rows and the
+    !! namelist's first variable to the outputs, its other variables to the scratch file.
+    !! One thread at a time, blocks in row order.
+    subroutine write_stream_block(stream, csv, nml, slot, rows)
+        type(result_stream), intent(inout) :: stream  !! the stream
+        type(safe_file), intent(inout) :: csv, nml    !! the outputs
+        integer, intent(in) :: slot, rows             !! the block
+        integer :: row, k
+        stream%blocks = stream%blocks + 1
+        if (stream%csv) then
+            do row = 1, rows
+                call csv%put(stream%csv_lines(row, slot)(1:stream%csv_lengths(row, slot)))
+            end do
+        end if
+        if (.not. stream%nml) return
+        do row = 1, rows
+            call nml%put(stream%nml_lines(1, row, slot)(1:stream%nml_lengths(1, row, slot)))
+        end do
+        do k = 2, size(namelist_columns)
+            do row = 1, rows
+                call stream%spill%put(stream%nml_lines(k, row, slot) &
+                                      (1:stream%nml_lengths(k, row, slot)))
+            end do
+            stream%spilled(k, stream%blocks) = sum(int(stream%nml_lengths(k, :rows, slot), &
+                                                       int64) + 1_int64)
+        end do
+    end subroutine write_stream_block
+
+    !> After the last block: the namelist's other variables from the scratch file (each
+    !! under its heading) and the end of the group; the scratch file is closed. A write
+    !! error of the scratch file is reported as one of the namelist output.
+    subroutine finish_stream(stream, nml)
+        type(result_stream), intent(inout) :: stream  !! the stream
+        type(safe_file), intent(inout) :: nml         !! the namelist output
+        integer(int64) :: base
+        integer :: k, b
+        if (.not. stream%nml) return
+        do k = 2, size(namelist_columns)
+            call nml%put(trim(stream%headings(k)))
+            base = 0                 ! where block b starts: its variables 2..8 in turn
+            do b = 1, stream%blocks
+                call nml%append_range(stream%spill, base + sum(stream%spilled(2:k - 1, b)), &
+                                      stream%spilled(k, b))
+                base = base + sum(stream%spilled(:, b))
+            end do
+        end do
+        call nml%put(' /')
+        call close_scratch(stream%spill)
+    end subroutine finish_stream
+
     !> One line per solution, formatted by the OpenMP threads `format_block` lines at a
     !! time into fixed-length lines and written in order: the CSV rows (`csv_rows`) or
     !! one namelist value per line (`value_rho` ... `value_time`). The formatting
@@ -288,7 +478,7 @@ contains
     end subroutine put_lines
 
     !> The line `column` of one solution: its CSV row, or `  x,` for one namelist value
-    !! (`  0,` where the value does not exist).
+    !! (`  0,` where the value does not exist; `  "word",` for arch and status).
     pure subroutine format_line(solution, column, line, length)
         type(endpoint_solution), intent(in) :: solution !! the solved endpoint
         integer, intent(in) :: column                   !! csv_rows or value_*
@@ -309,10 +499,27 @@ contains
             call put_present(solution%has_apse_radius, solution%apse_radius, line, length)
         case (value_arclength)
             call put_present(solution%has_arclength, solution%arclength, line, length)
-        case default
+        case (value_time)
             call put_present(solution%has_time, solution%time, line, length)
+        case (value_arch)
+            call put_word('"'//arch_word_fixed(solution%arch), line, length)
+            call put_quote(line, length)
+        case (value_steps)
+            call put_integer(solution%steps, line, length)
+            call put_word(',', line, length)
+        case default
+            call put_word('"'//status_word_fixed(solution%status), line, length)
+            call put_quote(line, length)
         end select
     end subroutine format_line
+
+    !> `"word",` from `"word,`: the closing quote before the comma.
+    pure subroutine put_quote(line, length)
+        character(len=*), intent(inout) :: line   !! the line so far, ending in a comma
+        integer, intent(inout) :: length          !! its length
+        line(length:length + 1) = '",'
+        length = length + 1
+    end subroutine put_quote
 
     !> `csv_row` into a fixed-length line, without allocation: line(1:length).
     pure subroutine csv_row_into(solution, line, length)
@@ -383,31 +590,28 @@ contains
         integer :: k
         call out%put('&RESULTS')
         call out%put(' N='//integer_text(size(solutions))//',')
-        call out%put(' '//upper(coordinate(field, 1))//'=')
-        call put_lines(out, solutions, value_rho)
-        call out%put(' '//upper(coordinate(field, 2))//'=')
-        call put_lines(out, solutions, value_psi)
-        call out%put(' ARCH=')
-        do k = 1, size(solutions)
-            call out%put('  "'//arch_word(solutions(k)%arch)//'",')
-        end do
-        call out%put(' R=')
-        call put_lines(out, solutions, value_apse_radius)
-        call out%put(' S=')
-        call put_lines(out, solutions, value_arclength)
-        call out%put(' T=')
-        call put_lines(out, solutions, value_time)
-        call out%put(' STEPS=')
-        do k = 1, size(solutions)
-            call out%put('  '//integer_text(solutions(k)%steps)//',')
-        end do
-        call out%put(' STATUS=')
-        do k = 1, size(solutions)
-            call out%put('  "'//status_word(solutions(k)%status)//'",')
+        do k = 1, size(namelist_columns)
+            call out%put(trim(namelist_heading(field, k)))
+            call put_lines(out, solutions, namelist_columns(k))
         end do
         call out%put(' /')
     end subroutine write_results_namelist
 
+
+    !> The line before the values of the namelist's k-th variable (`namelist_columns`):
+    !! ' RHO=', ' PSI=', ' ARCH=', ' R=', ' S=', ' T=', ' STEPS=', ' STATUS='.
+    function namelist_heading(field, k) result(heading)
+        class(brachistochrone_field), intent(in) :: field !! the field (coordinate names)
+        integer, intent(in) :: k                          !! 1 .. 8
+        character(len=16) :: heading
+        character(len=*), parameter :: names(8) = [character(len=6) :: '', '', 'ARCH', &
+                                                   'R', 'S', 'T', 'STEPS', 'STATUS']
+        if (k <= 2) then
+            heading = ' '//upper(coordinate(field, k))//'='
+        else
+            heading = ' '//trim(names(k))//'='
+        end if
+    end function namelist_heading
 
     !> Name of the field's coordinate k (1 or 2): rho, psi or x, y.
     pure function coordinate(field, k) result(name)

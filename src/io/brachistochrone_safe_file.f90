@@ -34,8 +34,10 @@ module brachistochrone_safe_file
     implicit none
     private
 
-    public :: safe_file, open_output, finish_output, commit_outputs, discard_outputs
+    public :: safe_file, open_output, finish_output, finish_outputs, commit_outputs, &
+              discard_outputs
     public :: file_identity, same_file, same_name, standard_output
+    public :: open_scratch, append_range, close_scratch
     public :: safe_ok, safe_refused, safe_io_error
 
     !> Status of `open_output`, `finish_output`, `commit_outputs`: done.
@@ -50,6 +52,7 @@ module brachistochrone_safe_file
     character(len=*), parameter :: standard_output = '-'
 
     integer, parameter :: chunk = 1048576      ! bytes buffered before a write(2)
+    integer, parameter :: scratch_chunk = 64*chunk ! a scratch file's: written only beyond
     integer, parameter :: max_slots = 16       ! temporary files of one run at a time
     integer, parameter :: max_path = 4096      ! PATH_MAX
     integer, parameter :: max_base = 200       ! NAME_MAX 255 minus '.', '.XXXXXX.tmp'
@@ -76,12 +79,16 @@ module brachistochrone_safe_file
         character(len=:), allocatable :: failed    !! the call that failed
         character(len=:), allocatable :: buffer    !! bytes not yet written
         integer :: used = 0                        !! bytes of `buffer` in use
+        integer(c_int64_t) :: flushed = 0          !! bytes written out before `buffer`
+        integer(c_int64_t) :: unsynced = 0         !! of them, not yet sent to the disk
         logical :: committed = .false.             !! in place under `path`
     contains
         !> Append one line (a newline is added); errors are kept for `finish_output`.
         procedure :: put => put_line
         !> The output is open (requested and created).
         procedure :: is_open
+        !> Append bytes of a scratch file (`open_scratch`).
+        procedure :: append_range
     end type safe_file
 
     !> statx(2) result: the same layout on every Linux architecture.
@@ -118,6 +125,21 @@ module brachistochrone_safe_file
             integer(c_size_t), value :: count
             integer(c_intptr_t) :: written
         end function c_write
+        function c_pread(fd, buffer, count, offset) bind(c, name='pread') result(done)
+            import :: c_int, c_char, c_size_t, c_intptr_t, c_int64_t
+            integer(c_int), value :: fd
+            character(kind=c_char), intent(inout) :: buffer(*)
+            integer(c_size_t), value :: count
+            integer(c_int64_t), value :: offset
+            integer(c_intptr_t) :: done
+        end function c_pread
+        function c_sync_file_range(fd, offset, bytes, flags) bind(c, name='sync_file_range') &
+                result(code)
+            import :: c_int, c_int64_t
+            integer(c_int), value :: fd, flags
+            integer(c_int64_t), value :: offset, bytes
+            integer(c_int) :: code
+        end function c_sync_file_range
         function c_fsync(fd) bind(c, name='fsync') result(code)
             import :: c_int
             integer(c_int), value :: fd
@@ -260,6 +282,108 @@ contains
         allocate (character(len=chunk) :: file%buffer)
     end subroutine open_output
 
+    !> A scratch file for the run's output `near`: written with `put`, read back with
+    !! `append_range`, never committed; its first 64 MiB stay in memory (only what is
+    !! written beyond goes to the file). It is created like a temporary file (in the
+    !! directory of `near`, so a full disk there is found, listed for the signal handler
+    !! meanwhile) and removed at once, so it has no name and leaves nothing behind. Write
+    !! errors are kept as for an output and passed on by `append_range` (messages name
+    !! `near`). status: `safe_ok` or `safe_io_error` (cannot create, with `message`).
+    subroutine open_scratch(file, near, status, message, memory)
+        type(safe_file), intent(out) :: file                   !! the scratch file
+        character(len=*), intent(in) :: near                   !! the output it serves
+        integer, intent(out) :: status                         !! safe_ok or safe_io_error
+        character(len=:), allocatable, intent(out) :: message  !! why not
+        integer, intent(in), optional :: memory  !! bytes kept in memory (default 64 MiB)
+        character(len=:), allocatable :: template
+        integer :: slot
+        file%path = near
+        file%failed = ''
+        message = ''
+        status = safe_io_error
+        template = temporary_template(near)
+        slot = findloc(slot_used, .false., dim=1)
+        if (len(template) > max_path .or. slot == 0) then
+            message = 'cannot write '//escape_text(near)//': no room for a scratch file'
+            return
+        end if
+        call install_handlers()
+        slot_name(:, slot) = c_null_char
+        slot_name(1:len(template), slot) = transfer(template, slot_name(:len(template), slot))
+        slot_used(slot) = .true.
+        file%fd = c_mkostemps(slot_name(1, slot), 4_c_int, o_cloexec)
+        if (file%fd < 0) then
+            slot_used(slot) = .false.
+            message = 'cannot write '//escape_text(near)//': cannot create a scratch file '// &
+                      'in its directory ('//error_text(errno())//')'
+            return
+        end if
+        if (c_unlink(slot_name(1, slot)) /= 0) call remember(file, 'unlink')
+        slot_used(slot) = .false.
+        if (present(memory)) then
+            allocate (character(len=max(memory, 256)) :: file%buffer)
+        else
+            allocate (character(len=scratch_chunk) :: file%buffer)
+        end if
+        status = safe_ok
+    end subroutine open_scratch
+
+    !> Close a scratch file (`open_scratch`); nothing is left of it.
+    subroutine close_scratch(file)
+        type(safe_file), intent(inout) :: file !! the scratch file
+        integer(c_int) :: code
+        if (file%fd >= 0) code = c_close(file%fd)
+        file%fd = -1
+    end subroutine close_scratch
+
+    !> Append `length` bytes of the scratch file `source` from byte `offset` (0 first) to
+    !! this output, through its buffer: from `source`'s buffer where they still are, else
+    !! with pread(2) (EINTR retried). A write error of `source` becomes this output's
+    !! error (reported by `finish_output`), as does a failed read.
+    subroutine append_range(self, source, offset, length)
+        class(safe_file), intent(inout) :: self     !! the output
+        type(safe_file), intent(inout) :: source    !! the scratch file
+        integer(c_int64_t), intent(in) :: offset    !! where the bytes start in `source`
+        integer(c_int64_t), intent(in) :: length    !! how many
+        integer(c_int64_t) :: done, at
+        integer(c_intptr_t) :: got
+        integer :: room, start
+        if (source%error /= 0 .and. self%error == 0) then
+            self%error = source%error
+            self%failed = source%failed
+        end if
+        if (self%fd < 0 .or. source%fd < 0) return
+        done = 0
+        do while (done < length .and. self%error == 0)
+            if (self%used == len(self%buffer)) call flush_buffer(self)
+            room = int(min(length - done, int(len(self%buffer) - self%used, c_int64_t)))
+            at = offset + done
+            if (at >= source%flushed) then           ! still in memory: written from there
+                start = int(at - source%flushed)
+                room = int(min(length - done, int(source%used - start, c_int64_t)))
+                if (room <= 0) then
+                    call remember(self, 'read', 5)     ! EIO: beyond the scratch file
+                    exit
+                end if
+                call flush_buffer(self)
+                call write_bytes(self, source%buffer(start + 1:start + room))
+                call written_out(self, int(room, c_int64_t))
+                done = done + room
+                cycle
+            end if
+            got = c_pread(source%fd, self%buffer(self%used + 1:), &
+                          int(min(int(room, c_int64_t), source%flushed - at), c_size_t), at)
+            if (got > 0) then
+                done = done + got
+                self%used = self%used + int(got)
+            else if (got == 0) then
+                call remember(self, 'read', 5)     ! EIO: the scratch file is short
+            else if (errno() /= e_intr) then
+                call remember(self, 'read')
+            end if
+        end do
+    end subroutine append_range
+
     !> Without force the target must not exist; with force it may be a regular file or a
     !! symbolic link (never followed). Other errors than "no such file" are I/O errors.
     subroutine check_target(path, force, status, message)
@@ -330,8 +454,10 @@ contains
         if (self%used + length > len(self%buffer)) call flush_buffer(self)
         if (length > len(self%buffer)) then
             call write_bytes(self, line//new_line('a'))
+            call written_out(self, int(length, c_int64_t))
         else
-            self%buffer(self%used + 1:self%used + length) = line//new_line('a')
+            self%buffer(self%used + 1:self%used + length - 1) = line
+            self%buffer(self%used + length:self%used + length) = new_line('a')
             self%used = self%used + length
         end if
     end subroutine put_line
@@ -339,8 +465,24 @@ contains
     subroutine flush_buffer(self)
         class(safe_file), intent(inout) :: self
         if (self%used > 0) call write_bytes(self, self%buffer(:self%used))
+        call written_out(self, int(self%used, c_int64_t))
         self%used = 0
     end subroutine flush_buffer
+
+    !> `bytes` more were written out. Every half MiB of an output file, start writing it
+    !! to disk (SYNC_FILE_RANGE_WRITE, asynchronous), so that the fsync at the end has
+    !! little left to wait for.
+    subroutine written_out(self, bytes)
+        class(safe_file), intent(inout) :: self
+        integer(c_int64_t), intent(in) :: bytes
+        integer(c_int) :: code
+        self%flushed = self%flushed + bytes
+        self%unsynced = self%unsynced + bytes
+        if (self%unsynced < chunk/2 .or. .not. allocated(self%temporary)) return
+        if (self%error == 0) code = c_sync_file_range(self%fd, 0_c_int64_t, 0_c_int64_t, &
+                                                      2_c_int)
+        self%unsynced = 0
+    end subroutine written_out
 
     !> write(2) until every byte is out; EINTR is retried, any other error is kept.
     subroutine write_bytes(self, text)
@@ -381,11 +523,46 @@ contains
         type(safe_file), intent(inout) :: file                 !! the output
         integer, intent(out) :: status                         !! safe_ok or safe_io_error
         character(len=:), allocatable, intent(out) :: message  !! what failed
+        call finish_one(file, .true., status, message)
+    end subroutine finish_output
+
+    !> `finish_output` for each of `files` in turn, their `fsync`s done at once by the
+    !! OpenMP threads (the disk's waits overlap). status and message: those of the first
+    !! output that failed, in order (`safe_ok` when none did).
+    subroutine finish_outputs(files, status, message)
+        type(safe_file), intent(inout) :: files(:)             !! the outputs
+        integer, intent(out) :: status                         !! safe_ok or safe_io_error
+        character(len=:), allocatable, intent(out) :: message  !! what failed
+        integer :: errors(size(files)), k
+        do k = 1, size(files)
+            if (files(k)%fd >= 0) call flush_buffer(files(k))
+        end do
+        errors = 0
+        !$omp parallel do schedule(static, 1) default(shared) private(k)
+        do k = 1, size(files)
+            if (files(k)%fd < 0 .or. files(k)%error /= 0) cycle
+            if (files(k)%path == standard_output) cycle
+            if (c_fsync(files(k)%fd) /= 0) errors(k) = max(errno(), 1)
+        end do
+        !$omp end parallel do
+        do k = 1, size(files)
+            if (errors(k) /= 0) call remember(files(k), 'fsync', errors(k))
+            call finish_one(files(k), .false., status, message)
+            if (status /= safe_ok) return
+        end do
+    end subroutine finish_outputs
+
+    !> `finish_output`, with the fsync (`sync`) or without (done already).
+    subroutine finish_one(file, sync, status, message)
+        type(safe_file), intent(inout) :: file
+        logical, intent(in) :: sync
+        integer, intent(out) :: status
+        character(len=:), allocatable, intent(out) :: message
         status = safe_ok
         message = ''
         if (file%fd < 0) return
         call flush_buffer(file)
-        if (file%path /= standard_output .and. file%error == 0) then
+        if (sync .and. file%path /= standard_output .and. file%error == 0) then
             if (c_fsync(file%fd) /= 0) call remember(file, 'fsync')
         end if
         if (file%error == e_pipe .and. file%path == standard_output) then
@@ -401,7 +578,7 @@ contains
                           ' (in '//file%failed//')'
             end if
         end if
-    end subroutine finish_output
+    end subroutine finish_one
 
     !> Put every finished output in place, or none: when one commit fails, the earlier
     !! ones are undone and every temporary file is removed. Standard output is skipped.
@@ -428,10 +605,13 @@ contains
                 call undo_one(files(j))
             end do
         end if
+        ! the replaced files' data is freed here: by the threads at once
+        !$omp parallel do schedule(static, 1) default(shared) private(k)
         do k = 1, size(files)
             if (.not. (files(k)%committed .and. allocated(files(k)%backup))) cycle
             if (c_unlink(files(k)%backup//c_null_char) /= 0) continue
         end do
+        !$omp end parallel do
         call discard_outputs(files)
         committing = .false.
         if (pending_signal /= 0) call c_exit_now(128_c_int + pending_signal)

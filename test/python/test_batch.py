@@ -78,14 +78,31 @@ def test_table_file(run, tmp_path):
 
 
 def test_threads_give_identical_bytes(run, tmp_path, env_fixed_date):
-    # 20,000 rows: the rows are formatted by the threads in blocks of 8,192
+    # 20,000 rows, some inaccessible (empty CSV fields, 0 in the namelist): the rows are
+    # solved and formatted by the threads in blocks of 2,048 and written block by block
+    # while the next is solved (the namelist's later variables through a scratch file);
+    # one output alone, or both in one run, on 1 and 2 threads: the same bytes
     nml = tmp_path / "in.nml"
-    write_table(nml, 20000, estimates=False)
+    rho, psi = write_table(nml, 20000, estimates=False)
+    psi = [("2.5" if k % 97 == 5 else p) for k, p in enumerate(psi)]
+    nml.write_text("&endpoints\n n = 20000\n rho = %s\n psi = %s\n/\n" % (
+        ", ".join(rho), ", ".join(psi)))
+    outputs = {}
+    for threads in ("1", "2"):
+        for kinds in (("csv",), ("nml",), ("csv", "nml")):
+            args = []
+            for kind in kinds:
+                args += [f"--{kind}", tmp_path / f"{threads}{''.join(kinds)}.{kind}"]
+            result = run(nml, *args, "--threads", threads, "--no-table", "--quiet")
+            assert result.returncode == 2, result.stderr        # the inaccessible rows
+            for kind in kinds:
+                outputs[threads, kinds, kind] = (
+                    tmp_path / f"{threads}{''.join(kinds)}.{kind}").read_bytes()
     for kind in ("csv", "nml"):
-        one, two = tmp_path / f"one.{kind}", tmp_path / f"two.{kind}"
-        assert run(nml, f"--{kind}", one, "--threads", "1", "--no-table").returncode == 0
-        assert run(nml, f"--{kind}", two, "--threads", "2", "--no-table").returncode == 0
-        assert one.read_bytes() == two.read_bytes()
+        assert len({v for k, v in outputs.items() if k[2] == kind}) == 1, kind
+    text = outputs["1", ("nml",), "nml"].decode()
+    assert text.count('\n  "inaccessible",') == 2 * sum(p == "2.5" for p in psi)
+    assert text.endswith("\n /\n") and not [f for f in os.listdir(tmp_path) if f[0] == "."]
 
 
 def test_bad_slices_are_usage_errors(run, tmp_path):
