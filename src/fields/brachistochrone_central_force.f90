@@ -121,6 +121,8 @@ module brachistochrone_central_force
         type(chebyshev_table) :: whole(5)
         !> pieces of the tables that passed their check at build time
         logical :: whole_ok(table_pieces) = .false.
+        !> Theta's table and its slope's in hardware precision (powers of t per piece)
+        real(xp), allocatable :: whole_xp(:, :, :)
     contains
         procedure :: half_arch => general_half_arch    !! theta, s, t at r (eqs. 27-41)
         procedure :: apse_angle => general_apse_angle  !! Theta(R,R)
@@ -236,6 +238,8 @@ contains
             model%whole(m) = chebyshev_fit(lower, upper, values(:, :, m), &
                                            merge(0.5_qp*eps_qp, slope_noise, m <= 3))
         end do
+        model%whole_xp = reshape(real([model%whole(1)%power, model%whole(4)%power], xp), &
+                                 [table_points, table_pieces, 2])
         width = (upper - lower)/real(table_pieces, qp)
         do piece = 1, table_pieces
             model%whole_ok(piece) = .true.
@@ -251,6 +255,34 @@ contains
             end do
         end do
     end subroutine build_whole_tables
+
+    !> Theta's whole-half-arch table and its slope's at Lambda in hardware precision (as
+    !! `whole_lookup`).
+    pure subroutine whole_lookup_xp(model, big_lambda, values, found)
+        type(central_force_model), intent(in) :: model
+        real(xp), intent(in) :: big_lambda
+        real(xp), intent(out) :: values(2)
+        logical, intent(out) :: found
+        real(xp) :: position, t
+        integer :: piece, m, j
+        values = 0.0_xp
+        found = .false.
+        if (.not. (big_lambda >= real(table_low, xp) .and. &
+                   big_lambda <= real(table_high, xp))) return
+        position = (log(big_lambda) - log(real(table_low, xp)))/ &
+                   (log(real(table_high, xp)) - log(real(table_low, xp)))* &
+                   real(table_pieces, xp)
+        piece = min(table_pieces, max(1, int(position) + 1))
+        if (.not. model%whole_ok(piece)) return
+        t = 2.0_xp*(position - real(piece - 1, xp)) - 1.0_xp
+        do m = 1, 2
+            values(m) = model%whole_xp(table_points, piece, m)
+            do j = table_points - 1, 1, -1
+                values(m) = values(m)*t + model%whole_xp(j, piece, m)
+            end do
+        end do
+        found = .true.
+    end subroutine whole_lookup_xp
 
     !> The tabulated whole-half-arch integrals at Lambda (`whole_direct`'s five numbers);
     !! `found` only inside the tables' range on a checked piece.
@@ -1094,6 +1126,64 @@ contains
         type(arch_setup), intent(in) :: a
         logical, intent(in) :: rough   !! 17-digit rules, transcendentals in double
         real(xp), intent(out) :: theta, slope, shift
+        type(arch_setup) :: below, above
+        type(panel) :: panels(max_panels)
+        real(xp) :: whole(2), part, part_slope, w_sign, p_sign, g, omq, log_slope
+        integer :: n_below, n_above
+        logical :: found, use_below
+        shift = 0.0_xp
+        if (a%weight_below == 0.0_qp) shift = real(pi/model%sigma_apse*a%lambda_r, xp)
+        call whole_lookup_xp(model, real(a%big_lambda, xp), whole, found)
+        found = found .and. a%weight_above == 1.0_qp .and. &
+                (a%weight_below == 0.0_qp .or. a%weight_below == 2.0_qp)
+        if (found) then
+            ! as `table_sums`, Theta scaled by exp(shift)
+            whole = whole*exp(shift)
+            below = a
+            below%weight_below = 1.0_qp
+            below%weight_above = 0.0_qp
+            above = a
+            above%weight_below = 0.0_qp
+            call arch_panels(model, below, panels, n_below)
+            call arch_panels(model, above, panels, n_above)
+            use_below = n_below <= n_above
+            if (a%weight_below == 2.0_qp) then
+                w_sign = merge(1.0_xp, 2.0_xp, use_below)
+                p_sign = merge(1.0_xp, -1.0_xp, use_below)
+            else
+                w_sign = merge(1.0_xp, 0.0_xp, use_below)
+                p_sign = merge(-1.0_xp, 1.0_xp, use_below)
+            end if
+            if (use_below) then
+                call panel_theta_xp(model, below, rough, shift, part, part_slope)
+            else
+                call panel_theta_xp(model, above, rough, shift, part, part_slope)
+            end if
+            if (a%weight_below == 0.0_qp .and. use_below .and. .not. part <= 0.5_xp*whole(1)) then
+                w_sign = 0.0_xp
+                p_sign = 1.0_xp
+                call panel_theta_xp(model, above, rough, shift, part, part_slope)
+            end if
+            theta = w_sign*whole(1) + p_sign*part
+            slope = w_sign*whole(2) + p_sign*part_slope
+        else
+            call panel_theta_xp(model, a, rough, shift, theta, slope)
+        end if
+        if (a%weight_below /= a%weight_above .and. a%delta_r > 0.0_qp .and. &
+            a%lambda_r > 0.0_qp) then
+            call model%law%theta_terms_xp(a%cx, real(a%lambda_r, xp), real(a%delta_r, xp), &
+                                          shift, rough, g, omq, log_slope)
+            slope = slope + real(a%weight_below - a%weight_above, xp)*g
+        end if
+    end subroutine theta_xp
+
+    !> `theta_xp` over the panels of `a` (its weights), without the jump at the endpoint.
+    pure subroutine panel_theta_xp(model, a, rough, shift, theta, slope)
+        type(central_force_model), intent(in) :: model
+        type(arch_setup), intent(in) :: a
+        logical, intent(in) :: rough   !! 17-digit rules, transcendentals in double
+        real(xp), intent(in) :: shift
+        real(xp), intent(out) :: theta, slope
         type(panel) :: panels(max_panels)
         real(xp) :: part(2), last, v, lambda, delta, jacobian, g, omq, log_slope, big
         real(xp) :: scale, share, lo, width
@@ -1103,8 +1193,6 @@ contains
         slope = 0.0_xp
         last = 0.0_xp
         big = real(a%big_lambda, xp)
-        shift = 0.0_xp
-        if (a%weight_below == 0.0_qp) shift = real(pi/model%sigma_apse*a%lambda_r, xp)
         do p = 1, count
             associate (pan => panels(p))
             share = 1.0_xp
@@ -1135,13 +1223,7 @@ contains
             slope = slope + real(pan%weight, xp)*width*part(2)
             end associate
         end do
-        if (a%weight_below /= a%weight_above .and. a%delta_r > 0.0_qp .and. &
-            a%lambda_r > 0.0_qp) then
-            call model%law%theta_terms_xp(a%cx, real(a%lambda_r, xp), real(a%delta_r, xp), &
-                                          shift, rough, g, omq, log_slope)
-            slope = slope + real(a%weight_below - a%weight_above, xp)*g
-        end if
-    end subroutine theta_xp
+    end subroutine panel_theta_xp
 
     !> `node_point` in hardware precision.
     elemental subroutine node_point_xp(kind, scale, big_lambda, v, lambda, delta, jacobian)
@@ -1720,15 +1802,19 @@ contains
         type(endpoint_problem), intent(out) :: prob
         real(qp), intent(out) :: apse_angle_rho    !! Theta(rho, rho) (0 when rho = 1)
         type(arch_setup) :: a
-        real(qp) :: sums(3)
+        real(qp) :: sums(3), whole(5)
         real(real64) :: scaled, shift
+        logical :: found
         prob%rho = rho
         prob%psi = psi
         prob%one_minus_rho = 1.0_qp - rho
         prob%delta_rho = minus_log(rho, prob%one_minus_rho)
         prob%limit = 2.0_qp*limit
         apse_angle_rho = 0.0_qp
-        if (rho < 1.0_qp) then
+        call whole_lookup(self, prob%delta_rho, whole, found)
+        if (rho < 1.0_qp .and. found) then
+            apse_angle_rho = whole(1)
+        else if (rho < 1.0_qp) then
             a = setup_arch(self, rho, prob%one_minus_rho, 0.0_qp, prob%delta_rho, &
                            .false., .true.)
             call theta64(self, a, scaled, shift)
