@@ -216,13 +216,14 @@ contains
     !> Tabulate the whole-half-arch integrals in z = log Lambda (piecewise Chebyshev, as
     !! the fast path's tables in R), and check each piece at two points between its
     !! Chebyshev points against the quadrature: a piece is used only if the values agree
-    !! to 8 roundings and the slopes to 4 roundings of the hardware kind (their own
-    !! precision). About 500 full evaluations: 60-70 ms.
+    !! to 8 roundings (Theta of itself; the S and T corrections of 1 - R and t0(R), which
+    !! s and t exceed where the tables are used) and the slopes to 4 roundings of the
+    !! hardware kind (their own precision). About 500 full evaluations: 60-70 ms.
     subroutine build_whole_tables(model)
         type(central_force_model), intent(inout) :: model
         real(qp) :: points(table_points, table_pieces)
         real(qp) :: values(table_points, table_pieces, 5), direct(5), table(5), z, width
-        real(qp) :: lower, upper
+        real(qp) :: lower, upper, big_r, sizes(5)
         real(qp), parameter :: slope_noise = real(epsilon(1.0_xp), qp)
         integer :: k, piece, m, side
         lower = log(table_low)
@@ -249,9 +250,18 @@ contains
                 do m = 1, 5
                     call model%whole(m)%evaluate(z, table(m))
                 end do
-                if (.not. (all(abs(table(1:3) - direct(1:3)) <= 8.0_qp*eps_qp* &
-                                abs(direct(1:3))) .and. all(abs(table(4:5) - direct(4:5)) &
-                                <= 4.0_qp*slope_noise*abs(direct(4:5))))) model%whole_ok(piece) = .false.
+                ! sizes: Theta, and what the S and T corrections (times R) are added to
+                ! where the tables are used (s >= 1 - R, t >= t0(R): `table_sums`)
+                big_r = exp(-exp(z))
+                sizes(1) = direct(1)
+                sizes(2) = max(direct(2), -expm1_qp(-exp(z))/big_r)
+                sizes(3) = max(direct(3), fall_piece(model, 0.0_qp, exp(z))/big_r)
+                sizes(4) = abs(direct(4))
+                sizes(5) = abs(direct(5)) + direct(2)
+                if (.not. (all(abs(table(1:3) - direct(1:3)) <= 8.0_qp*eps_qp*sizes(1:3)) &
+                           .and. all(abs(table(4:5) - direct(4:5)) <= &
+                                     4.0_qp*slope_noise*sizes(4:5)))) &
+                    model%whole_ok(piece) = .false.
             end do
         end do
     end subroutine build_whole_tables
@@ -727,7 +737,11 @@ contains
         end if
         call part_sums(merge(below, above, use_below), part, part_slopes)
         if (a%weight_below == 0.0_qp .and. use_below) then
-            if (.not. all(part <= 0.5_qp*whole(1:3))) then
+            ! W - int_0^lambda_r: at most a bit lost, and the endpoint nearer the apse
+            ! (delta_r >= Lambda/2: 1 - r >= (1 - R)/2, t0(r) >= t0(R)/2, the sizes the
+            ! tables are checked against)
+            if (.not. (all(part <= 0.5_qp*whole(1:3)) .and. &
+                       a%delta_r >= 0.5_qp*a%big_lambda)) then
                 w_sign = 0.0_qp
                 p_sign = 1.0_qp
                 call part_sums(above, part, part_slopes)
@@ -1159,7 +1173,8 @@ contains
             else
                 call panel_theta_xp(model, above, rough, shift, part, part_slope)
             end if
-            if (a%weight_below == 0.0_qp .and. use_below .and. .not. part <= 0.5_xp*whole(1)) then
+            if (a%weight_below == 0.0_qp .and. use_below .and. .not. (part <= 0.5_xp*whole(1) &
+                .and. a%delta_r >= 0.5_qp*a%big_lambda)) then
                 w_sign = 0.0_xp
                 p_sign = 1.0_xp
                 call panel_theta_xp(model, above, rough, shift, part, part_slope)
