@@ -100,7 +100,7 @@ module brachistochrone_central_force
     !! about 0.98 down to 1e-3), in z = log Lambda on equal pieces (graded toward R = 1,
     !! where the integrals are not analytic), table_points Chebyshev points each.
     real(qp), parameter :: table_low = 0.02_qp, table_high = 6.9_qp
-    integer, parameter :: table_pieces = 12, table_points = 36
+    integer, parameter :: table_pieces = 12, table_points = 33
 
     !> One Gauss-Legendre rule on [0, 1].
     type :: gauss_nodes
@@ -218,7 +218,7 @@ contains
     !! Chebyshev points against the quadrature: a piece is used only if the values agree
     !! to 8 roundings (Theta of itself; the S and T corrections of 1 - R and t0(R), which
     !! s and t exceed where the tables are used) and the slopes to 4 roundings of the
-    !! hardware kind (their own precision). About 500 full evaluations: 60-70 ms.
+    !! hardware kind (their own precision). About 430 full evaluations: 60-100 ms.
     subroutine build_whole_tables(model)
         type(central_force_model), intent(inout) :: model
         real(qp) :: points(table_points, table_pieces)
