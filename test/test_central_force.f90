@@ -53,6 +53,7 @@ contains
         call next_to_the_start()
         call two_root_finders()
         call next_to_the_apse_angle()
+        call whole_tables()
         call general_references('power1.5', power_law(n=1.5_qp))
         call general_references('power3', power_law(n=3.0_qp))
         call general_references('logarithmic', logarithmic_law())
@@ -322,6 +323,85 @@ contains
         call check(a(1) < a(2) .and. a(2) < pi/2.0_qp .and. pi/2.0_qp - a(2) < 0.01_qp, &
                    'logarithmic potential: Theta(R,R) rises slowly towards pi/2')
     end subroutine power_laws
+
+    !> The whole-half-arch tables (in z = log Lambda, checked at build time) against the
+    !! quadrature over all panels (a model without tables): Theta, s, t of both half-arches
+    !! at 8 R x 7 r (R from 0.98 to 1.1e-3, the tables' range, with points outside it),
+    !! and R, s, t of the two-point problem on a grid, for n = 1.5, 3, 32 and the
+    !! logarithmic law.
+    subroutine whole_tables()
+        type(central_force_model) :: with, without
+        type(endpoint_solution) :: a, b
+        real(qp) :: big_r, r, x(3), y(3), worst, worst_solve, limit
+        real(qp), parameter :: radii(8) = [0.99_qp, 0.98_qp, 0.9_qp, 0.6_qp, 0.3_qp, &
+                                           0.05_qp, 1.1e-3_qp, 5.0e-4_qp]
+        real(qp), parameter :: fractions(7) = [0.0_qp, 1.0e-20_qp, 1.0e-6_qp, 0.1_qp, &
+                                               0.5_qp, 0.9_qp, 1.0_qp]
+        integer :: law, i, j, k, m, status
+        logical :: second, used
+        call section('central force: whole-half-arch tables against all panels')
+        worst = 99.0_qp
+        worst_solve = 99.0_qp
+        used = .true.
+        do law = 1, 4
+            select case (law)
+            case (1)
+                with = new_central_force_model(power_law(n=1.5_qp))
+                without = new_central_force_model(power_law(n=1.5_qp), tables=.false.)
+            case (2)
+                with = new_central_force_model(power_law(n=3.0_qp))
+                without = new_central_force_model(power_law(n=3.0_qp), tables=.false.)
+            case (3)
+                with = new_central_force_model(power_law(n=32.0_qp))
+                without = new_central_force_model(power_law(n=32.0_qp), tables=.false.)
+            case default
+                with = new_central_force_model(logarithmic_law())
+                without = new_central_force_model(logarithmic_law(), tables=.false.)
+            end select
+            ! steep laws: pieces at small R fail their check (S, T corrections to
+            ! a few digits of themselves) and are not used
+            used = used .and. (count(with%whole_ok) >= 8 .or. law == 3) .and. &
+                   .not. any(without%whole_ok)
+            do i = 1, size(radii)
+                big_r = radii(i)
+                do j = 1, size(fractions)
+                    r = big_r + fractions(j)*(1.0_qp - big_r)
+                    do k = 0, 1
+                        second = k == 1
+                        call with%half_arch(r, big_r, second, x(1), x(2), x(3), status)
+                        call without%half_arch(r, big_r, second, y(1), y(2), y(3), status)
+                        worst = min(worst, minval([(digits_of_agreement(x(m), y(m)), &
+                                                    m = 1, 3)]))
+                    end do
+                end do
+            end do
+            limit = 2.0_qp*with%law%apse_angle_limit()
+            do i = 1, 4
+                do j = 1, 6
+                    a = with%solve(0.2_qp*real(i, qp) + 0.2_qp, &
+                                   limit*real(2*j - 1, qp)/12.0_qp)
+                    b = without%solve(0.2_qp*real(i, qp) + 0.2_qp, &
+                                      limit*real(2*j - 1, qp)/12.0_qp)
+                    if (a%status /= status_ok .or. b%status /= status_ok) then
+                        worst_solve = 0.0_qp
+                    else
+                        ! R-bar itself is ill-conditioned where it is small (psi near
+                        ! the sector's edge): it is compared to 1.5 digits less
+                        worst_solve = min(worst_solve, 1.5_qp + &
+                                          digits_of_agreement(a%apse_radius, b%apse_radius), &
+                                          digits_of_agreement(a%arclength, b%arclength), &
+                                          digits_of_agreement(a%time, b%time))
+                    end if
+                end do
+            end do
+        end do
+        write (output_unit, '(a,2f7.2)') '   fewest digits of theta, s, t (448 points | '// &
+            'R (+1.5), s, t on 96 endpoints):', worst, worst_solve
+        call check(used, 'tables built and checked on at least 8 of 12 pieces (n = 1.5, '// &
+                   '3, logarithmic)')
+        call check(worst >= 32.5_qp, 'half-arch values with tables = all panels (32.5 digits)')
+        call check(worst_solve >= 32.5_qp, 'two-point R (+1.5), s, t with tables = all panels')
+    end subroutine whole_tables
 
     pure subroutine no_closed_fall_power(self, delta_lo, delta_hi, t, found)
         class(quadrature_power_law), intent(in) :: self

@@ -8,7 +8,8 @@
 !! field's accessible region (the same relative grid for the fast path's 2 pi/3). Prints
 !! the median over REPEATS passes (default 3) of the CPU time per endpoint (each pass
 !! solves every endpoint 4 times; CPU time, not wall time, because the machine is shared),
-!! the ratio of the means, and the slowest endpoint relative to the median endpoint.
+!! the ratio of the means, the slowest endpoint relative to the median endpoint, and the
+!! CPU time of the model's build (Gauss rules and whole-half-arch tables).
 program engine_timing
     use, intrinsic :: iso_fortran_env, only: output_unit
     use brachistochrone_kinds, only: qp, pi
@@ -29,7 +30,7 @@ program engine_timing
     real(qp), allocatable :: t_general(:, :), t_fast(:, :), worst(:)
     integer :: repeats, k, i, j, failed, r
     integer, parameter :: inner = 4
-    real :: start, finish
+    real :: start, finish, build
 
     field = 'power'
     exponent = 3.0_qp
@@ -43,11 +44,14 @@ program engine_timing
         call get_command_argument(3, text)
         read (text, *) repeats
     end if
+    call cpu_time(start)
     select case (field)
     case ('logarithmic'); general = new_central_force_model(logarithmic_law())
     case ('harmonic');    general = new_central_force_model(harmonic_law())
     case default;         general = new_central_force_model(power_law(n=exponent))
     end select
+    call cpu_time(finish)
+    build = finish - start
     fast = new_inverse_square_model()
     limit = 2.0_qp*general%law%apse_angle_limit()
     rho = [0.05_qp, 0.25_qp, 0.5_qp, 0.8_qp, 1.0_qp]
@@ -86,4 +90,6 @@ program engine_timing
     write (output_unit, '(a,f8.2)') 'slowest endpoint / median endpoint = ', &
         maxval(worst)/median(worst)
     write (output_unit, '(a,i0)') 'endpoints not solved = ', failed
+    write (output_unit, '(a,f0.3,a,i0,a)') 'model build, s = ', build, &
+        ' (whole-half-arch tables: ', count(general%whole_ok), ' pieces checked)'
 end program engine_timing

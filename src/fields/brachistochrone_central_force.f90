@@ -30,6 +30,16 @@
 !! for power laws with n >= 1.25 and the logarithmic law (`speed_law%closed_fall`), a
 !! quadrature of x/v otherwise (`fall_piece`).
 !!
+!! Whole-half-arch tables (as on the fast path): the integrals over [0, Lambda] with
+!! weight 1 and their slopes, tabulated once per model on R from about 0.98 down to 1e-3
+!! (Lambda in [0.02, 6.9]) as piecewise Chebyshev series in z = log Lambda (equal pieces
+!! in z are graded toward R = 1, where the integrals are not analytic), each piece
+!! checked at build time against the quadrature between its points and used only if it
+!! agrees (`build_whole_tables`). A full evaluation then integrates only the panels
+!! between the endpoint and the nearer end (`table_sums`): the second half-arch is
+!! W + int_0^lambda_r or 2W - int_lambda_r^Lambda, the first int_lambda_r^Lambda or
+!! W - int_0^lambda_r (if that loses at most a bit). Outside the tables: all panels.
+!!
 !! Two-point problem: the root R-bar of Upsilon(R) = psi, in the unknown u = sqrt(rho - R)
 !! for R in [rho/2, rho] (R-bar and rho - R-bar exact next to the apse) or y = log R
 !! below (tiny R-bar keeps its relative precision, down to the binary128 range).
@@ -59,6 +69,7 @@ module brachistochrone_central_force
     use brachistochrone_fast_exp, only: fast_exp
     use brachistochrone_quadrature, only: gauss_legendre_rule, gauss_legendre
     use brachistochrone_speed_laws, only: speed_law, xp
+    use brachistochrone_chebyshev, only: chebyshev_table, chebyshev_points, chebyshev_fit
     use brachistochrone_solution, only: endpoint_solution, endpoint_status, region_inside
     use brachistochrone_arches, only: arch_first, arch_second, arch_complete, arch_radial, &
                                       arch_inaccessible
@@ -85,6 +96,11 @@ module brachistochrone_central_force
     integer, parameter :: max_panels = 160
     !> Lowest log R searched (R above the smallest normal binary128 number).
     real(qp), parameter :: lowest_log_r = -11355.0_qp
+    !> The whole-half-arch tables: Lambda = -log R in [table_low, table_high] (R from
+    !! about 0.98 down to 1e-3), in z = log Lambda on equal pieces (graded toward R = 1,
+    !! where the integrals are not analytic), table_points Chebyshev points each.
+    real(qp), parameter :: table_low = 0.02_qp, table_high = 6.9_qp
+    integer, parameter :: table_pieces = 12, table_points = 33
 
     !> One Gauss-Legendre rule on [0, 1].
     type :: gauss_nodes
@@ -100,6 +116,13 @@ module brachistochrone_central_force
         type(gauss_nodes) :: gauss(max_nodes/2)   !! rules with 2j nodes
         real(qp) :: sigma_apse = 1.0_qp           !! singularity distance, apse side
         real(qp) :: sigma_start = 1.0_qp          !! singularity distance, start side
+        !> the whole-half-arch integrals (weights 1) in z = log Lambda: Theta, S and T
+        !! corrections/R, and their slopes at fixed lambda (as `arch_sums`)
+        type(chebyshev_table) :: whole(5)
+        !> pieces of the tables that passed their check at build time
+        logical :: whole_ok(table_pieces) = .false.
+        !> Theta's table and its slope's in hardware precision (powers of t per piece)
+        real(xp), allocatable :: whole_xp(:, :, :)
     contains
         procedure :: half_arch => general_half_arch    !! theta, s, t at r (eqs. 27-41)
         procedure :: apse_angle => general_apse_angle  !! Theta(R,R)
@@ -138,9 +161,11 @@ module brachistochrone_central_force
 
 contains
 
-    !> A general-engine model for `law` (copied in); builds the Gauss rules once.
-    function new_central_force_model(law) result(model)
+    !> A general-engine model for `law` (copied in); builds the Gauss rules and the
+    !! whole-half-arch tables once (`build_whole_tables`; not with tables = .false.).
+    function new_central_force_model(law, tables) result(model)
         class(speed_law), intent(in) :: law !! the speed law
+        logical, intent(in), optional :: tables !! build the tables (default .true.)
         type(central_force_model) :: model
         type(gauss_legendre_rule) :: rule
         real(qp) :: sigma(2)
@@ -159,7 +184,137 @@ contains
         sigma = law%log_scales()
         model%sigma_apse = sigma(1)
         model%sigma_start = sigma(2)
+        if (present(tables)) then
+            if (.not. tables) return
+        end if
+        call build_whole_tables(model)
     end function new_central_force_model
+
+    !> The apse data of the whole half-arch (weights 1) at Lambda = -log R.
+    pure function whole_setup(model, big_lambda) result(a)
+        type(central_force_model), intent(in) :: model
+        real(qp), intent(in) :: big_lambda
+        type(arch_setup) :: a
+        a%big_lambda = big_lambda
+        a%big_r = exp(-big_lambda)
+        a%one_minus_big_r = -expm1_qp(-big_lambda)
+        call finish_setup(model, a, 0.0_qp, big_lambda, .false., .true.)
+    end function whole_setup
+
+    !> The whole-half-arch integrals and their slopes (`arch_sums`, weights 1) at
+    !! Lambda, as five numbers.
+    pure function whole_direct(model, big_lambda) result(values)
+        type(central_force_model), intent(in) :: model
+        real(qp), intent(in) :: big_lambda
+        real(qp) :: values(5)
+        real(xp) :: slopes(2)
+        call arch_sums(model, whole_setup(model, big_lambda), fine_digits, .true., &
+                       values(1:3), slopes)
+        values(4:5) = real(slopes, qp)
+    end function whole_direct
+
+    !> Tabulate the whole-half-arch integrals in z = log Lambda (piecewise Chebyshev, as
+    !! the fast path's tables in R), and check each piece at two points between its
+    !! Chebyshev points against the quadrature: a piece is used only if the values agree
+    !! to 8 roundings (Theta of itself; the S and T corrections of 1 - R and t0(R), which
+    !! s and t exceed where the tables are used) and the slopes to 4 roundings of the
+    !! hardware kind (their own precision). About 430 full evaluations: 60-100 ms.
+    subroutine build_whole_tables(model)
+        type(central_force_model), intent(inout) :: model
+        real(qp) :: points(table_points, table_pieces)
+        real(qp) :: values(table_points, table_pieces, 5), direct(5), table(5), z, width
+        real(qp) :: lower, upper, big_r, sizes(5)
+        real(qp), parameter :: slope_noise = real(epsilon(1.0_xp), qp)
+        integer :: k, piece, m, side
+        lower = log(table_low)
+        upper = log(table_high)
+        points = chebyshev_points(lower, upper, table_pieces, table_points)
+        do piece = 1, table_pieces
+            do k = 1, table_points
+                values(k, piece, :) = whole_direct(model, exp(points(k, piece)))
+            end do
+        end do
+        ! the values carry rounding noise of about eps (the slopes: of the hardware kind)
+        do m = 1, 5
+            model%whole(m) = chebyshev_fit(lower, upper, values(:, :, m), &
+                                           merge(0.5_qp*eps_qp, slope_noise, m <= 3))
+        end do
+        model%whole_xp = reshape(real([model%whole(1)%power, model%whole(4)%power], xp), &
+                                 [table_points, table_pieces, 2])
+        width = (upper - lower)/real(table_pieces, qp)
+        do piece = 1, table_pieces
+            model%whole_ok(piece) = .true.
+            do side = 1, 2
+                z = lower + width*(real(piece - 1, qp) + merge(0.3_qp, 0.71_qp, side == 1))
+                direct = whole_direct(model, exp(z))
+                do m = 1, 5
+                    call model%whole(m)%evaluate(z, table(m))
+                end do
+                ! sizes: Theta, and what the S and T corrections (times R) are added to
+                ! where the tables are used (s >= 1 - R, t >= t0(R): `table_sums`)
+                big_r = exp(-exp(z))
+                sizes(1) = direct(1)
+                sizes(2) = max(direct(2), -expm1_qp(-exp(z))/big_r)
+                sizes(3) = max(direct(3), fall_piece(model, 0.0_qp, exp(z))/big_r)
+                sizes(4) = abs(direct(4))
+                sizes(5) = abs(direct(5)) + direct(2)
+                if (.not. (all(abs(table(1:3) - direct(1:3)) <= 8.0_qp*eps_qp*sizes(1:3)) &
+                           .and. all(abs(table(4:5) - direct(4:5)) <= &
+                                     4.0_qp*slope_noise*sizes(4:5)))) &
+                    model%whole_ok(piece) = .false.
+            end do
+        end do
+    end subroutine build_whole_tables
+
+    !> Theta's whole-half-arch table and its slope's at Lambda in hardware precision (as
+    !! `whole_lookup`).
+    pure subroutine whole_lookup_xp(model, big_lambda, values, found)
+        type(central_force_model), intent(in) :: model
+        real(xp), intent(in) :: big_lambda
+        real(xp), intent(out) :: values(2)
+        logical, intent(out) :: found
+        real(xp) :: position, t
+        integer :: piece, m, j
+        values = 0.0_xp
+        found = .false.
+        if (.not. (big_lambda >= real(table_low, xp) .and. &
+                   big_lambda <= real(table_high, xp))) return
+        position = (log(big_lambda) - log(real(table_low, xp)))/ &
+                   (log(real(table_high, xp)) - log(real(table_low, xp)))* &
+                   real(table_pieces, xp)
+        piece = min(table_pieces, max(1, int(position) + 1))
+        if (.not. model%whole_ok(piece)) return
+        t = 2.0_xp*(position - real(piece - 1, xp)) - 1.0_xp
+        do m = 1, 2
+            values(m) = model%whole_xp(table_points, piece, m)
+            do j = table_points - 1, 1, -1
+                values(m) = values(m)*t + model%whole_xp(j, piece, m)
+            end do
+        end do
+        found = .true.
+    end subroutine whole_lookup_xp
+
+    !> The tabulated whole-half-arch integrals at Lambda (`whole_direct`'s five numbers);
+    !! `found` only inside the tables' range on a checked piece.
+    pure subroutine whole_lookup(model, big_lambda, values, found)
+        type(central_force_model), intent(in) :: model
+        real(qp), intent(in) :: big_lambda
+        real(qp), intent(out) :: values(5)
+        logical, intent(out) :: found
+        real(qp) :: z
+        integer :: piece, m
+        values = 0.0_qp
+        found = .false.
+        if (.not. (big_lambda >= table_low .and. big_lambda <= table_high)) return
+        z = log(big_lambda)
+        piece = min(table_pieces, max(1, int((z - log(table_low))/(log(table_high) - &
+                    log(table_low))*real(table_pieces, qp)) + 1))
+        if (.not. model%whole_ok(piece)) return
+        do m = 1, 5
+            call model%whole(m)%evaluate(z, values(m))
+        end do
+        found = .true.
+    end subroutine whole_lookup
 
     !> The apse data for R (with 1 - R exact) and the endpoint r = R + d.
     pure function setup_arch(model, big_r, one_minus_big_r, d, delta_r, second, whole) &
@@ -535,6 +690,82 @@ contains
         end do
     end subroutine arch_sums
 
+    !> `arch_sums` on the full rules (want_length_time) with the whole-half-arch tables
+    !! where they apply (`whole_lookup`): with W the whole integrals, the second half-arch
+    !! (weights 2 below the endpoint, 1 above) is W + int_0^lambda_r or 2W -
+    !! int_lambda_r^Lambda, the first (0, 1) int_lambda_r^Lambda or W - int_0^lambda_r,
+    !! whichever has fewer panels (the subtraction of the first half-arch only if
+    !! int_0^lambda_r <= W/2: at most a bit lost). magnitude: the sums of the slopes'
+    !! terms' sizes (for the error bounds of `arch_values`).
+    pure subroutine table_sums(model, a, sums, slopes, magnitude)
+        type(central_force_model), intent(in) :: model
+        type(arch_setup), intent(in) :: a
+        real(qp), intent(out) :: sums(3)
+        real(xp), intent(out), optional :: slopes(2), magnitude(2)
+        type(arch_setup) :: below, above
+        type(panel) :: panels(max_panels)
+        real(qp) :: whole(5), part(3), w_sign, p_sign
+        real(xp) :: part_slopes(2)
+        integer :: n_below, n_above
+        logical :: found, use_below
+        call whole_lookup(model, a%big_lambda, whole, found)
+        found = found .and. a%weight_above == 1.0_qp .and. &
+                (a%weight_below == 0.0_qp .or. a%weight_below == 2.0_qp)
+        if (.not. found) then
+            if (present(slopes)) then
+                call arch_sums(model, a, fine_digits, .true., sums, slopes)
+                magnitude = abs(slopes)
+            else
+                call arch_sums(model, a, fine_digits, .true., sums)
+            end if
+            return
+        end if
+        below = a
+        below%weight_below = 1.0_qp
+        below%weight_above = 0.0_qp
+        above = a
+        above%weight_below = 0.0_qp
+        call arch_panels(model, below, panels, n_below)
+        call arch_panels(model, above, panels, n_above)
+        use_below = n_below <= n_above
+        if (a%weight_below == 2.0_qp) then
+            w_sign = merge(1.0_qp, 2.0_qp, use_below)
+            p_sign = merge(1.0_qp, -1.0_qp, use_below)
+        else
+            w_sign = merge(1.0_qp, 0.0_qp, use_below)
+            p_sign = merge(-1.0_qp, 1.0_qp, use_below)
+        end if
+        call part_sums(merge(below, above, use_below), part, part_slopes)
+        if (a%weight_below == 0.0_qp .and. use_below) then
+            ! W - int_0^lambda_r: at most a bit lost, and the endpoint nearer the apse
+            ! (delta_r >= Lambda/2: 1 - r >= (1 - R)/2, t0(r) >= t0(R)/2, the sizes the
+            ! tables are checked against)
+            if (.not. (all(part <= 0.5_qp*whole(1:3)) .and. &
+                       a%delta_r >= 0.5_qp*a%big_lambda)) then
+                w_sign = 0.0_qp
+                p_sign = 1.0_qp
+                call part_sums(above, part, part_slopes)
+            end if
+        end if
+        sums = w_sign*whole(1:3) + p_sign*part
+        if (present(slopes)) then
+            slopes = real(w_sign*whole(4:5), xp) + real(p_sign, xp)*part_slopes
+            magnitude = abs(real(w_sign*whole(4:5), xp)) + abs(part_slopes)
+        end if
+    contains
+        pure subroutine part_sums(b, part, part_slopes)
+            type(arch_setup), intent(in) :: b
+            real(qp), intent(out) :: part(3)
+            real(xp), intent(out) :: part_slopes(2)
+            if (present(slopes)) then
+                call arch_sums(model, b, fine_digits, .true., part, part_slopes)
+            else
+                call arch_sums(model, b, fine_digits, .true., part)
+                part_slopes = 0.0_xp
+            end if
+        end subroutine part_sums
+    end subroutine table_sums
+
     !> Bound on a panel's share of the sums so far: its length in lambda times the
     !! integrands at the nearest node of the previous panel (they decay away from the
     !! apse), for the first `count` sums.
@@ -709,8 +940,9 @@ contains
         real(xp), intent(out), optional :: slopes(4)
         real(qp) :: sums(3), fall
         real(xp) :: integral_slopes(2), g, omq, log_slope, root, h, jump, big_r, error
+        real(xp) :: magnitude(2)
         if (present(slopes)) then
-            call arch_sums(model, a, fine_digits, .true., sums, integral_slopes)
+            call table_sums(model, a, sums, integral_slopes, magnitude)
             ! the endpoint lambda_r = Lambda - delta_r moves with Lambda: the integrands
             ! there times the jump of the weights (g = 0 at the start, delta_r = 0)
             g = 0.0_xp
@@ -732,10 +964,10 @@ contains
             ! laws: exp(-a delta), a < 2 kappa), lambda, delta <= Lambda
             error = epsilon(1.0_xp)*(32.0_xp + real(2.0_qp*pi/model%sigma_apse* &
                                                    a%big_lambda, xp))
-            slopes(3) = error*(abs(integral_slopes(1)) + abs(g))
-            slopes(4) = error*big_r*(abs(integral_slopes(2)) + abs(h) + real(sums(2), xp))
+            slopes(3) = error*(magnitude(1) + abs(g))
+            slopes(4) = error*big_r*(magnitude(2) + abs(h) + real(sums(2), xp))
         else
-            sums = arch_integrals(model, a, fine_digits, .true.)
+            call table_sums(model, a, sums)
         end if
         if (second) then
             ! 2 t0(R) - t0(r) = t0(r) + 2 (t0(R) - t0(r))
@@ -908,6 +1140,65 @@ contains
         type(arch_setup), intent(in) :: a
         logical, intent(in) :: rough   !! 17-digit rules, transcendentals in double
         real(xp), intent(out) :: theta, slope, shift
+        type(arch_setup) :: below, above
+        type(panel) :: panels(max_panels)
+        real(xp) :: whole(2), part, part_slope, w_sign, p_sign, g, omq, log_slope
+        integer :: n_below, n_above
+        logical :: found, use_below
+        shift = 0.0_xp
+        if (a%weight_below == 0.0_qp) shift = real(pi/model%sigma_apse*a%lambda_r, xp)
+        call whole_lookup_xp(model, real(a%big_lambda, xp), whole, found)
+        found = found .and. a%weight_above == 1.0_qp .and. &
+                (a%weight_below == 0.0_qp .or. a%weight_below == 2.0_qp)
+        if (found) then
+            ! as `table_sums`, Theta scaled by exp(shift)
+            whole = whole*exp(shift)
+            below = a
+            below%weight_below = 1.0_qp
+            below%weight_above = 0.0_qp
+            above = a
+            above%weight_below = 0.0_qp
+            call arch_panels(model, below, panels, n_below)
+            call arch_panels(model, above, panels, n_above)
+            use_below = n_below <= n_above
+            if (a%weight_below == 2.0_qp) then
+                w_sign = merge(1.0_xp, 2.0_xp, use_below)
+                p_sign = merge(1.0_xp, -1.0_xp, use_below)
+            else
+                w_sign = merge(1.0_xp, 0.0_xp, use_below)
+                p_sign = merge(-1.0_xp, 1.0_xp, use_below)
+            end if
+            if (use_below) then
+                call panel_theta_xp(model, below, rough, shift, part, part_slope)
+            else
+                call panel_theta_xp(model, above, rough, shift, part, part_slope)
+            end if
+            if (a%weight_below == 0.0_qp .and. use_below .and. .not. (part <= 0.5_xp*whole(1) &
+                .and. a%delta_r >= 0.5_qp*a%big_lambda)) then
+                w_sign = 0.0_xp
+                p_sign = 1.0_xp
+                call panel_theta_xp(model, above, rough, shift, part, part_slope)
+            end if
+            theta = w_sign*whole(1) + p_sign*part
+            slope = w_sign*whole(2) + p_sign*part_slope
+        else
+            call panel_theta_xp(model, a, rough, shift, theta, slope)
+        end if
+        if (a%weight_below /= a%weight_above .and. a%delta_r > 0.0_qp .and. &
+            a%lambda_r > 0.0_qp) then
+            call model%law%theta_terms_xp(a%cx, real(a%lambda_r, xp), real(a%delta_r, xp), &
+                                          shift, rough, g, omq, log_slope)
+            slope = slope + real(a%weight_below - a%weight_above, xp)*g
+        end if
+    end subroutine theta_xp
+
+    !> `theta_xp` over the panels of `a` (its weights), without the jump at the endpoint.
+    pure subroutine panel_theta_xp(model, a, rough, shift, theta, slope)
+        type(central_force_model), intent(in) :: model
+        type(arch_setup), intent(in) :: a
+        logical, intent(in) :: rough   !! 17-digit rules, transcendentals in double
+        real(xp), intent(in) :: shift
+        real(xp), intent(out) :: theta, slope
         type(panel) :: panels(max_panels)
         real(xp) :: part(2), last, v, lambda, delta, jacobian, g, omq, log_slope, big
         real(xp) :: scale, share, lo, width
@@ -917,8 +1208,6 @@ contains
         slope = 0.0_xp
         last = 0.0_xp
         big = real(a%big_lambda, xp)
-        shift = 0.0_xp
-        if (a%weight_below == 0.0_qp) shift = real(pi/model%sigma_apse*a%lambda_r, xp)
         do p = 1, count
             associate (pan => panels(p))
             share = 1.0_xp
@@ -949,13 +1238,7 @@ contains
             slope = slope + real(pan%weight, xp)*width*part(2)
             end associate
         end do
-        if (a%weight_below /= a%weight_above .and. a%delta_r > 0.0_qp .and. &
-            a%lambda_r > 0.0_qp) then
-            call model%law%theta_terms_xp(a%cx, real(a%lambda_r, xp), real(a%delta_r, xp), &
-                                          shift, rough, g, omq, log_slope)
-            slope = slope + real(a%weight_below - a%weight_above, xp)*g
-        end if
-    end subroutine theta_xp
+    end subroutine panel_theta_xp
 
     !> `node_point` in hardware precision.
     elemental subroutine node_point_xp(kind, scale, big_lambda, v, lambda, delta, jacobian)
@@ -1534,15 +1817,19 @@ contains
         type(endpoint_problem), intent(out) :: prob
         real(qp), intent(out) :: apse_angle_rho    !! Theta(rho, rho) (0 when rho = 1)
         type(arch_setup) :: a
-        real(qp) :: sums(3)
+        real(qp) :: sums(3), whole(5)
         real(real64) :: scaled, shift
+        logical :: found
         prob%rho = rho
         prob%psi = psi
         prob%one_minus_rho = 1.0_qp - rho
         prob%delta_rho = minus_log(rho, prob%one_minus_rho)
         prob%limit = 2.0_qp*limit
         apse_angle_rho = 0.0_qp
-        if (rho < 1.0_qp) then
+        call whole_lookup(self, prob%delta_rho, whole, found)
+        if (rho < 1.0_qp .and. found) then
+            apse_angle_rho = whole(1)
+        else if (rho < 1.0_qp) then
             a = setup_arch(self, rho, prob%one_minus_rho, 0.0_qp, prob%delta_rho, &
                            .false., .true.)
             call theta64(self, a, scaled, shift)
