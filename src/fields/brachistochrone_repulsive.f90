@@ -178,6 +178,12 @@ module brachistochrone_repulsive
         procedure :: evaluate => integrand_evaluate
     end type repulsive_integrand
 
+    !> The hardware-precision iterates of `falsi_xp` (x, theta - target).
+    type :: iterates
+        integer :: n = 0
+        real(qp) :: x(62) = 0.0_qp, f(62) = 0.0_qp
+    end type iterates
+
     !> theta(rho) - target in the solver's unknown lambda (log g or log(3 - 2R)).
     type, extends(root_function) :: angle_mismatch
         real(qp) :: rho = 1.0_qp, target = 0.0_qp
@@ -965,6 +971,8 @@ contains
         real(qp) :: scale, check
         integer :: status, steps, stat(2)
         type(repulsive_curve) :: curve
+        type(iterates) :: seen
+        logical :: found
         done = .false.
         if (f_top == 0.0_qp) return
         floor = log(critical_floor)
@@ -988,9 +996,16 @@ contains
                 f_hi = f_lo
             end do
         end if
-        call falsi_xp(rho, target, arch, rules, lo, f_lo, hi, f_hi, x0, fx0, steps, status)
+        call falsi_xp(rho, target, arch, rules, lo, f_lo, hi, f_hi, x0, fx0, steps, status, &
+                      seen)
         if (status /= status_ok) return
-        if (arch > near_apse) then
+        stat = status_ok
+        call history_slope(seen, x0, fx0, lambda_scale(arch, x0), slope, curvature, h, found)
+        if (arch < near_apse .and. found) then
+            ! slope and curvature from the quadratic through x0 and two earlier iterates
+            check = 1.0e-6_qp
+            steps = steps - 2
+        else if (arch > near_apse) then
             ! u may be far below the hardware phase's noise: one-sided differences over
             ! 1e-3 of the square-root law's reach, from x0 up (theta is smooth in u
             ! there); the slope cross-check to 1e-2
@@ -1126,18 +1141,69 @@ contains
         if (arch > near_apse) scale = max(abs(lambda), tiny(1.0_qp))
     end function lambda_scale
 
+    !> The slope and curvature (|f''|/|2 f'| + 1, as from central differences) at the last
+    !! iterate x0 from the quadratic through it and the two nearest earlier iterates at
+    !! least 1e-8 (relative to `scale`, so that the hardware noise, 1e-19 of the target,
+    !! stays below 1e-11 of the slope) and at most 1e-2 from it, the product of their
+    !! distances below 1e-8 (the quadratic's own error); h: the nearer distance
+    !! (the noise of the slope is about 1e-19 target/h). `found` false when there are no
+    !! such two iterates (the caller then takes central differences).
+    pure subroutine history_slope(seen, x0, f0, scale, slope, curvature, h, found)
+        type(iterates), intent(in) :: seen
+        real(qp), intent(in) :: x0, f0, scale
+        real(qp), intent(out) :: slope, curvature, h
+        logical, intent(out) :: found
+        real(qp) :: d(2), x(2), f(2), dist, s1, s2, second
+        integer :: i, j
+        slope = 0.0_qp
+        curvature = 0.0_qp
+        h = 0.0_qp
+        d = huge(1.0_qp)
+        x = 0.0_qp
+        f = 0.0_qp
+        do i = 1, seen%n
+            dist = abs(seen%x(i) - x0)
+            if (dist < 1.0e-8_qp*scale .or. dist > 1.0e-2_qp*scale) cycle
+            if ((d(1) < huge(1.0_qp) .and. seen%x(i) == x(1)) .or. &
+                (d(2) < huge(1.0_qp) .and. seen%x(i) == x(2))) cycle
+            j = merge(1, 2, dist < d(1))
+            if (j == 2 .and. .not. dist < d(2)) cycle
+            if (j == 1) then
+                d(2) = d(1)
+                x(2) = x(1)
+                f(2) = f(1)
+            end if
+            d(j) = dist
+            x(j) = seen%x(i)
+            f(j) = seen%f(i)
+        end do
+        ! the quadratic's error in the slope, about f'''(x0) d1 d2/6, far below the check
+        found = d(2) < huge(1.0_qp) .and. d(1)*d(2) <= 1.0e-8_qp*scale*scale
+        if (.not. found) return
+        s1 = (f(1) - f0)/(x(1) - x0)
+        s2 = (f(2) - f0)/(x(2) - x0)
+        second = (s2 - s1)/(x(2) - x(1))
+        slope = s1 + second*(x0 - x(1))
+        found = slope /= 0.0_qp
+        if (.not. found) return
+        curvature = abs(second)/abs(slope) + 1.0_qp
+        h = d(1)
+    end subroutine history_slope
+
     !> Regula falsi (Anderson-Bjorck) on the hardware-precision mismatch from the bracket
     !! [lo, hi], to 1e-17 of lambda or to the evaluations' noise; x, fx: the last iterate.
     !! status: status_ok or an evaluation's failure (running out of steps is not one:
     !! the result is only the start of the binary128 phase, which certifies).
     pure subroutine falsi_xp(rho, target, arch, rules, lo, f_lo, hi, f_hi, x, fx, steps, &
-                             status)
+                             status, seen)
         real(qp), intent(in) :: rho, target, lo, f_lo, hi, f_hi
         integer, intent(in) :: arch
         type(panel_rules), intent(in) :: rules
         real(qp), intent(out) :: x, fx
         integer, intent(inout) :: steps
         integer, intent(out) :: status
+        !> every iterate (x, f) (the bracket's ends first), for `history_slope`
+        type(iterates), intent(out) :: seen
         real(qp) :: a, b, fa, fb, scale
         integer :: side, i
         a = lo
@@ -1148,11 +1214,17 @@ contains
         status = status_ok
         x = b
         fx = fb
+        seen%n = 2
+        seen%x(1:2) = [a, b]
+        seen%f(1:2) = [fa, fb]
         do i = 1, 60
             x = (a*fb - b*fa)/(fb - fa)
             if (.not. (x > min(a, b) .and. x < max(a, b))) x = 0.5_qp*(a + b)
             call mismatch_xp(rho, target, arch, rules, x, fx, status)
             steps = steps + 1
+            seen%n = seen%n + 1
+            seen%x(seen%n) = x
+            seen%f(seen%n) = fx
             if (status /= status_ok) return
             if (abs(fx) <= 1.0e-18_qp*target) return
             if ((fx > 0.0_qp) .eqv. (fb > 0.0_qp)) then
