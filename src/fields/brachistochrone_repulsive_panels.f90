@@ -352,15 +352,16 @@ contains
         complex(real64), intent(in) :: points(:)
         real(real64), intent(in) :: a, b, digits
         integer :: n
-        complex(real64) :: z_plus, z_minus, root
-        real(real64) :: rho, rho_min, wanted
+        real(real64) :: rho, rho_min, wanted, half_sum, scale
         integer :: k
+        ! the ellipse through z with foci -+1: semi-major axis (|z + 1| + |z - 1|)/2 = c,
+        ! rho = c + sqrt(c^2 - 1) (no complex square roots)
         rho_min = huge(1.0_real64)
+        scale = 1.0_real64/(b - a)
         do k = 1, size(points)
-            z_plus = 2.0_real64*(points(k) - a)/(b - a)
-            z_minus = 2.0_real64*(points(k) - b)/(b - a)
-            root = sqrt(z_minus)*sqrt(z_plus)
-            rho = max(abs(z_plus - 1.0_real64 + root), abs(z_plus - 1.0_real64 - root))
+            half_sum = (abs(points(k) - a) + abs(points(k) - b))*scale
+            rho = half_sum + sqrt(max((half_sum - 1.0_real64)*(half_sum + 1.0_real64), &
+                                      0.0_real64))
             rho_min = min(rho_min, rho)
         end do
         n = huge(1)
