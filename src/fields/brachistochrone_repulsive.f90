@@ -1317,22 +1317,28 @@ contains
     end subroutine solve_repulsive
 
     !> For 1 < rho < 3/2, the angles at rho of the critical curve and of the curve with
-    !! its apse at rho, which split the targets among the branches (0 otherwise); the
-    !! latter in hardware precision (`solve_target` takes it in binary128 when a target
-    !! is within 1e-15 of it). status: status_ok or the first failure of those integrals.
+    !! its apse at rho, which split the targets among the branches (0 otherwise); both
+    !! in hardware precision (`solve_target` takes them in binary128 when a target is
+    !! within 1e-15 of one). status: status_ok or the first failure of those integrals.
     pure subroutine branch_angles(rho, rules, angle_critical, angle_apse, status)
         real(qp), intent(in) :: rho
         type(panel_rules), intent(in) :: rules
         real(qp), intent(out) :: angle_critical, angle_apse
         integer, intent(out) :: status
         type(repulsive_curve) :: curve
-        real(qp) :: dummy(2), values(3)
+        real(qp) :: values(3)
+        real(xp) :: u, e
         integer :: stat(3)
         angle_critical = 0.0_qp
         angle_apse = 0.0_qp
         status = status_ok
         if (.not. (rho > 1.0_qp .and. rho < 1.5_qp)) return
-        call critical_values(rho, angle_critical, dummy(1), dummy(2), stat(1))
+        ! the critical curve's angle of `critical_values` (3 - 2 rho formed in binary128)
+        u = sqrt(real((rho - 1.0_qp)/(rho + 3.0_qp), xp))
+        e = real((3.0_qp - 2.0_qp*rho)/(rho + 3.0_qp), xp)
+        angle_critical = real(2.0_xp/sqrt(3.0_xp)*(log(1.0_xp + 3.0_xp*u) - &
+                              0.5_xp*log(4.0_xp*e)) - 2.0_xp*atan(sqrt(3.0_xp)*u), qp)
+        stat(1) = status_ok
         call curve_from_apse(rho, curve, stat(2))
         call panel_values(curve, rho, .false., rules, .true., values, stat(3))
         angle_apse = values(1)
@@ -1360,13 +1366,19 @@ contains
 
     !> The curve from A through (rho, target): the radial path for target 0, else the
     !! branch that holds the target (complete arches when rho = 1).
-    pure subroutine solve_target(rho, target, angle_critical, angle_apse_xp, rules, solution)
-        real(qp), intent(in) :: rho, target, angle_critical, angle_apse_xp
+    pure subroutine solve_target(rho, target, angle_critical_xp, angle_apse_xp, rules, &
+                                 solution)
+        real(qp), intent(in) :: rho, target, angle_critical_xp, angle_apse_xp
         type(panel_rules), intent(in) :: rules
         type(repulsive_solution), intent(inout) :: solution
         integer :: stat_values, near
-        real(qp) :: angle_apse
+        real(qp) :: angle_apse, angle_critical, dummy(2)
         angle_apse = angle_apse_xp
+        angle_critical = angle_critical_xp
+        if (rho > 1.0_qp .and. rho < 1.5_qp .and. &
+            abs(target - angle_critical) <= 1.0e-15_qp*target) then
+            call critical_values(rho, angle_critical, dummy(1), dummy(2), stat_values)
+        end if
         if (rho > 1.0_qp .and. rho < 1.5_qp .and. &
             abs(target - angle_apse) <= 1.0e-15_qp*target) then
             call apse_angle_exact(rho, rules, angle_apse, stat_values)

@@ -48,8 +48,9 @@ module brachistochrone_repulsive_panels
     integer, parameter :: max_nodes = 48, max_panels = 64
     !> Digits aimed at: binary128 (with a margin over 34) and the hardware phase.
     real(real64), parameter :: quad_digits = 35.0_real64, hardware_digits = 20.5_real64
-    !> Digits aimed at by the complex-step slopes (used only through a step below 1e-17)
-    real(real64), parameter :: slope_digits = 22.0_real64
+    !> Digits aimed at by the complex-step slopes (used only through a step below 1e-17 of
+    !! lambda, so 1e-17 of relative error would do; the hardware rounding is 1e-19)
+    real(real64), parameter :: slope_digits = 19.0_real64
     real(qp), parameter :: sqrt2 = sqrt(2.0_qp), far_start = 4.0_qp
 
     !> One Gauss-Legendre rule on [0, 1]: nodes and weights in both precisions.
