@@ -44,7 +44,8 @@ module brachistochrone_repulsive_panels
                           piece_arch_start = 7
     integer, parameter :: max_pieces = 6
     !> The ladder of rules and the most panels for one integral.
-    integer, parameter :: ladder(*) = [6, 8, 10, 12, 16, 20, 24, 28, 32, 36, 40, 44, 48]
+    integer, parameter :: ladder(*) = [6, 8, 10, 12, 16, 20, 24, 28, 30, 32, 34, 36, 38, &
+                                       40, 44, 48]
     integer, parameter :: max_nodes = 48, max_panels = 64
     !> Digits aimed at: binary128 (with a margin over 34) and the hardware phase.
     real(real64), parameter :: quad_digits = 35.0_real64, hardware_digits = 20.5_real64
