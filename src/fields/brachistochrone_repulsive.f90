@@ -114,7 +114,7 @@ module brachistochrone_repulsive
     !! sqrt(beta) ~ 1e-30 is still far above the rounding of a = (3 - g)/2.
     real(qp), parameter :: critical_floor = eps_qp**1.75_qp
 
-    real(qp), parameter :: sqrt2 = sqrt(2.0_qp), sqrt3 = sqrt(3.0_qp)
+    real(qp), parameter :: sqrt2 = sqrt(2.0_qp), sqrt3 = sqrt(3.0_qp), log_three = log(3.0_qp)
     !> Relative accuracy asked of each integral piece.
     real(qp), parameter :: integral_tolerance = 2.0_qp*eps_qp
     !> Breakpoints of the unbounded integrals: start piece up to x = 5/4, far piece beyond 4.
@@ -1001,6 +1001,20 @@ contains
         if (status /= status_ok) return
         stat = status_ok
         call history_slope(seen, x0, fx0, lambda_scale(arch, x0), slope, curvature, h, found)
+        if (arch < near_apse .and. .not. found) then
+            ! one more iterate 1e-6 away (one evaluation, not the two of central
+            ! differences) usually completes the quadratic
+            h = min(1.0e-6_qp*lambda_scale(arch, x0), 0.5_qp*(hi - x0))
+            if (h > 1.0e-8_qp*lambda_scale(arch, x0) .and. seen%n < size(seen%x)) then
+                seen%n = seen%n + 1
+                seen%x(seen%n) = x0 + h
+                call mismatch_xp(rho, target, arch, rules, x0 + h, seen%f(seen%n), stat(1))
+                steps = steps + 1
+                if (stat(1) /= status_ok) return
+                call history_slope(seen, x0, fx0, lambda_scale(arch, x0), slope, &
+                                   curvature, h, found)
+            end if
+        end if
         if (arch < near_apse .and. found) then
             ! slope and curvature from the quadratic through x0 and two earlier iterates
             check = 1.0e-6_qp
@@ -1045,7 +1059,8 @@ contains
             x = x0 + dx
             if (x > lo .and. x < hi .and. 1.0e-17_qp*abs(dx) + curvature*dx*dx <= &
                 2.0_qp*eps_qp*scale) then
-                call curve_of_lambda(arch, x0 + 0.5_qp*dx, curve, rho)
+                ! (K at the midpoint to 1e-19 is ample: it multiplies f0, below 1e-16)
+                call rough_curve_of_lambda(arch, x0 + 0.5_qp*dx, curve, rho)
                 conserved = curve%k
                 call curve_of_lambda(arch, x, solution%curve, rho)
                 solution%arch = mod(arch, near_apse)
@@ -1399,7 +1414,7 @@ contains
             call solve_fast_or_slow(rho, target, arch_second, 0.0_qp, -target, &
                                     rules, solution)
         else if (rho >= 1.5_qp .or. target < angle_critical) then
-            call solve_fast_or_slow(rho, target, arch_unbounded, log(3.0_qp), -target, &
+            call solve_fast_or_slow(rho, target, arch_unbounded, log_three, -target, &
                                     rules, solution)
         else
             ! next to the apse (R - rho below 1e-4 of 3 - 2 rho and of rho - 1 by the
