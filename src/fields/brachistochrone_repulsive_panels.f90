@@ -366,7 +366,7 @@ contains
         rho_min = huge(1.0_real64)
         scale = 1.0_real64/(b - a)
         do k = 1, size(points)
-            half_sum = (abs(points(k) - a) + abs(points(k) - b))*scale
+            half_sum = (modulus(points(k) - a) + modulus(points(k) - b))*scale
             rho = half_sum + sqrt(max((half_sum - 1.0_real64)*(half_sum + 1.0_real64), &
                                       0.0_real64))
             rho_min = min(rho_min, rho)
@@ -469,6 +469,18 @@ contains
         call add(points, np, i1)
         call add(points, np, -i1)
     end subroutine singular_points
+
+    !> |z| without hypot's care for overflow and underflow where neither can happen.
+    elemental function modulus(z) result(m)
+        complex(real64), intent(in) :: z
+        real(real64) :: m
+        if (abs(real(z)) < 1.0e150_real64 .and. abs(aimag(z)) < 1.0e150_real64 .and. &
+            abs(real(z)) + abs(aimag(z)) > 1.0e-150_real64) then
+            m = sqrt(real(z)**2 + aimag(z)**2)
+        else
+            m = abs(z)
+        end if
+    end function modulus
 
     pure subroutine add(points, np, point)
         complex(real64), intent(inout) :: points(:)
