@@ -71,7 +71,9 @@
 !! the complex step in hardware precision (curve, pieces' ends and panels all carried
 !! through x + i h dx/dlambda); t by Hamilton-Jacobi, dt/d theta = K at fixed rho. The
 !! step is accepted when its error, 1e-17 |dx| + curvature dx^2 (the curvature and a
-!! cross-check of the slope from central differences), is below a rounding of lambda;
+!! cross-check of the slope from the quadratic through x0 and two of the root finder's
+!! iterates 1e-8 .. 1e-2 away, one more evaluation 1e-6 away when only one is there, else
+!! central differences), is below a rounding of lambda;
 !! else a second binary128 evaluation and the secant through both (certified by the
 !! residual's decrease), else the adaptive solver (`solve_branch`), which also takes
 !! the curves whose panels decline (g or 3 - 2R below about 1e-41). Next to the apse
@@ -953,8 +955,10 @@ contains
 
     !> The fast path of `solve_branch`: the bracket and the root to about 1e-17 on
     !! hardware-precision panels (regula falsi with the Anderson-Bjorck correction), the
-    !! slope and curvature there by central differences; then two binary128 evaluations
-    !! of theta, s, t: at that root x0 and at its Newton step x1. The secant through both
+    !! slope and curvature there from its iterates (`history_slope`) or differences; one
+    !! binary128 evaluation and the Newton step on the complex-step slopes (see the module
+    !! notes); else two binary128 evaluations of theta, s, t: at that root x0 and at its
+    !! Newton step x1. The secant through both
     !! gives the root x; s and t are interpolated there. Certified when |f(x1)| <= 1e-6
     !! |f(x0)| (the step converged as Newton's does) and the secant's and the
     !! interpolation's error, curvature |x - x0| |x - x1|, is below a rounding of x.
