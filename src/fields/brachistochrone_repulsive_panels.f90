@@ -520,7 +520,7 @@ contains
         real(qp), intent(in) :: v, w
         real(qp), intent(out) :: y(3)
         real(qp), parameter :: half_root2 = 0.5_qp*sqrt2
-        real(qp) :: point, xm1, h, sn, cs, rw, rx, ip, inv, one_minus, p2, vv, rip
+        real(qp) :: point, xm1, h, sn, cs, rw, rx, ip, inv, one_minus, p2, vv, rip, q
         associate (c => pc%c)
         select case (kind)
         case (piece_start)
@@ -542,17 +542,20 @@ contains
                 inv = 2.0_qp/one_minus
                 h = pc%root_beta*v*inv
                 point = c%a + merge(-h, h, kind == piece_below)
-                rw = w*inv*inverse_sqrt(point + c%p)
+                rw = w*inv
+                q = point + c%p
             else
                 h = v
                 point = c%a + merge(-h, h, kind == piece_below)
-                rw = w*inverse_sqrt((v*v + c%beta)*(point + c%p))
+                rw = w
+                q = (v*v + c%beta)*(point + c%p)
             end if
             xm1 = pc%a_m1 + merge(-h, h, kind == piece_below)
         case (piece_far)
             point = far_start/v
             xm1 = point - 1.0_qp
-            rw = w*far_start/(v*v)*inverse_sqrt((point + c%p)*((point - c%a)**2 + c%beta))
+            rw = w*far_start/(v*v)
+            q = (point + c%p)*((point - c%a)**2 + c%beta)
         case default
             if (kind == piece_apse) then
                 one_minus = (1.0_qp - v)*(1.0_qp + v)
@@ -585,14 +588,16 @@ contains
             y(3) = half_root2*(p2*rw)
             return
         end select
-        ! unbounded pieces beyond the start: sqrt(x - 1) and sqrt(x) explicit
-        rx = inverse_sqrt(xm1)
-        ip = inverse_sqrt(point)
-        p2 = point*point
+        ! unbounded pieces beyond the start: rw is the weight and jacobian, q the rest of
+        ! Q (as in the start piece); two square roots, 1/sqrt(q (x - 1)) and
+        ! 1/sqrt(q x), and 1/x = q/sqrt(q x)^2, instead of three
+        rx = inverse_sqrt(q*xm1)*rw
+        ip = inverse_sqrt(q*point)
         rip = ip*rw
-        y(1) = pc%k_root2*(xm1*rx)*(ip*rip)
+        p2 = point*point
+        y(1) = pc%k_root2*(xm1*rx)*(ip*(ip*q))
         y(2) = p2*rip
-        y(3) = half_root2*p2*rx*rw
+        y(3) = half_root2*(p2*rx)
         end associate
     end subroutine weighted_integrands
 
