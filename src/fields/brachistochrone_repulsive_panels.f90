@@ -87,7 +87,7 @@ module brachistochrone_repulsive_panels
         type(panel_curve) :: c
         real(qp) :: k_root2 = 0.0_qp, root_span = 0.0_qp, span_root_span = 0.0_qp
         real(qp) :: root_beta = 0.0_qp, root_ratio = 0.0_qp, root_rm1 = 0.0_qp
-        real(qp) :: a_m1 = 0.0_qp
+        real(qp) :: a_m1 = 0.0_qp, inverse_root_rm1 = 0.0_qp
         !> the start piece's constant factors of theta, s, t: 2 sqrt2 K span^(3/2),
         !! 2 span, sqrt(2 span)
         real(qp) :: start_factor(3) = 0.0_qp
@@ -109,6 +109,7 @@ contains
         pc%a_m1 = c%a - 1.0_qp
         if (c%bounded) then
             pc%root_rm1 = sqrt(c%rm1)
+            pc%inverse_root_rm1 = 1.0_qp/pc%root_rm1
             pc%root_ratio = sqrt(c%d/c%rm1)
         end if
     end function prepare
@@ -562,11 +563,19 @@ contains
                 inv = 2.0_qp/one_minus
                 sn = pc%root_ratio*v*inv
                 one_minus = (1.0_qp - sn)*(1.0_qp + sn)
-                rx = inverse_sqrt(one_minus)
-                cs = one_minus*rx
                 xm1 = c%rm1*one_minus
                 point = 1.0_qp + xm1
-                rw = w*2.0_qp*inv*rx/pc%root_rm1*inverse_sqrt(point + c%p)
+                ! cos(nu/2) = sqrt(one_minus) enters rw and s's integrand, where it
+                ! cancels: two inverse square roots, 1/sqrt(one_minus q), 1/sqrt(x q)
+                q = point + c%p
+                h = 2.0_qp*w*inv
+                rw = h*pc%inverse_root_rm1*inverse_sqrt(one_minus*q)
+                ip = inverse_sqrt(point*q)
+                p2 = point*point
+                y(1) = pc%k_root2*xm1*(ip*(ip*q))*rw
+                y(2) = p2*(h*ip)
+                y(3) = half_root2*(p2*rw)
+                return
             else
                 inv = 1.0_qp/(1.0_qp + v*v)
                 sn = 2.0_qp*v*inv
