@@ -239,6 +239,20 @@ contains
         slopes = real(aimag(total)/h, qp)
     end subroutine panel_slopes_xp
 
+    !> 1/sqrt(x) as `inverse_sqrt` (the x87 seed and one Newton step, within 2 ulp) with
+    !! x/2 by `scale` (exact, half a binary128 product's cost); `inverse_sqrt` itself
+    !! where the hardware kind is double or x is outside 1e-300 .. 1e300.
+    elemental function rsqrt(x) result(r)
+        real(qp), intent(in) :: x
+        real(qp) :: r
+        if (xp == real64 .or. .not. (x > 1.0e-300_qp .and. x < 1.0e300_qp)) then
+            r = inverse_sqrt(x)
+            return
+        end if
+        r = real(1.0_xp/sqrt(real(x, xp)), qp)
+        r = r*(1.5_qp - scale(x, -1)*(r*r))
+    end function rsqrt
+
     !> theta's and s's integrands in complex hardware precision (the maps of
     !! `integrands`); c = [K, P, a, beta, span, R - 1, d].
     pure function angle_length_c(c, kind, stretched, v) result(y)
@@ -529,8 +543,8 @@ contains
             vv = v*v
             xm1 = c%span*vv
             point = 1.0_qp + xm1
-            rw = w*inverse_sqrt((point + c%p)*((point - c%a)**2 + c%beta))
-            ip = inverse_sqrt(point)
+            rw = w*rsqrt((point + c%p)*((point - c%a)**2 + c%beta))
+            ip = rsqrt(point)
             p2 = point*point
             rip = ip*rw
             y(1) = pc%start_factor(1)*vv*(ip*rip)
@@ -568,9 +582,9 @@ contains
                 ! cos(nu/2) = sqrt(one_minus) enters rw and s's integrand, where it
                 ! cancels: two inverse square roots, 1/sqrt(one_minus q), 1/sqrt(x q)
                 q = point + c%p
-                h = 2.0_qp*w*inv
-                rw = h*pc%inverse_root_rm1*inverse_sqrt(one_minus*q)
-                ip = inverse_sqrt(point*q)
+                h = scale(w*inv, 1)
+                rw = h*pc%inverse_root_rm1*rsqrt(one_minus*q)
+                ip = rsqrt(point*q)
                 p2 = point*point
                 y(1) = pc%k_root2*xm1*(ip*(ip*q))*rw
                 y(2) = p2*(h*ip)
@@ -578,7 +592,7 @@ contains
                 return
             else
                 inv = 1.0_qp/(1.0_qp + v*v)
-                sn = 2.0_qp*v*inv
+                sn = scale(v*inv, 1)
                 cs = (1.0_qp - v)*(1.0_qp + v)*inv
                 if (kind == piece_arch_start) then
                     h = sn
@@ -587,9 +601,9 @@ contains
                 end if
                 xm1 = c%rm1*cs*cs
                 point = 1.0_qp + xm1
-                rw = w*4.0_qp*inv*inverse_sqrt((c%d + c%rm1*sn*sn)*(point + c%p))
+                rw = scale(w*inv, 2)*rsqrt((c%d + c%rm1*sn*sn)*(point + c%p))
             end if
-            ip = inverse_sqrt(point)
+            ip = rsqrt(point)
             p2 = point*point
             rip = ip*rw
             y(1) = pc%k_root2*xm1*(ip*rip)
@@ -600,8 +614,8 @@ contains
         ! unbounded pieces beyond the start: rw is the weight and jacobian, q the rest of
         ! Q (as in the start piece); two square roots, 1/sqrt(q (x - 1)) and
         ! 1/sqrt(q x), and 1/x = q/sqrt(q x)^2, instead of three
-        rx = inverse_sqrt(q*xm1)*rw
-        ip = inverse_sqrt(q*point)
+        rx = rsqrt(q*xm1)*rw
+        ip = rsqrt(q*point)
         rip = ip*rw
         p2 = point*point
         y(1) = pc%k_root2*(xm1*rx)*(ip*(ip*q))
