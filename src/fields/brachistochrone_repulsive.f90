@@ -71,7 +71,9 @@
 !! the complex step in hardware precision (curve, pieces' ends and panels all carried
 !! through x + i h dx/dlambda); t by Hamilton-Jacobi, dt/d theta = K at fixed rho. The
 !! step is accepted when its error, 1e-17 |dx| + curvature dx^2 (the curvature and a
-!! cross-check of the slope from central differences), is below a rounding of lambda;
+!! cross-check of the slope from the quadratic through x0 and two of the root finder's
+!! iterates 1e-8 .. 1e-2 away, one more evaluation 1e-6 away when only one is there, else
+!! central differences), is below a rounding of lambda;
 !! else a second binary128 evaluation and the secant through both (certified by the
 !! residual's decrease), else the adaptive solver (`solve_branch`), which also takes
 !! the curves whose panels decline (g or 3 - 2R below about 1e-41). Next to the apse
@@ -114,7 +116,7 @@ module brachistochrone_repulsive
     !! sqrt(beta) ~ 1e-30 is still far above the rounding of a = (3 - g)/2.
     real(qp), parameter :: critical_floor = eps_qp**1.75_qp
 
-    real(qp), parameter :: sqrt2 = sqrt(2.0_qp), sqrt3 = sqrt(3.0_qp)
+    real(qp), parameter :: sqrt2 = sqrt(2.0_qp), sqrt3 = sqrt(3.0_qp), log_three = log(3.0_qp)
     !> Relative accuracy asked of each integral piece.
     real(qp), parameter :: integral_tolerance = 2.0_qp*eps_qp
     !> Breakpoints of the unbounded integrals: start piece up to x = 5/4, far piece beyond 4.
@@ -177,6 +179,12 @@ module brachistochrone_repulsive
     contains
         procedure :: evaluate => integrand_evaluate
     end type repulsive_integrand
+
+    !> The hardware-precision iterates of `falsi_xp` (x, theta - target).
+    type :: iterates
+        integer :: n = 0
+        real(qp) :: x(62) = 0.0_qp, f(62) = 0.0_qp
+    end type iterates
 
     !> theta(rho) - target in the solver's unknown lambda (log g or log(3 - 2R)).
     type, extends(root_function) :: angle_mismatch
@@ -947,8 +955,10 @@ contains
 
     !> The fast path of `solve_branch`: the bracket and the root to about 1e-17 on
     !! hardware-precision panels (regula falsi with the Anderson-Bjorck correction), the
-    !! slope and curvature there by central differences; then two binary128 evaluations
-    !! of theta, s, t: at that root x0 and at its Newton step x1. The secant through both
+    !! slope and curvature there from its iterates (`history_slope`) or differences; one
+    !! binary128 evaluation and the Newton step on the complex-step slopes (see the module
+    !! notes); else two binary128 evaluations of theta, s, t: at that root x0 and at its
+    !! Newton step x1. The secant through both
     !! gives the root x; s and t are interpolated there. Certified when |f(x1)| <= 1e-6
     !! |f(x0)| (the step converged as Newton's does) and the secant's and the
     !! interpolation's error, curvature |x - x0| |x - x1|, is below a rounding of x.
@@ -965,6 +975,8 @@ contains
         real(qp) :: scale, check
         integer :: status, steps, stat(2)
         type(repulsive_curve) :: curve
+        type(iterates) :: seen
+        logical :: found
         done = .false.
         if (f_top == 0.0_qp) return
         floor = log(critical_floor)
@@ -988,9 +1000,30 @@ contains
                 f_hi = f_lo
             end do
         end if
-        call falsi_xp(rho, target, arch, rules, lo, f_lo, hi, f_hi, x0, fx0, steps, status)
+        call falsi_xp(rho, target, arch, rules, lo, f_lo, hi, f_hi, x0, fx0, steps, status, &
+                      seen)
         if (status /= status_ok) return
-        if (arch > near_apse) then
+        stat = status_ok
+        call history_slope(seen, x0, fx0, lambda_scale(arch, x0), slope, curvature, h, found)
+        if (arch < near_apse .and. .not. found) then
+            ! one more iterate 1e-6 away (one evaluation, not the two of central
+            ! differences) usually completes the quadratic
+            h = min(1.0e-6_qp*lambda_scale(arch, x0), 0.5_qp*(hi - x0))
+            if (h > 1.0e-8_qp*lambda_scale(arch, x0) .and. seen%n < size(seen%x)) then
+                seen%n = seen%n + 1
+                seen%x(seen%n) = x0 + h
+                call mismatch_xp(rho, target, arch, rules, x0 + h, seen%f(seen%n), stat(1))
+                steps = steps + 1
+                if (stat(1) /= status_ok) return
+                call history_slope(seen, x0, fx0, lambda_scale(arch, x0), slope, &
+                                   curvature, h, found)
+            end if
+        end if
+        if (arch < near_apse .and. found) then
+            ! slope and curvature from the quadratic through x0 and two earlier iterates
+            check = 1.0e-6_qp
+            steps = steps - 2
+        else if (arch > near_apse) then
             ! u may be far below the hardware phase's noise: one-sided differences over
             ! 1e-3 of the square-root law's reach, from x0 up (theta is smooth in u
             ! there); the slope cross-check to 1e-2
@@ -1030,7 +1063,8 @@ contains
             x = x0 + dx
             if (x > lo .and. x < hi .and. 1.0e-17_qp*abs(dx) + curvature*dx*dx <= &
                 2.0_qp*eps_qp*scale) then
-                call curve_of_lambda(arch, x0 + 0.5_qp*dx, curve, rho)
+                ! (K at the midpoint to 1e-19 is ample: it multiplies f0, below 1e-16)
+                call rough_curve_of_lambda(arch, x0 + 0.5_qp*dx, curve, rho)
                 conserved = curve%k
                 call curve_of_lambda(arch, x, solution%curve, rho)
                 solution%arch = mod(arch, near_apse)
@@ -1126,18 +1160,69 @@ contains
         if (arch > near_apse) scale = max(abs(lambda), tiny(1.0_qp))
     end function lambda_scale
 
+    !> The slope and curvature (|f''|/|2 f'| + 1, as from central differences) at the last
+    !! iterate x0 from the quadratic through it and the two nearest earlier iterates at
+    !! least 1e-8 (relative to `scale`, so that the hardware noise, 1e-19 of the target,
+    !! stays below 1e-11 of the slope) and at most 1e-2 from it, the product of their
+    !! distances below 1e-8 (the quadratic's own error); h: the nearer distance
+    !! (the noise of the slope is about 1e-19 target/h). `found` false when there are no
+    !! such two iterates (the caller then takes central differences).
+    pure subroutine history_slope(seen, x0, f0, scale, slope, curvature, h, found)
+        type(iterates), intent(in) :: seen
+        real(qp), intent(in) :: x0, f0, scale
+        real(qp), intent(out) :: slope, curvature, h
+        logical, intent(out) :: found
+        real(qp) :: d(2), x(2), f(2), dist, s1, s2, second
+        integer :: i, j
+        slope = 0.0_qp
+        curvature = 0.0_qp
+        h = 0.0_qp
+        d = huge(1.0_qp)
+        x = 0.0_qp
+        f = 0.0_qp
+        do i = 1, seen%n
+            dist = abs(seen%x(i) - x0)
+            if (dist < 1.0e-8_qp*scale .or. dist > 1.0e-2_qp*scale) cycle
+            if ((d(1) < huge(1.0_qp) .and. seen%x(i) == x(1)) .or. &
+                (d(2) < huge(1.0_qp) .and. seen%x(i) == x(2))) cycle
+            j = merge(1, 2, dist < d(1))
+            if (j == 2 .and. .not. dist < d(2)) cycle
+            if (j == 1) then
+                d(2) = d(1)
+                x(2) = x(1)
+                f(2) = f(1)
+            end if
+            d(j) = dist
+            x(j) = seen%x(i)
+            f(j) = seen%f(i)
+        end do
+        ! the quadratic's error in the slope, about f'''(x0) d1 d2/6, far below the check
+        found = d(2) < huge(1.0_qp) .and. d(1)*d(2) <= 1.0e-8_qp*scale*scale
+        if (.not. found) return
+        s1 = (f(1) - f0)/(x(1) - x0)
+        s2 = (f(2) - f0)/(x(2) - x0)
+        second = (s2 - s1)/(x(2) - x(1))
+        slope = s1 + second*(x0 - x(1))
+        found = slope /= 0.0_qp
+        if (.not. found) return
+        curvature = abs(second)/abs(slope) + 1.0_qp
+        h = d(1)
+    end subroutine history_slope
+
     !> Regula falsi (Anderson-Bjorck) on the hardware-precision mismatch from the bracket
     !! [lo, hi], to 1e-17 of lambda or to the evaluations' noise; x, fx: the last iterate.
     !! status: status_ok or an evaluation's failure (running out of steps is not one:
     !! the result is only the start of the binary128 phase, which certifies).
     pure subroutine falsi_xp(rho, target, arch, rules, lo, f_lo, hi, f_hi, x, fx, steps, &
-                             status)
+                             status, seen)
         real(qp), intent(in) :: rho, target, lo, f_lo, hi, f_hi
         integer, intent(in) :: arch
         type(panel_rules), intent(in) :: rules
         real(qp), intent(out) :: x, fx
         integer, intent(inout) :: steps
         integer, intent(out) :: status
+        !> every iterate (x, f) (the bracket's ends first), for `history_slope`
+        type(iterates), intent(out) :: seen
         real(qp) :: a, b, fa, fb, scale
         integer :: side, i
         a = lo
@@ -1148,11 +1233,17 @@ contains
         status = status_ok
         x = b
         fx = fb
+        seen%n = 2
+        seen%x(1:2) = [a, b]
+        seen%f(1:2) = [fa, fb]
         do i = 1, 60
             x = (a*fb - b*fa)/(fb - fa)
             if (.not. (x > min(a, b) .and. x < max(a, b))) x = 0.5_qp*(a + b)
             call mismatch_xp(rho, target, arch, rules, x, fx, status)
             steps = steps + 1
+            seen%n = seen%n + 1
+            seen%x(seen%n) = x
+            seen%f(seen%n) = fx
             if (status /= status_ok) return
             if (abs(fx) <= 1.0e-18_qp*target) return
             if ((fx > 0.0_qp) .eqv. (fb > 0.0_qp)) then
@@ -1245,22 +1336,28 @@ contains
     end subroutine solve_repulsive
 
     !> For 1 < rho < 3/2, the angles at rho of the critical curve and of the curve with
-    !! its apse at rho, which split the targets among the branches (0 otherwise); the
-    !! latter in hardware precision (`solve_target` takes it in binary128 when a target
-    !! is within 1e-15 of it). status: status_ok or the first failure of those integrals.
+    !! its apse at rho, which split the targets among the branches (0 otherwise); both
+    !! in hardware precision (`solve_target` takes them in binary128 when a target is
+    !! within 1e-15 of one). status: status_ok or the first failure of those integrals.
     pure subroutine branch_angles(rho, rules, angle_critical, angle_apse, status)
         real(qp), intent(in) :: rho
         type(panel_rules), intent(in) :: rules
         real(qp), intent(out) :: angle_critical, angle_apse
         integer, intent(out) :: status
         type(repulsive_curve) :: curve
-        real(qp) :: dummy(2), values(3)
+        real(qp) :: values(3)
+        real(xp) :: u, e
         integer :: stat(3)
         angle_critical = 0.0_qp
         angle_apse = 0.0_qp
         status = status_ok
         if (.not. (rho > 1.0_qp .and. rho < 1.5_qp)) return
-        call critical_values(rho, angle_critical, dummy(1), dummy(2), stat(1))
+        ! the critical curve's angle of `critical_values` (3 - 2 rho formed in binary128)
+        u = sqrt(real((rho - 1.0_qp)/(rho + 3.0_qp), xp))
+        e = real((3.0_qp - 2.0_qp*rho)/(rho + 3.0_qp), xp)
+        angle_critical = real(2.0_xp/sqrt(3.0_xp)*(log(1.0_xp + 3.0_xp*u) - &
+                              0.5_xp*log(4.0_xp*e)) - 2.0_xp*atan(sqrt(3.0_xp)*u), qp)
+        stat(1) = status_ok
         call curve_from_apse(rho, curve, stat(2))
         call panel_values(curve, rho, .false., rules, .true., values, stat(3))
         angle_apse = values(1)
@@ -1288,13 +1385,19 @@ contains
 
     !> The curve from A through (rho, target): the radial path for target 0, else the
     !! branch that holds the target (complete arches when rho = 1).
-    pure subroutine solve_target(rho, target, angle_critical, angle_apse_xp, rules, solution)
-        real(qp), intent(in) :: rho, target, angle_critical, angle_apse_xp
+    pure subroutine solve_target(rho, target, angle_critical_xp, angle_apse_xp, rules, &
+                                 solution)
+        real(qp), intent(in) :: rho, target, angle_critical_xp, angle_apse_xp
         type(panel_rules), intent(in) :: rules
         type(repulsive_solution), intent(inout) :: solution
         integer :: stat_values, near
-        real(qp) :: angle_apse
+        real(qp) :: angle_apse, angle_critical, dummy(2)
         angle_apse = angle_apse_xp
+        angle_critical = angle_critical_xp
+        if (rho > 1.0_qp .and. rho < 1.5_qp .and. &
+            abs(target - angle_critical) <= 1.0e-15_qp*target) then
+            call critical_values(rho, angle_critical, dummy(1), dummy(2), stat_values)
+        end if
         if (rho > 1.0_qp .and. rho < 1.5_qp .and. &
             abs(target - angle_apse) <= 1.0e-15_qp*target) then
             call apse_angle_exact(rho, rules, angle_apse, stat_values)
@@ -1315,7 +1418,7 @@ contains
             call solve_fast_or_slow(rho, target, arch_second, 0.0_qp, -target, &
                                     rules, solution)
         else if (rho >= 1.5_qp .or. target < angle_critical) then
-            call solve_fast_or_slow(rho, target, arch_unbounded, log(3.0_qp), -target, &
+            call solve_fast_or_slow(rho, target, arch_unbounded, log_three, -target, &
                                     rules, solution)
         else
             ! next to the apse (R - rho below 1e-4 of 3 - 2 rho and of rho - 1 by the

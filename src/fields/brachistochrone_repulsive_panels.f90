@@ -44,12 +44,14 @@ module brachistochrone_repulsive_panels
                           piece_arch_start = 7
     integer, parameter :: max_pieces = 6
     !> The ladder of rules and the most panels for one integral.
-    integer, parameter :: ladder(*) = [6, 8, 10, 12, 16, 20, 24, 28, 32, 40, 48]
+    integer, parameter :: ladder(*) = [6, 8, 10, 12, 16, 20, 24, 28, 30, 32, 34, 36, 38, &
+                                       40, 44, 48]
     integer, parameter :: max_nodes = 48, max_panels = 64
     !> Digits aimed at: binary128 (with a margin over 34) and the hardware phase.
     real(real64), parameter :: quad_digits = 35.0_real64, hardware_digits = 20.5_real64
-    !> Digits aimed at by the complex-step slopes (used only through a step below 1e-17)
-    real(real64), parameter :: slope_digits = 22.0_real64
+    !> Digits aimed at by the complex-step slopes (used only through a step below 1e-17 of
+    !! lambda, so 1e-17 of relative error would do; the hardware rounding is 1e-19)
+    real(real64), parameter :: slope_digits = 19.0_real64
     real(qp), parameter :: sqrt2 = sqrt(2.0_qp), far_start = 4.0_qp
 
     !> One Gauss-Legendre rule on [0, 1]: nodes and weights in both precisions.
@@ -85,7 +87,10 @@ module brachistochrone_repulsive_panels
         type(panel_curve) :: c
         real(qp) :: k_root2 = 0.0_qp, root_span = 0.0_qp, span_root_span = 0.0_qp
         real(qp) :: root_beta = 0.0_qp, root_ratio = 0.0_qp, root_rm1 = 0.0_qp
-        real(qp) :: a_m1 = 0.0_qp
+        real(qp) :: a_m1 = 0.0_qp, inverse_root_rm1 = 0.0_qp
+        !> the start piece's constant factors of theta, s, t: 2 sqrt2 K span^(3/2),
+        !! 2 span, sqrt(2 span)
+        real(qp) :: start_factor(3) = 0.0_qp
     end type prepared_curve
 
 contains
@@ -98,10 +103,13 @@ contains
         pc%k_root2 = c%k*sqrt2
         pc%root_span = sqrt(c%span)
         pc%span_root_span = c%span*pc%root_span
+        pc%start_factor = [pc%k_root2*2.0_qp*pc%span_root_span, 2.0_qp*c%span, &
+                           sqrt2*pc%root_span]
         pc%root_beta = sqrt(c%beta)
         pc%a_m1 = c%a - 1.0_qp
         if (c%bounded) then
             pc%root_rm1 = sqrt(c%rm1)
+            pc%inverse_root_rm1 = 1.0_qp/pc%root_rm1
             pc%root_ratio = sqrt(c%d/c%rm1)
         end if
     end function prepare
@@ -231,6 +239,20 @@ contains
         slopes = real(aimag(total)/h, qp)
     end subroutine panel_slopes_xp
 
+    !> 1/sqrt(x) as `inverse_sqrt` (the x87 seed and one Newton step, within 2 ulp) with
+    !! x/2 by `scale` (exact, half a binary128 product's cost); `inverse_sqrt` itself
+    !! where the hardware kind is double or x is outside 1e-300 .. 1e300.
+    elemental function rsqrt(x) result(r)
+        real(qp), intent(in) :: x
+        real(qp) :: r
+        if (xp == real64 .or. .not. (x > 1.0e-300_qp .and. x < 1.0e300_qp)) then
+            r = inverse_sqrt(x)
+            return
+        end if
+        r = real(1.0_xp/sqrt(real(x, xp)), qp)
+        r = r*(1.5_qp - scale(x, -1)*(r*r))
+    end function rsqrt
+
     !> theta's and s's integrands in complex hardware precision (the maps of
     !! `integrands`); c = [K, P, a, beta, span, R - 1, d].
     pure function angle_length_c(c, kind, stretched, v) result(y)
@@ -352,15 +374,16 @@ contains
         complex(real64), intent(in) :: points(:)
         real(real64), intent(in) :: a, b, digits
         integer :: n
-        complex(real64) :: z_plus, z_minus, root
-        real(real64) :: rho, rho_min, wanted
+        real(real64) :: rho, rho_min, wanted, half_sum, scale
         integer :: k
+        ! the ellipse through z with foci -+1: semi-major axis (|z + 1| + |z - 1|)/2 = c,
+        ! rho = c + sqrt(c^2 - 1) (no complex square roots)
         rho_min = huge(1.0_real64)
+        scale = 1.0_real64/(b - a)
         do k = 1, size(points)
-            z_plus = 2.0_real64*(points(k) - a)/(b - a)
-            z_minus = 2.0_real64*(points(k) - b)/(b - a)
-            root = sqrt(z_minus)*sqrt(z_plus)
-            rho = max(abs(z_plus - 1.0_real64 + root), abs(z_plus - 1.0_real64 - root))
+            half_sum = (modulus(points(k) - a) + modulus(points(k) - b))*scale
+            rho = half_sum + sqrt(max((half_sum - 1.0_real64)*(half_sum + 1.0_real64), &
+                                      0.0_real64))
             rho_min = min(rho_min, rho)
         end do
         n = huge(1)
@@ -462,6 +485,18 @@ contains
         call add(points, np, -i1)
     end subroutine singular_points
 
+    !> |z| without hypot's care for overflow and underflow where neither can happen.
+    elemental function modulus(z) result(m)
+        complex(real64), intent(in) :: z
+        real(real64) :: m
+        if (abs(real(z)) < 1.0e150_real64 .and. abs(aimag(z)) < 1.0e150_real64 .and. &
+            abs(real(z)) + abs(aimag(z)) > 1.0e-150_real64) then
+            m = sqrt(real(z)**2 + aimag(z)**2)
+        else
+            m = abs(z)
+        end if
+    end function modulus
+
     pure subroutine add(points, np, point)
         complex(real64), intent(inout) :: points(:)
         integer, intent(inout) :: np
@@ -500,18 +535,21 @@ contains
         real(qp), intent(in) :: v, w
         real(qp), intent(out) :: y(3)
         real(qp), parameter :: half_root2 = 0.5_qp*sqrt2
-        real(qp) :: point, xm1, h, sn, cs, rw, rx, ip, inv, one_minus, p2
+        real(qp) :: point, xm1, h, sn, cs, rw, rx, ip, inv, one_minus, p2, vv, rip, q
         associate (c => pc%c)
         select case (kind)
         case (piece_start)
-            xm1 = c%span*v*v
+            ! (the constant factors folded: a binary128 product costs as much as a sum)
+            vv = v*v
+            xm1 = c%span*vv
             point = 1.0_qp + xm1
-            rw = w*inverse_sqrt((point + c%p)*((point - c%a)**2 + c%beta))
-            ip = inverse_sqrt(point)
+            rw = w*rsqrt((point + c%p)*((point - c%a)**2 + c%beta))
+            ip = rsqrt(point)
             p2 = point*point
-            y(1) = pc%k_root2*2.0_qp*pc%span_root_span*v*v*(ip*ip)*rw
-            y(2) = 2.0_qp*c%span*v*p2*ip*rw
-            y(3) = sqrt2*pc%root_span*p2*rw
+            rip = ip*rw
+            y(1) = pc%start_factor(1)*vv*(ip*rip)
+            y(2) = pc%start_factor(2)*v*(p2*rip)
+            y(3) = pc%start_factor(3)*(p2*rw)
             return
         case (piece_below, piece_above)
             if (stretched) then
@@ -519,31 +557,42 @@ contains
                 inv = 2.0_qp/one_minus
                 h = pc%root_beta*v*inv
                 point = c%a + merge(-h, h, kind == piece_below)
-                rw = w*inv*inverse_sqrt(point + c%p)
+                rw = w*inv
+                q = point + c%p
             else
                 h = v
                 point = c%a + merge(-h, h, kind == piece_below)
-                rw = w*inverse_sqrt((v*v + c%beta)*(point + c%p))
+                rw = w
+                q = (v*v + c%beta)*(point + c%p)
             end if
             xm1 = pc%a_m1 + merge(-h, h, kind == piece_below)
         case (piece_far)
             point = far_start/v
             xm1 = point - 1.0_qp
-            rw = w*far_start/(v*v)*inverse_sqrt((point + c%p)*((point - c%a)**2 + c%beta))
+            rw = w*far_start/(v*v)
+            q = (point + c%p)*((point - c%a)**2 + c%beta)
         case default
             if (kind == piece_apse) then
                 one_minus = (1.0_qp - v)*(1.0_qp + v)
                 inv = 2.0_qp/one_minus
                 sn = pc%root_ratio*v*inv
                 one_minus = (1.0_qp - sn)*(1.0_qp + sn)
-                rx = inverse_sqrt(one_minus)
-                cs = one_minus*rx
                 xm1 = c%rm1*one_minus
                 point = 1.0_qp + xm1
-                rw = w*2.0_qp*inv*rx/pc%root_rm1*inverse_sqrt(point + c%p)
+                ! cos(nu/2) = sqrt(one_minus) enters rw and s's integrand, where it
+                ! cancels: two inverse square roots, 1/sqrt(one_minus q), 1/sqrt(x q)
+                q = point + c%p
+                h = scale(w*inv, 1)
+                rw = h*pc%inverse_root_rm1*rsqrt(one_minus*q)
+                ip = rsqrt(point*q)
+                p2 = point*point
+                y(1) = pc%k_root2*xm1*(ip*(ip*q))*rw
+                y(2) = p2*(h*ip)
+                y(3) = half_root2*(p2*rw)
+                return
             else
                 inv = 1.0_qp/(1.0_qp + v*v)
-                sn = 2.0_qp*v*inv
+                sn = scale(v*inv, 1)
                 cs = (1.0_qp - v)*(1.0_qp + v)*inv
                 if (kind == piece_arch_start) then
                     h = sn
@@ -552,22 +601,26 @@ contains
                 end if
                 xm1 = c%rm1*cs*cs
                 point = 1.0_qp + xm1
-                rw = w*4.0_qp*inv*inverse_sqrt((c%d + c%rm1*sn*sn)*(point + c%p))
+                rw = scale(w*inv, 2)*rsqrt((c%d + c%rm1*sn*sn)*(point + c%p))
             end if
-            ip = inverse_sqrt(point)
+            ip = rsqrt(point)
             p2 = point*point
-            y(1) = pc%k_root2*xm1*(ip*ip)*rw
-            y(2) = p2*ip*(pc%root_rm1*cs)*rw
-            y(3) = half_root2*p2*rw
+            rip = ip*rw
+            y(1) = pc%k_root2*xm1*(ip*rip)
+            y(2) = (pc%root_rm1*cs)*(p2*rip)
+            y(3) = half_root2*(p2*rw)
             return
         end select
-        ! unbounded pieces beyond the start: sqrt(x - 1) and sqrt(x) explicit
-        rx = inverse_sqrt(xm1)
-        ip = inverse_sqrt(point)
+        ! unbounded pieces beyond the start: rw is the weight and jacobian, q the rest of
+        ! Q (as in the start piece); two square roots, 1/sqrt(q (x - 1)) and
+        ! 1/sqrt(q x), and 1/x = q/sqrt(q x)^2, instead of three
+        rx = rsqrt(q*xm1)*rw
+        ip = rsqrt(q*point)
+        rip = ip*rw
         p2 = point*point
-        y(1) = pc%k_root2*(xm1*rx)*(ip*ip)*rw
-        y(2) = p2*ip*rw
-        y(3) = half_root2*p2*rx*rw
+        y(1) = pc%k_root2*(xm1*rx)*(ip*(ip*q))
+        y(2) = p2*rip
+        y(3) = half_root2*(p2*rx)
         end associate
     end subroutine weighted_integrands
 
