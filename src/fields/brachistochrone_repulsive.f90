@@ -703,12 +703,33 @@ contains
         if (arch > near_apse) then
             call set_near_apse(rho, real(x*x, qp), curve)
         else if (arch == arch_unbounded) then
-            call set_from_gap(real(e, qp), curve)
+            call set_from_gap_rough(e, curve)
         else
             ! expm1(x) = 2 sinh(x/2) exp(x/2), accurate as x -> 0
             call set_bounded(real(-sinh(0.5_xp*x)*exp(0.5_xp*x), qp), real(e, qp), curve)
         end if
     end subroutine rough_curve_of_lambda
+
+    !> `set_from_gap` of an unbounded curve (g > 0) in hardware precision: the
+    !! curve's numbers to about 1e-19 (g itself exact), no binary128 square root.
+    pure subroutine set_from_gap_rough(g, curve)
+        real(xp), intent(in) :: g
+        type(repulsive_curve), intent(out) :: curve
+        real(xp) :: p, k2
+        if (range(1.0_xp) < range(1.0_qp)) then
+            call set_from_gap(real(g, qp), curve)
+            return
+        end if
+        p = 3.0_xp - g
+        k2 = p**3/(2.0_xp*(1.0_xp + p))
+        curve%gap = real(g, qp)
+        curve%p = real(p, qp)
+        curve%k2 = real(k2, qp)
+        curve%k = real(sqrt(k2), qp)
+        curve%bounded = .false.
+        curve%centre = real(0.5_xp*p, qp)
+        curve%width2 = real(p*p*g/(4.0_xp*(p + 1.0_xp)), qp)
+    end subroutine set_from_gap_rough
 
     pure subroutine mismatch_evaluate(self, x, f, df, status)
         class(angle_mismatch), intent(in) :: self
