@@ -372,7 +372,7 @@ contains
         integer :: n, i
         value = 0.0_qp
         status = status_ok
-        call plan_pieces(curve, r, pieces, n, f%span)
+        call plan_pieces(curve, r, .false., pieces, n, f%span)
         f%kind = kind
         f%k = curve%k
         f%p = curve%p
@@ -389,9 +389,12 @@ contains
 
     !> The pieces (variable and interval) of the integrals from radius 1 to r along the
     !! first (half-)arch, and the start piece's span (unbounded). No piece when r = 1.
-    pure subroutine plan_pieces(curve, r, pieces, n, span)
+    !! `rough`: the square roots and tanh maps of the ends in hardware precision (about
+    !! 1e-19), for the hardware-precision integrals only.
+    pure subroutine plan_pieces(curve, r, rough, pieces, n, span)
         type(repulsive_curve), intent(in) :: curve
         real(qp), intent(in) :: r
+        logical, intent(in) :: rough
         type(panel_piece), intent(out) :: pieces(max_pieces)
         integer, intent(out) :: n
         real(qp), intent(out) :: span
@@ -416,26 +419,26 @@ contains
             ! within `stretch` widths sqrt(d) of the apse (and nu < pi/3) the sinh map
             ! sin(nu/2) = c sinh(xi), c = sqrt(d/(R-1)), in w = tanh(xi/2), split where
             ! sinh(xi) = s_mid, so that both pieces meet at the same point to a few ulps
-            c = root(curve%split/curve%apse_m1)
+            c = rt(curve%split/curve%apse_m1)
             s_mid = min(stretch, apse_split/c)
             sin_mid = min(c*s_mid, 1.0_qp)
-            v_mid = sin_mid/(1.0_qp + root((1.0_qp - sin_mid)*(1.0_qp + sin_mid)))
+            v_mid = sin_mid/(1.0_qp + rt((1.0_qp - sin_mid)*(1.0_qp + sin_mid)))
             ! tan(nu_r/4) = tan(phi/2), phi = atan2(sqrt(r_gap), sqrt(r - 1))
             big = 0.0_qp
             v_r = 0.0_qp
             if (r_gap > 0.0_qp) then
-                big = root(r_gap + (r - 1.0_qp))
-                v_r = root(r_gap)/(root(r - 1.0_qp) + big)
+                big = rt(r_gap + (r - 1.0_qp))
+                v_r = rt(r_gap)/(rt(r - 1.0_qp) + big)
             end if
             if (v_r < v_mid) then
-                call add(pieces, n, piece_apse, .false., half_tanh(root(r_gap/curve%split)), &
-                         half_tanh(s_mid))
+                call add(pieces, n, piece_apse, .false., ht(rt(r_gap/curve%split)), &
+                         ht(s_mid))
                 call add(pieces, n, piece_arch, .false., v_mid, 1.0_qp)
             else if (r - 1.0_qp < r_gap) then
                 ! r next to the start: in mu = pi - nu from 0, so that the short interval
                 ! keeps its relative accuracy as r -> 1
                 call add(pieces, n, piece_arch_start, .false., 0.0_qp, &
-                         root(r - 1.0_qp)/(root(r_gap) + big))
+                         rt(r - 1.0_qp)/(rt(r_gap) + big))
             else
                 call add(pieces, n, piece_arch, .false., v_r, 1.0_qp)
             end if
@@ -454,6 +457,31 @@ contains
         end associate
         if (r > far_start) call add(pieces, n, piece_far, .false., far_start/r, 1.0_qp)
     contains
+        !> `root` (or hardware sqrt when rough and the hardware's exponent range is
+        !! binary128's, as x87's is).
+        elemental function rt(x) result(y)
+            real(qp), intent(in) :: x
+            real(qp) :: y
+            if (rough .and. range(1.0_xp) >= range(1.0_qp)) then
+                y = real(sqrt(max(real(x, xp), 0.0_xp)), qp)
+            else
+                y = root(x)
+            end if
+        end function rt
+
+        !> `half_tanh` (or in hardware precision when rough).
+        elemental function ht(s) result(t)
+            real(qp), intent(in) :: s
+            real(qp) :: t
+            real(xp) :: sx
+            if (rough .and. range(1.0_xp) >= range(1.0_qp)) then
+                sx = real(s, xp)
+                t = real(sx/(1.0_xp + sqrt(1.0_xp + sx*sx)), qp)
+            else
+                t = half_tanh(s)
+            end if
+        end function ht
+
         !> h from h_lo to h_hi (distance to the peak at a): in the sinh map
         !! h = sqrt(beta) sinh(xi), in t = tanh(xi/2), up to `stretch` widths
         !! sqrt(beta), plain h beyond.
@@ -464,11 +492,11 @@ contains
             real(qp), intent(in) :: h_lo, h_hi
             real(qp) :: width, h_mid
             if (.not. (h_hi > h_lo)) return
-            width = root(curve%width2)
+            width = rt(curve%width2)
             if (curve%width2 > 0.0_qp .and. h_lo < stretch*width) then
                 h_mid = width*stretch
-                call add(pieces, n, kind, .true., half_tanh(h_lo/width), &
-                         half_tanh(min(h_hi/width, stretch)))
+                call add(pieces, n, kind, .true., ht(h_lo/width), &
+                         ht(min(h_hi/width, stretch)))
                 if (h_hi > h_mid) call add(pieces, n, kind, .false., h_mid, h_hi)
             else
                 call add(pieces, n, kind, .false., h_lo, h_hi)
@@ -582,7 +610,7 @@ contains
             v = 0.0_qp
             c = panel_curve(bounded=curve%bounded, k=curve%k, p=curve%p, a=curve%centre, &
                             beta=curve%width2, rm1=curve%apse_m1, d=curve%split)
-            call plan_pieces(curve, radius, pieces, n, c%span)
+            call plan_pieces(curve, radius, angle_only, pieces, n, c%span)
             if (angle_only) then
                 call panel_angle_xp(rules, c, pieces(1:n), v(1), st)
             else
@@ -675,12 +703,33 @@ contains
         if (arch > near_apse) then
             call set_near_apse(rho, real(x*x, qp), curve)
         else if (arch == arch_unbounded) then
-            call set_from_gap(real(e, qp), curve)
+            call set_from_gap_rough(e, curve)
         else
             ! expm1(x) = 2 sinh(x/2) exp(x/2), accurate as x -> 0
             call set_bounded(real(-sinh(0.5_xp*x)*exp(0.5_xp*x), qp), real(e, qp), curve)
         end if
     end subroutine rough_curve_of_lambda
+
+    !> `set_from_gap` of an unbounded curve (g > 0) in hardware precision: the
+    !! curve's numbers to about 1e-19 (g itself exact), no binary128 square root.
+    pure subroutine set_from_gap_rough(g, curve)
+        real(xp), intent(in) :: g
+        type(repulsive_curve), intent(out) :: curve
+        real(xp) :: p, k2
+        if (range(1.0_xp) < range(1.0_qp)) then
+            call set_from_gap(real(g, qp), curve)
+            return
+        end if
+        p = 3.0_xp - g
+        k2 = p**3/(2.0_xp*(1.0_xp + p))
+        curve%gap = real(g, qp)
+        curve%p = real(p, qp)
+        curve%k2 = real(k2, qp)
+        curve%k = real(sqrt(k2), qp)
+        curve%bounded = .false.
+        curve%centre = real(0.5_xp*p, qp)
+        curve%width2 = real(p*p*g/(4.0_xp*(p + 1.0_xp)), qp)
+    end subroutine set_from_gap_rough
 
     pure subroutine mismatch_evaluate(self, x, f, df, status)
         class(angle_mismatch), intent(in) :: self
@@ -802,7 +851,7 @@ contains
             v = 0.0_qp
             c = panel_curve(bounded=curve%bounded, k=curve%k, p=curve%p, a=curve%centre, &
                             beta=curve%width2, rm1=curve%apse_m1, d=curve%split)
-            call plan_pieces(curve, radius, pieces, n, c%span)
+            call plan_pieces(curve, radius, .false., pieces, n, c%span)
             call complex_step(curve, radius, h, c%span, pieces(1:n), cc, lower_c, upper_c)
             call panel_slopes_xp(rules, c, pieces(1:n), lower_c(1:n), upper_c(1:n), cc, h, &
                                  v, st)

@@ -169,19 +169,18 @@ contains
         type(panel_piece), intent(in) :: pieces(:)
         real(qp), intent(out) :: value
         integer, intent(out) :: status
-        real(qp) :: lo(max_panels), hi(max_panels)
-        real(xp) :: c(7), width, start, total, sum
+        real(xp) :: lo(max_panels), hi(max_panels), c(7), width, start, total, sum
         integer :: which(max_panels), count, i, j, m
         value = 0.0_qp
         status = status_ok
         c = real([curve%k, curve%p, curve%a, curve%beta, curve%span, curve%rm1, curve%d], xp)
         total = 0.0_xp
         do i = 1, size(pieces)
-            call plan_panels(curve, pieces(i), hardware_digits, lo, hi, which, count, status)
+            call plan_panels_xp(curve, pieces(i), hardware_digits, lo, hi, which, count, status)
             if (status /= status_ok) return
             do j = 1, count
-                start = real(lo(j), xp)
-                width = real(hi(j) - lo(j), xp)
+                start = lo(j)
+                width = hi(j) - lo(j)
                 sum = 0.0_xp
                 associate (r => rules%rule(which(j)))
                     do m = 1, r%n
@@ -366,6 +365,56 @@ contains
             end if
         end do
     end subroutine plan_panels
+
+    !> `plan_panels` with the panels' ends in hardware precision, for the
+    !! hardware-precision integrals (no binary128 arithmetic in the bisection).
+    pure subroutine plan_panels_xp(curve, piece, digits, lo, hi, which, count, status)
+        type(panel_curve), intent(in) :: curve
+        type(panel_piece), intent(in) :: piece
+        real(real64), intent(in) :: digits
+        real(xp), intent(out) :: lo(max_panels), hi(max_panels)
+        integer, intent(out) :: which(max_panels), count, status
+        complex(real64) :: points(16)
+        real(xp) :: stack_lo(max_panels), stack_hi(max_panels), a, b
+        integer :: top, n, j, np
+        count = 0
+        status = status_ok
+        if (.not. (piece%upper > piece%lower)) return
+        call singular_points(curve, piece, points, np)
+        top = 1
+        stack_lo(1) = real(piece%lower, xp)
+        stack_hi(1) = real(piece%upper, xp)
+        do while (top > 0)
+            a = stack_lo(top)
+            b = stack_hi(top)
+            top = top - 1
+            n = nodes_for(points(1:np), real(a, real64), real(b, real64), digits)
+            if (n <= max_nodes .or. b - a <= 1.0e-3_xp*epsilon(1.0_real64)*abs(b)) then
+                if (count >= max_panels) then
+                    status = status_no_convergence
+                    return
+                end if
+                count = count + 1
+                lo(count) = a
+                hi(count) = b
+                which(count) = size(ladder)
+                do j = size(ladder), 1, -1
+                    if (ladder(j) >= n) which(count) = j
+                end do
+            else
+                if (top + 2 > max_panels) then
+                    status = status_no_convergence
+                    return
+                end if
+                ! the half nearer the start is integrated first (pushed last)
+                stack_lo(top + 1) = 0.5_xp*(a + b)
+                stack_hi(top + 1) = b
+                stack_lo(top + 2) = a
+                stack_hi(top + 2) = 0.5_xp*(a + b)
+                top = top + 2
+            end if
+        end do
+    end subroutine plan_panels_xp
 
     !> Gauss nodes for `digits` on [a, b] given the singular points (huge if more than
     !! `max_nodes`). z -+ 1 are formed from the distances to the ends, so that a point
