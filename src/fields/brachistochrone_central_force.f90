@@ -123,6 +123,11 @@ module brachistochrone_central_force
         logical :: whole_ok(table_pieces) = .false.
         !> Theta's table and its slope's in hardware precision (powers of t per piece)
         real(xp), allocatable :: whole_xp(:, :, :)
+        !> Theta, S and T tables: the powers of t from whole_split(piece, m) on, whose
+        !! sum of sizes is below 2^-60 of the value's, in hardware precision
+        !! (`whole_value`)
+        real(xp), allocatable :: whole_tail_xp(:, :, :)
+        integer :: whole_split(table_pieces, 3) = table_points
     contains
         procedure :: half_arch => general_half_arch    !! theta, s, t at r (eqs. 27-41)
         procedure :: apse_angle => general_apse_angle  !! Theta(R,R)
@@ -241,6 +246,7 @@ contains
         end do
         model%whole_xp = reshape(real([model%whole(1)%power, model%whole(4)%power], xp), &
                                  [table_points, table_pieces, 2])
+        call split_whole_tables(model, values(:, :, 1:3))
         width = (upper - lower)/real(table_pieces, qp)
         do piece = 1, table_pieces
             model%whole_ok(piece) = .true.
@@ -248,7 +254,7 @@ contains
                 z = lower + width*(real(piece - 1, qp) + merge(0.3_qp, 0.71_qp, side == 1))
                 direct = whole_direct(model, exp(z))
                 do m = 1, 5
-                    call model%whole(m)%evaluate(z, table(m))
+                    call whole_value(model, m, z, table(m))
                 end do
                 ! sizes: Theta, and what the S and T corrections (times R) are added to
                 ! where the tables are used (s >= 1 - R, t >= t0(R): `table_sums`)
@@ -294,13 +300,15 @@ contains
         found = .true.
     end subroutine whole_lookup_xp
 
-    !> The tabulated whole-half-arch integrals at Lambda (`whole_direct`'s five numbers);
-    !! `found` only inside the tables' range on a checked piece.
-    pure subroutine whole_lookup(model, big_lambda, values, found)
+    !> The tabulated whole-half-arch integrals at Lambda (`whole_direct`'s five numbers,
+    !! only the first `wanted` of them evaluated, the rest 0); `found` only inside the
+    !! tables' range on a checked piece.
+    pure subroutine whole_lookup(model, big_lambda, values, found, wanted)
         type(central_force_model), intent(in) :: model
         real(qp), intent(in) :: big_lambda
         real(qp), intent(out) :: values(5)
         logical, intent(out) :: found
+        integer, intent(in) :: wanted  !! how many of the five (1 .. 5)
         real(qp) :: z
         integer :: piece, m
         values = 0.0_qp
@@ -310,11 +318,73 @@ contains
         piece = min(table_pieces, max(1, int((z - log(table_low))/(log(table_high) - &
                     log(table_low))*real(table_pieces, qp)) + 1))
         if (.not. model%whole_ok(piece)) return
-        do m = 1, 5
-            call model%whole(m)%evaluate(z, values(m))
+        do m = 1, wanted
+            call whole_value(model, m, z, values(m))
         end do
         found = .true.
     end subroutine whole_lookup
+
+    !> For the Theta, S and T tables (m <= 3), on each piece the first power of t from
+    !! which on the sum of the coefficients' sizes is below 2^-60 of the value's least
+    !! size (half the least of the tabulated values): Horner's rule in hardware precision
+    !! there (error below ~70 eps(xp) 2^-60 < eps/4 of the value, t's rounding included).
+    subroutine split_whole_tables(model, values)
+        type(central_force_model), intent(inout) :: model
+        real(qp), intent(in) :: values(:, :, :)  !! the tabulated values (point, piece, m)
+        real(qp) :: least, tail
+        integer :: piece, m, j, used
+        allocate (model%whole_tail_xp(0:table_points - 1, table_pieces, 3))
+        model%whole_tail_xp = 0.0_xp
+        do m = 1, 3
+            do piece = 1, table_pieces
+                ! (no associate: a section's name would start at 1)
+                used = model%whole(m)%used(piece)
+                least = 0.5_qp*minval(abs(values(:, piece, m)))
+                model%whole_split(piece, m) = used
+                tail = 0.0_qp
+                do j = used - 1, 1, -1
+                    tail = tail + abs(model%whole(m)%power(j, piece))
+                    if (.not. (tail <= 2.0_qp**(-60)*least)) exit
+                    model%whole_split(piece, m) = j
+                end do
+                model%whole_tail_xp(0:used - 1, piece, m) = &
+                    real(model%whole(m)%power(0:used - 1, piece), xp)
+            end do
+        end do
+    end subroutine split_whole_tables
+
+    !> Table m at z: the powers of t from `whole_split` on in hardware precision (Theta,
+    !! S, T), the rest (and the slopes' tables) as `evaluate`.
+    pure subroutine whole_value(model, m, z, value)
+        type(central_force_model), intent(in) :: model
+        integer, intent(in) :: m
+        real(qp), intent(in) :: z
+        real(qp), intent(out) :: value
+        real(qp) :: width, position, t
+        real(xp) :: t_xp, high
+        integer :: piece, j, split, used
+        if (m > 3) then
+            call model%whole(m)%evaluate(z, value)
+            return
+        end if
+        associate (table => model%whole(m))
+        width = (table%upper - table%lower)/real(table%pieces, qp)
+        position = (z - table%lower)/width
+        piece = min(table%pieces, max(1, int(position) + 1))
+        t = 2.0_qp*(position - real(piece - 1, qp)) - 1.0_qp
+        used = table%used(piece)
+        split = model%whole_split(piece, m)
+        t_xp = real(t, xp)
+        high = 0.0_xp
+        do j = used - 1, split, -1
+            high = high*t_xp + model%whole_tail_xp(j, piece, m)
+        end do
+        value = real(high, qp)
+        do j = split - 1, 0, -1
+            value = value*t + table%power(j, piece)
+        end do
+        end associate
+    end subroutine whole_value
 
     !> The apse data for R (with 1 - R exact) and the endpoint r = R + d.
     pure function setup_arch(model, big_r, one_minus_big_r, d, delta_r, second, whole) &
@@ -614,19 +684,28 @@ contains
     !! Theta and S integrands, d g/d Lambda = g q'/(2 q (1 - q)) and d h/d Lambda =
     !! e^lambda q'/(2 (1 - q)^(3/2)) (q' = d q/d Lambda, from the law's hardware terms),
     !! summed in hardware precision on the same nodes (want_length_time needed).
-    pure subroutine arch_sums(model, a, digits, want_length_time, sums, slopes)
+    pure subroutine arch_sums(model, a, digits, want_length_time, sums, slopes, given, &
+                              given_count)
         type(central_force_model), intent(in) :: model
         type(arch_setup), intent(in) :: a
         real(qp), intent(in) :: digits
         logical, intent(in) :: want_length_time
         real(qp), intent(out) :: sums(3)
         real(xp), intent(out), optional :: slopes(2)
+        !> `arch_panels(model, a, given, given_count)` where the caller has them
+        type(panel), intent(in), optional :: given(max_panels)
+        integer, intent(in), optional :: given_count
         type(panel) :: panels(max_panels)
         real(qp) :: part(3), last(3), share, v, lambda, delta, jacobian, q, omq, qv, rx
         real(qp) :: inverse_root, common, g(3), root_q, weighted, width
         real(xp) :: part_xp(2), carry(2), carry_all(2), log_slope, g_xp
         integer :: count, p, k, j
-        call arch_panels(model, a, panels, count)
+        if (present(given) .and. present(given_count)) then
+            count = given_count
+            panels(1:count) = given(1:count)
+        else
+            call arch_panels(model, a, panels, count)
+        end if
         sums = 0.0_qp
         last = 0.0_qp
         if (present(slopes)) slopes = 0.0_xp
@@ -703,12 +782,13 @@ contains
         real(qp), intent(out) :: sums(3)
         real(xp), intent(out), optional :: slopes(2), magnitude(2)
         type(arch_setup) :: below, above
-        type(panel) :: panels(max_panels)
+        type(panel) :: panels_below(max_panels), panels_above(max_panels)
         real(qp) :: whole(5), part(3), w_sign, p_sign
         real(xp) :: part_slopes(2)
         integer :: n_below, n_above
         logical :: found, use_below
-        call whole_lookup(model, a%big_lambda, whole, found)
+        ! the slopes' tables only for the slopes
+        call whole_lookup(model, a%big_lambda, whole, found, merge(5, 3, present(slopes)))
         found = found .and. a%weight_above == 1.0_qp .and. &
                 (a%weight_below == 0.0_qp .or. a%weight_below == 2.0_qp)
         if (.not. found) then
@@ -725,8 +805,8 @@ contains
         below%weight_above = 0.0_qp
         above = a
         above%weight_below = 0.0_qp
-        call arch_panels(model, below, panels, n_below)
-        call arch_panels(model, above, panels, n_above)
+        call arch_panels(model, below, panels_below, n_below)
+        call arch_panels(model, above, panels_above, n_above)
         use_below = n_below <= n_above
         if (a%weight_below == 2.0_qp) then
             w_sign = merge(1.0_qp, 2.0_qp, use_below)
@@ -735,7 +815,11 @@ contains
             w_sign = merge(1.0_qp, 0.0_qp, use_below)
             p_sign = merge(-1.0_qp, 1.0_qp, use_below)
         end if
-        call part_sums(merge(below, above, use_below), part, part_slopes)
+        if (use_below) then
+            call part_sums(below, panels_below, n_below, part, part_slopes)
+        else
+            call part_sums(above, panels_above, n_above, part, part_slopes)
+        end if
         if (a%weight_below == 0.0_qp .and. use_below) then
             ! W - int_0^lambda_r: at most a bit lost, and the endpoint nearer the apse
             ! (delta_r >= Lambda/2: 1 - r >= (1 - R)/2, t0(r) >= t0(R)/2, the sizes the
@@ -744,7 +828,7 @@ contains
                        a%delta_r >= 0.5_qp*a%big_lambda)) then
                 w_sign = 0.0_qp
                 p_sign = 1.0_qp
-                call part_sums(above, part, part_slopes)
+                call part_sums(above, panels_above, n_above, part, part_slopes)
             end if
         end if
         sums = w_sign*whole(1:3) + p_sign*part
@@ -753,14 +837,17 @@ contains
             magnitude = abs(real(w_sign*whole(4:5), xp)) + abs(part_slopes)
         end if
     contains
-        pure subroutine part_sums(b, part, part_slopes)
+        pure subroutine part_sums(b, pans, n_pans, part, part_slopes)
             type(arch_setup), intent(in) :: b
+            type(panel), intent(in) :: pans(max_panels)
+            integer, intent(in) :: n_pans
             real(qp), intent(out) :: part(3)
             real(xp), intent(out) :: part_slopes(2)
             if (present(slopes)) then
-                call arch_sums(model, b, fine_digits, .true., part, part_slopes)
+                call arch_sums(model, b, fine_digits, .true., part, part_slopes, pans, n_pans)
             else
-                call arch_sums(model, b, fine_digits, .true., part)
+                call arch_sums(model, b, fine_digits, .true., part, given=pans, &
+                               given_count=n_pans)
                 part_slopes = 0.0_xp
             end if
         end subroutine part_sums
@@ -1826,7 +1913,7 @@ contains
         prob%delta_rho = minus_log(rho, prob%one_minus_rho)
         prob%limit = 2.0_qp*limit
         apse_angle_rho = 0.0_qp
-        call whole_lookup(self, prob%delta_rho, whole, found)
+        call whole_lookup(self, prob%delta_rho, whole, found, 1)
         if (rho < 1.0_qp .and. found) then
             apse_angle_rho = whole(1)
         else if (rho < 1.0_qp) then

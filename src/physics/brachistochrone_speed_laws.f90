@@ -441,7 +441,8 @@ contains
         real(qp) :: c(8), a
         a = self%n - 1.0_qp
         ! R^a (powq) rather than exp(-a Lambda): Lambda's rounding would cost a Lambda eps
-        c = [big_lambda, decay(a, big_lambda), a, big_r**a, big_r, 0.0_qp, 0.0_qp, 0.0_qp]
+        c = [big_lambda, decay(a, big_lambda), a, power_of(big_r, a), big_r, 0.0_qp, &
+             0.0_qp, 0.0_qp]
         if (a*big_lambda > 0.5_qp) c(2) = 1.0_qp - c(4)
         c(6) = 1.0_qp/c(2)
         ! q/v = sqrt(q) exp(-lambda) R^(a/2) sqrt(a/(2 E(Lambda)))
@@ -449,6 +450,22 @@ contains
         ! the offset 1/(4 a) where arch_terms switches from expm1 to exp
         c(8) = 0.25_qp/a
     end function power_apse_constants
+
+    !> x^a (powq) with the exponents of n = 1.5, 2, 3 by one rounding at most (powq, a
+    !! logarithm and an exponential in software, costs as much as a dozen nodes).
+    elemental function power_of(x, a) result(y)
+        real(qp), intent(in) :: x, a
+        real(qp) :: y
+        if (a == 2.0_qp) then
+            y = x*x
+        else if (a == 1.0_qp) then
+            y = x
+        else if (a == 0.5_qp) then
+            y = sqrt(x)
+        else
+            y = x**a
+        end if
+    end function power_of
 
     !> Two expm1 per node (three where a delta < 1/4; one less for n = 1.5, 2, 3, where
     !! exp(-a lambda) follows from exp(-lambda)): exp(-lambda) = 1 + expm1(-lambda),
@@ -463,7 +480,8 @@ contains
         !> d(log q)/d Lambda at fixed lambda in hardware precision (laws with
         !! has_terms_xp; 0 otherwise)
         real(xp), intent(out), optional :: log_slope
-        real(qp) :: a, om1, om2, e1, e2, eam1, ea, e_delta, exp_delta
+        real(qp) :: a, om1, om2, e1, e2, eam1, ea, e_delta, ea_e_delta
+        real(xp) :: ratio_xp
         a = c(3)
         call exp_pair(lambda, delta, c(5), e1, om1, om2)
         e2 = e1*e1
@@ -492,20 +510,23 @@ contains
             ea = 1.0_qp + eam1
         end if
         if (delta > c(8) .and. c(4) > 0.0_qp) then
-            exp_delta = c(4)/ea
-            e_delta = 1.0_qp - exp_delta
+            ! exp(-a lambda) E(delta) = exp(-a lambda) - R^a (no division; E(delta) >=
+            ! 1 - e^(-1/4): at most two bits cancel, as in 1 - R^a/exp(-a lambda))
+            ea_e_delta = ea - c(4)
+            ratio_xp = real(c(4), xp)/real(ea_e_delta, xp)
         else
             e_delta = decay(a, delta)
-            exp_delta = 1.0_qp - e_delta
+            ea_e_delta = ea*e_delta
+            ratio_xp = real(1.0_qp - e_delta, xp)/real(e_delta, xp)
         end if
-        root_q = e1*root(ea*e_delta*c(6))
+        root_q = e1*root(ea_e_delta*c(6))
         q = root_q*root_q
         one_minus_q = om2 + e2*(-eam1)*c(6)
         q_over_v = root_q*e1*c(7)
         r_over_x = e1
         ! a E(lambda) exp(-a delta)/(E(Lambda) E(delta)) (see power_theta_terms_xp)
         if (present(log_slope)) log_slope = real(a, xp)*real(-eam1, xp)* &
-            real(exp_delta, xp)*real(c(6), xp)/real(e_delta, xp)
+            ratio_xp*real(c(6), xp)
     end subroutine power_arch_terms
 
     !> sqrt(z) = z/sqrt(z) with the hardware-seeded inverse square root (within 3 ulp).
