@@ -89,7 +89,7 @@ module brachistochrone_repulsive
                                       keep_first, first_failure
     use brachistochrone_quadrature, only: univariate_integrand, gauss_legendre_rule, &
             gauss_legendre, integrate_adaptive
-    use brachistochrone_roots, only: root_function, bracketed_secant
+    use brachistochrone_roots, only: root_function, bracketed_secant, anderson_bjorck_update
     use brachistochrone_quad_math, only: expm1
     use brachistochrone_fast_math, only: inverse_sqrt
     use brachistochrone_solution, only: endpoint_status, region_outside
@@ -1272,7 +1272,7 @@ contains
         integer, intent(out) :: status
         !> every iterate (x, f) (the bracket's ends first), for `history_slope`
         type(iterates), intent(out) :: seen
-        real(qp) :: a, b, fa, fb, scale
+        real(qp) :: a, b, fa, fb
         integer :: side, i
         a = lo
         b = hi
@@ -1295,23 +1295,7 @@ contains
             seen%f(seen%n) = fx
             if (status /= status_ok) return
             if (abs(fx) <= 1.0e-18_qp*target) return
-            if ((fx > 0.0_qp) .eqv. (fb > 0.0_qp)) then
-                if (side == 1) then
-                    scale = 1.0_qp - fx/fb
-                    fa = fa*merge(scale, 0.5_qp, scale > 0.0_qp)
-                end if
-                b = x
-                fb = fx
-                side = 1
-            else
-                if (side == -1) then
-                    scale = 1.0_qp - fx/fa
-                    fb = fb*merge(scale, 0.5_qp, scale > 0.0_qp)
-                end if
-                a = x
-                fa = fx
-                side = -1
-            end if
+            call anderson_bjorck_update(x, fx, a, fa, b, fb, side)
             if (abs(b - a) <= 1.0e-17_qp*lambda_scale(arch, x)) return
         end do
     end subroutine falsi_xp

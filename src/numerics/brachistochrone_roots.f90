@@ -18,7 +18,8 @@ module brachistochrone_roots
     implicit none
     private
 
-    public :: root_function, newton_bracketed, bracketed_secant, secant
+    public :: root_function, newton_bracketed, bracketed_secant, secant, &
+              anderson_bjorck_update
 
     !> A scalar function f(x) with derivative; extend it to carry the problem's data.
     type, abstract :: root_function
@@ -165,7 +166,7 @@ contains
         real(qp), intent(out) :: x              !! the root
         integer, intent(out) :: steps           !! evaluations of f made
         integer, intent(out) :: status          !! status_ok or the reason
-        real(qp) :: a, b, fa, fb, fx, dfx, scale
+        real(qp) :: a, b, fa, fb, fx, dfx
         integer :: side
         a = lo
         b = hi
@@ -186,26 +187,7 @@ contains
             steps = steps + 1
             if (status /= status_ok) return
             if (fx == 0.0_qp) return
-            if ((fx > 0.0_qp) .eqv. (fb > 0.0_qp)) then
-                ! x replaces b; if b was also replaced last time, shrink fa (Anderson-Bjorck)
-                if (side == 1) then
-                    scale = 1.0_qp - fx/fb
-                    if (scale <= 0.0_qp) scale = 0.5_qp
-                    fa = fa*scale
-                end if
-                b = x
-                fb = fx
-                side = 1
-            else
-                if (side == -1) then
-                    scale = 1.0_qp - fx/fa
-                    if (scale <= 0.0_qp) scale = 0.5_qp
-                    fb = fb*scale
-                end if
-                a = x
-                fa = fx
-                side = -1
-            end if
+            call anderson_bjorck_update(x, fx, a, fa, b, fb, side)
             if (abs(b - a) <= rel_tol*abs(x) + abs_tol) then
                 status = status_ok
                 return
@@ -268,5 +250,35 @@ contains
             status = status_no_convergence
         end do
     end subroutine secant
+
+
+    !> One step of regula falsi with the Anderson-Bjorck correction on a bracket [a, b]
+    !! (f(a), f(b) of opposite signs): the new point x replaces the end whose f has the
+    !! sign of f(x); when the same end is replaced twice in a row, the other end's f is
+    !! scaled by 1 - f(x)/f(replaced end) (by 1/2 when that is not positive).
+    pure subroutine anderson_bjorck_update(x, fx, a, fa, b, fb, side)
+        real(qp), intent(in) :: x, fx             !! the new point and f there
+        real(qp), intent(inout) :: a, fa, b, fb   !! the bracket and f at its ends
+        !> +1 when b was replaced last, -1 when a was, 0 before the first step
+        integer, intent(inout) :: side
+        real(qp) :: scale
+        if ((fx > 0.0_qp) .eqv. (fb > 0.0_qp)) then
+            if (side == 1) then
+                scale = 1.0_qp - fx/fb
+                fa = fa*merge(scale, 0.5_qp, scale > 0.0_qp)
+            end if
+            b = x
+            fb = fx
+            side = 1
+        else
+            if (side == -1) then
+                scale = 1.0_qp - fx/fa
+                fb = fb*merge(scale, 0.5_qp, scale > 0.0_qp)
+            end if
+            a = x
+            fa = fx
+            side = -1
+        end if
+    end subroutine anderson_bjorck_update
 
 end module brachistochrone_roots
