@@ -1154,13 +1154,31 @@ contains
         end if
     end function setup_at
 
+    !> The apse data `theta64` needs at the unknown x: for laws with hardware-precision
+    !! terms all in hardware precision (`setup_xp`: no binary128 logarithms, the law's
+    !! constants Lambda, E(Lambda), a from `apse_constants_xp`, which `theta_ratio64` reads
+    !! as c(1:3)); otherwise `setup_at`. Only for the early (hardware) phases.
+    pure function setup_at64(model, prob, x) result(a)
+        type(central_force_model), intent(in) :: model
+        type(endpoint_problem), intent(in) :: prob
+        real(qp), intent(in) :: x
+        type(arch_setup) :: a
+        real(xp) :: lambda_slope
+        if (model%law%has_terms_xp() .and. .not. prob%use_r) then
+            call setup_xp(model, prob, real(x, xp), a, lambda_slope)
+            a%c(1:3) = real(a%cx(1:3), qp)
+        else
+            a = setup_at(model, prob, x)
+        end if
+    end function setup_at64
+
     !> The double-precision phase's function (in its `form`) at x.
     pure function residual64(model, prob, x) result(f)
         type(central_force_model), intent(in) :: model
         type(endpoint_problem), intent(in) :: prob
         real(qp), intent(in) :: x
         real(real64) :: f, upsilon, psi, limit, scaled, shift
-        call theta64(model, setup_at(model, prob, x), scaled, shift)
+        call theta64(model, setup_at64(model, prob, x), scaled, shift)
         upsilon = scaled*exp(-shift)
         psi = real(prob%psi, real64)
         limit = real(prob%limit, real64)
@@ -1985,7 +2003,7 @@ contains
         integer :: probe
         below = .false.
         prob%use_u = .true.
-        call theta64(self, setup_at(self, prob, sqrt(prob%rho - half)), scaled, shift)
+        call theta64(self, setup_at64(self, prob, sqrt(prob%rho - half)), scaled, shift)
         theta_half = scaled*exp(-shift)
         f_half = theta_half - real(prob%psi, real64)
         steps = 1
