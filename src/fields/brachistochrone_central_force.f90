@@ -58,7 +58,7 @@
 !! phase resolves) starts from the slope next to u = 0 instead (`apse_start`). Other laws: a double-precision phase (regula falsi with
 !! the Anderson-Bjorck correction) and quad-precision secant steps (`quad_phase`).
 module brachistochrone_central_force
-    use brachistochrone_kinds, only: qp, pi, eps_qp
+    use brachistochrone_kinds, only: qp, pi, eps_qp, xp
     use brachistochrone_status, only: status_ok, status_inaccessible, &
                                       status_rho_out_of_range, status_psi_out_of_range, &
                                       status_not_finite, &
@@ -68,7 +68,7 @@ module brachistochrone_central_force
     use brachistochrone_fast_math, only: inverse_sqrt
     use brachistochrone_fast_exp, only: fast_exp
     use brachistochrone_quadrature, only: gauss_legendre_rule, gauss_legendre
-    use brachistochrone_speed_laws, only: speed_law, xp
+    use brachistochrone_speed_laws, only: speed_law
     use brachistochrone_chebyshev, only: chebyshev_table, chebyshev_points, chebyshev_fit
     use brachistochrone_solution, only: endpoint_solution, endpoint_status, region_inside
     use brachistochrone_arches, only: arch_first, arch_second, arch_complete, arch_radial, &

@@ -31,7 +31,7 @@
 !! evaluation then costs a Horner sum of at most 21 terms instead of a quadrature.
 !! Second half-arch (eq. 29): F = 2 F(R,R) - F(r,R) = F(R,R) + int_0^L, one panel.
 module brachistochrone_inverse_square
-    use brachistochrone_kinds, only: qp, pi, eps_qp
+    use brachistochrone_kinds, only: qp, pi, eps_qp, xp
     use brachistochrone_status, only: status_ok, argument_status
     use brachistochrone_closed_forms, only: radial_time
     use brachistochrone_fast_math, only: inverse_sqrt
@@ -57,11 +57,6 @@ module brachistochrone_inverse_square
     !! fraction of the cost of software quad; falls back to level_coarse where `xp`
     !! could underflow.
     integer, parameter :: level_hardware = 4
-    !> The widest hardware real kind below quad: x87 extended on x86-64 (64-bit
-    !! significand, epsilon 1.1e-19, enough for the 17-digit rules), double elsewhere.
-    integer, parameter :: xp_candidate = selected_real_kind(18, 4931)
-    integer, parameter :: xp = merge(xp_candidate, real64, &
-                                     xp_candidate > 0 .and. xp_candidate /= qp)
     !> Rule set selector: the full rules, the values (angle, s, t) in binary128 and the
     !! d/dR pieces of the integrals in hardware precision (`xp`, relative error about
     !! 1e-18): for a last Newton step whose size is already below 1e-17, where the

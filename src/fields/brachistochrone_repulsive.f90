@@ -82,7 +82,7 @@
 !! sqrt((rho - 1)/(rho (3 - 2 rho)))), and the curve keeps R - rho = u^2 exactly
 !! (`r_gap`), which lambda would form by cancellation.
 module brachistochrone_repulsive
-    use brachistochrone_kinds, only: qp, pi, eps_qp
+    use brachistochrone_kinds, only: qp, pi, eps_qp, xp
     use brachistochrone_status, only: status_ok, status_psi_out_of_range, &
                                       status_not_finite, status_invalid_argument, &
                                       status_no_convergence, status_rho_below_start, &
@@ -95,7 +95,7 @@ module brachistochrone_repulsive
     use brachistochrone_solution, only: endpoint_status, region_outside
     use brachistochrone_arches, only: arch_unbounded, arch_first, arch_second
     use brachistochrone_repulsive_panels, only: panel_rules, new_panel_rules, panel_piece, &
-            panel_curve, panel_integrals, panel_angle_xp, integrands, panel_slopes_xp, xp, &
+            panel_curve, panel_integrals, panel_angle_xp, integrands, panel_slopes_xp, &
             max_pieces, piece_start, &
             piece_below, piece_above, piece_far, piece_arch, piece_apse, piece_arch_start
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan, ieee_value, &

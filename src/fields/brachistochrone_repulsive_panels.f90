@@ -18,7 +18,7 @@
 !! and theta alone in the widest hardware precision (`xp`, x87 extended where there is
 !! one) aiming at 20 digits, for the root finder's early phase.
 module brachistochrone_repulsive_panels
-    use brachistochrone_kinds, only: qp, pi
+    use brachistochrone_kinds, only: qp, pi, xp
     use brachistochrone_status, only: status_ok, status_no_convergence
     use brachistochrone_quadrature, only: gauss_legendre_rule, gauss_legendre
     use brachistochrone_fast_math, only: inverse_sqrt
@@ -26,15 +26,11 @@ module brachistochrone_repulsive_panels
     implicit none
     private
 
-    public :: xp, panel_rules, new_panel_rules, panel_piece, panel_curve
+    public :: panel_rules, new_panel_rules, panel_piece, panel_curve
     public :: panel_integrals, panel_angle_xp, integrands, panel_slopes_xp
     public :: piece_start, piece_below, piece_above, piece_far, piece_arch, piece_apse, &
               piece_arch_start, max_pieces
 
-    !> The widest hardware real kind below quad (x87 extended on x86-64, else double).
-    integer, parameter :: xp_candidate = selected_real_kind(18, 4931)
-    integer, parameter :: xp = merge(xp_candidate, real64, &
-                                     xp_candidate > 0 .and. xp_candidate /= qp)
 
     !> Piece kinds (the variable of each): sigma from the start, h = |x - a| below/above the
     !! peak (`stretched`: h = sqrt(beta) sinh(xi)), z = 4/x far out, nu of the bounded arch,

@@ -21,7 +21,7 @@
 !! and any n > 1 (E/a -> y as a -> 0: the logarithmic law, P = 2 delta, is that limit).
 !! Other laws get these from P and D (`default_arch_terms`).
 module brachistochrone_speed_laws
-    use brachistochrone_kinds, only: qp
+    use brachistochrone_kinds, only: qp, xp
     use brachistochrone_quad_math, only: expm1, log1p
     use brachistochrone_fast_exp, only: fast_exp, fast_expm1
     use brachistochrone_fast_math, only: inverse_sqrt
@@ -31,14 +31,8 @@ module brachistochrone_speed_laws
     private
 
     public :: speed_law, inverse_square_law, power_law, logarithmic_law, harmonic_law
-    public :: max_power_exponent, xp
+    public :: max_power_exponent
 
-    !> The widest hardware real kind below binary128: x87 extended on x86-64 (64-bit
-    !! significand, the exponent range of binary128), double elsewhere; for the engine's
-    !! early phase and the slopes of its final step (`theta_terms_xp`).
-    integer, parameter :: xp_candidate = selected_real_kind(18, 4931)
-    integer, parameter :: xp = merge(xp_candidate, real64, &
-                                     xp_candidate > 0 .and. xp_candidate /= qp)
 
     !> Largest force exponent n of `power_law` the general engine accepts (checked against
     !! mpmath at n = 1.5, 3, 10 and converging on a grid up to n = 32; from n of about 100
