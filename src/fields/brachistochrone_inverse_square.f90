@@ -35,7 +35,8 @@ module brachistochrone_inverse_square
     use brachistochrone_status, only: status_ok, argument_status
     use brachistochrone_closed_forms, only: radial_time
     use brachistochrone_fast_math, only: inverse_sqrt
-    use brachistochrone_chebyshev, only: chebyshev_table, chebyshev_points, chebyshev_fit
+    use brachistochrone_chebyshev, only: chebyshev_table, chebyshev_points, chebyshev_fit, &
+                                         chebyshev_table_xp, hardware_copy
     use brachistochrone_summation, only: compensated_sum
     use brachistochrone_quadrature, only: gauss_legendre_rule, gauss_legendre
     use, intrinsic :: iso_fortran_env, only: real64
@@ -91,14 +92,6 @@ module brachistochrone_inverse_square
         real(xp), allocatable :: double_weight_xp(:) !! double_weight in hardware precision
     end type gauss_nodes
 
-    !> A piecewise polynomial of a `chebyshev_table` in hardware precision (level_hardware).
-    type :: power_series_xp
-        real(xp) :: lower = 0.0_xp, width = 1.0_xp !! first piece, piece width
-        integer :: pieces = 0                      !! number of equal pieces
-        real(xp), allocatable :: power(:, :)  !! power(j, piece), j = 0 .. terms-1
-        integer, allocatable :: used(:)           !! terms for the level's accuracy
-    end type power_series_xp
-
     !> The inverse-square evaluator: quadrature rules built once, then used read-only
     !! (so one model can be shared by all threads).
     type :: inverse_square_model
@@ -111,7 +104,7 @@ module brachistochrone_inverse_square
         !! sqrt(1-R) (see `whole_half_arch`)
         type(chebyshev_table) :: whole(3)
         !> Theta(R,R)/(1-R) of `whole` in hardware precision, for level_hardware
-        type(power_series_xp) :: whole_xp
+        type(chebyshev_table_xp) :: whole_xp
     contains
         procedure :: half_arch      !! Theta, S, T on the first or second half-arch
         procedure :: theta          !! Theta(r,R), eq. (55)
@@ -163,7 +156,7 @@ contains
         type(inverse_square_model) :: model
         real(qp) :: angle, slope
         call build_rules_and_tables(model)
-        model%whole_xp = series_xp(model%whole(1), 0.1_qp*10.0_qp**(-hardware_digits))
+        model%whole_xp = hardware_copy(model%whole(1), 0.1_qp*10.0_qp**(-hardware_digits))
         ! d Theta(R,R)/dR at R = 0 (Theta(R,R) = pi/3 - 0.8095502 R + ...), with
         ! Theta(R,R) = (1 - R) A(R): A'(0) - A(0)
         call model%whole(1)%evaluate(0.0_qp, angle, slope)
@@ -340,25 +333,6 @@ contains
         end if
     end function evaluate_arch
 
-    !> A `chebyshev_table`'s powers in hardware precision (`xp`), cut at an absolute
-    !! tolerance.
-    pure function series_xp(table, tolerance) result(series)
-        type(chebyshev_table), intent(in) :: table
-        real(qp), intent(in) :: tolerance
-        type(power_series_xp) :: series
-        integer :: piece
-        series%lower = real(table%lower, xp)
-        series%width = real((table%upper - table%lower)/real(table%pieces, qp), xp)
-        series%pieces = table%pieces
-        allocate (series%power(lbound(table%power, 1):ubound(table%power, 1), &
-                               lbound(table%power, 2):ubound(table%power, 2)))
-        series%power = real(table%power, xp)
-        allocate (series%used(table%pieces))
-        do piece = 1, table%pieces
-            series%used(piece) = table%terms_for(piece, tolerance)
-        end do
-    end function series_xp
-
     !> `evaluate_arch` at level_hardware: angle and d(angle)/dR in hardware precision
     !! (`xp`) on the level_coarse rules (1 - r and d come from quad: the apse keeps its
     !! digits).
@@ -386,7 +360,7 @@ contains
         whole_slope = 0.0_xp
         values%boundary_sign = 1.0_qp
         if (second) then
-            call evaluate_xp(model%whole_xp, br, whole, whole_slope)
+            call model%whole_xp%evaluate(br, whole, whole_slope)
             rule_apse = rule_index(big_r, real(upper_apse, qp), .true., hardware_digits, .false.)
             values%boundary_sign = -1.0_qp
             if (rule_apse <= rule_start) then
@@ -408,25 +382,6 @@ contains
         values%boundary = real(sqrt(br)*one_minus_r*sqrt(one_minus_r) &
                                /(rr*one_minus_big_r*sqrt(q_l)), qp)
     end function arch_hardware
-
-    !> Value and slope of a `power_series_xp` at x (Horner).
-    pure subroutine evaluate_xp(series, x, value, slope)
-        type(power_series_xp), intent(in) :: series
-        real(xp), intent(in) :: x
-        real(xp), intent(out) :: value, slope
-        real(xp) :: position, t, derivative
-        integer :: piece, j
-        position = (x - series%lower)/series%width
-        piece = min(series%pieces, max(1, int(position) + 1))
-        t = 2.0_xp*(position - real(piece - 1, xp)) - 1.0_xp
-        value = series%power(series%used(piece) - 1, piece)
-        derivative = 0.0_xp
-        do j = series%used(piece) - 2, 0, -1
-            derivative = derivative*t + value
-            value = value*t + series%power(j, piece)
-        end do
-        slope = derivative*(2.0_xp/series%width)
-    end subroutine evaluate_xp
 
     !> `sweep` in hardware precision (`xp`), angle and d(angle)/dR only.
     pure function sweep_hardware(model, j, big_r, one_minus_big_r, upper, from_apse) &

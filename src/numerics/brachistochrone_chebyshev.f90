@@ -16,14 +16,16 @@
 !!
 !! Building is in two steps so that the caller can evaluate several functions at the
 !! same points in one pass: `chebyshev_points` gives the points, `chebyshev_fit` turns
-!! the values there into a `chebyshev_table`.
+!! the values there into a `chebyshev_table`. `hardware_copy` gives the same polynomials
+!! in the widest hardware kind (`chebyshev_table_xp`) for a root finder's early phase.
 module brachistochrone_chebyshev
-    use brachistochrone_kinds, only: qp, pi
+    use brachistochrone_kinds, only: qp, pi, xp
     use brachistochrone_summation, only: compensated_sum
     implicit none
     private
 
     public :: chebyshev_table, chebyshev_points, chebyshev_fit
+    public :: chebyshev_table_xp, hardware_copy
 
     !> A piecewise Chebyshev interpolant on [lower, upper].
     type :: chebyshev_table
@@ -43,6 +45,18 @@ module brachistochrone_chebyshev
         procedure :: evaluate     !! value and derivative at x
         procedure :: terms_for    !! terms needed on a piece for an absolute tolerance
     end type chebyshev_table
+
+    !> A `chebyshev_table`'s polynomials in hardware precision (`xp`), from
+    !! `hardware_copy`.
+    type :: chebyshev_table_xp
+        real(xp) :: lower = 0.0_xp   !! left end of the interval
+        real(xp) :: width = 1.0_xp   !! width of a piece
+        integer :: pieces = 0        !! number of equal pieces
+        real(xp), allocatable :: power(:, :)  !! a_j of piece k in power(j, k)
+        integer, allocatable :: used(:)       !! terms evaluated on each piece
+    contains
+        procedure :: evaluate => evaluate_xp  !! value and derivative at x
+    end type chebyshev_table_xp
 
 contains
 
@@ -193,5 +207,46 @@ contains
             end do
         end if
     end subroutine evaluate
+
+    !> `table` in hardware precision: each piece cut at the absolute `tolerance`
+    !! (`terms_for`), or with every term when it is absent.
+    pure function hardware_copy(table, tolerance) result(series)
+        type(chebyshev_table), intent(in) :: table
+        real(qp), intent(in), optional :: tolerance  !! absolute tolerance
+        type(chebyshev_table_xp) :: series
+        integer :: piece
+        series%lower = real(table%lower, xp)
+        series%width = real((table%upper - table%lower)/real(table%pieces, qp), xp)
+        series%pieces = table%pieces
+        allocate (series%power(0:table%terms - 1, table%pieces), series%used(table%pieces))
+        series%power = real(table%power, xp)
+        series%used = table%terms
+        if (present(tolerance)) then
+            do piece = 1, table%pieces
+                series%used(piece) = table%terms_for(piece, tolerance)
+            end do
+        end if
+    end function hardware_copy
+
+    !> Value (and derivative) of the hardware copy at x (Horner; points outside
+    !! [lower, upper] are evaluated on the end pieces).
+    pure subroutine evaluate_xp(self, x, value, slope)
+        class(chebyshev_table_xp), intent(in) :: self
+        real(xp), intent(in) :: x                  !! the point
+        real(xp), intent(out) :: value             !! p(x)
+        real(xp), intent(out), optional :: slope   !! p'(x)
+        real(xp) :: position, t, derivative
+        integer :: piece, j
+        position = (x - self%lower)/self%width
+        piece = min(self%pieces, max(1, int(position) + 1))
+        t = 2.0_xp*(position - real(piece - 1, xp)) - 1.0_xp
+        value = self%power(self%used(piece) - 1, piece)
+        derivative = 0.0_xp
+        do j = self%used(piece) - 2, 0, -1
+            if (present(slope)) derivative = derivative*t + value
+            value = value*t + self%power(j, piece)
+        end do
+        if (present(slope)) slope = derivative*(2.0_xp/self%width)
+    end subroutine evaluate_xp
 
 end module brachistochrone_chebyshev
