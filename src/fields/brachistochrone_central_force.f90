@@ -207,14 +207,16 @@ contains
     end function whole_setup
 
     !> The whole-half-arch integrals and their slopes (`arch_sums`, weights 1) at
-    !! Lambda, as five numbers.
+    !! Lambda, as five numbers; every panel on the full rules (`every_panel`: the
+    !! slopes' integrands grow toward the start for steep laws, where Theta's are below
+    !! `negligible`).
     pure function whole_direct(model, big_lambda) result(values)
         type(central_force_model), intent(in) :: model
         real(qp), intent(in) :: big_lambda
         real(qp) :: values(5)
         real(xp) :: slopes(2)
         call arch_sums(model, whole_setup(model, big_lambda), fine_digits, .true., &
-                       values(1:3), slopes)
+                       values(1:3), slopes, every_panel=.true.)
         values(4:5) = real(slopes, qp)
     end function whole_direct
 
@@ -231,6 +233,7 @@ contains
         real(qp) :: lower, upper, big_r, sizes(5)
         real(qp), parameter :: slope_noise = real(epsilon(1.0_xp), qp)
         integer :: k, piece, m, side
+        logical :: positive
         lower = log(table_low)
         upper = log(table_high)
         points = chebyshev_points(lower, upper, table_pieces, table_points)
@@ -239,17 +242,26 @@ contains
                 values(k, piece, :) = whole_direct(model, exp(points(k, piece)))
             end do
         end do
-        ! the values carry rounding noise of about eps (the slopes: of the hardware kind)
+        ! the slopes (positive) as their logarithms: for steep laws they fall like
+        ! R^((n+1)/2) across a piece, which a polynomial in the slope itself resolves only
+        ! relative to the piece's largest value
+        positive = all(values(:, :, 4:5) > 0.0_qp)
+        do m = 4, 5
+            values(:, :, m) = log(merge(values(:, :, m), 1.0_qp, positive))
+        end do
+        ! the values carry rounding noise of about eps (the slopes: of the hardware kind,
+        ! absolute in their logarithms)
         do m = 1, 5
             model%whole(m) = chebyshev_fit(lower, upper, values(:, :, m), &
-                                           merge(0.5_qp*eps_qp, slope_noise, m <= 3))
+                                           merge(0.5_qp*eps_qp, 0.1_qp*slope_noise/ &
+                                           max(1.0_qp, maxval(abs(values(:, :, m)))), m <= 3))
         end do
         model%whole_xp = reshape(real([model%whole(1)%power, model%whole(4)%power], xp), &
                                  [table_points, table_pieces, 2])
         call split_whole_tables(model, values(:, :, 1:3))
         width = (upper - lower)/real(table_pieces, qp)
         do piece = 1, table_pieces
-            model%whole_ok(piece) = .true.
+            model%whole_ok(piece) = positive
             do side = 1, 2
                 z = lower + width*(real(piece - 1, qp) + merge(0.3_qp, 0.71_qp, side == 1))
                 direct = whole_direct(model, exp(z))
@@ -297,6 +309,8 @@ contains
                 values(m) = values(m)*t + model%whole_xp(j, piece, m)
             end do
         end do
+        ! the slope's table holds its logarithm
+        values(2) = exp(values(2))
         found = .true.
     end subroutine whole_lookup_xp
 
@@ -361,10 +375,15 @@ contains
         real(qp), intent(in) :: z
         real(qp), intent(out) :: value
         real(qp) :: width, position, t
-        real(xp) :: t_xp, high
+        real(xp) :: t_xp, high, low
         integer :: piece, j, split, used
         if (m > 3) then
+            ! the slopes' tables hold their logarithms: exp in hardware precision, the
+            ! logarithm's part below the hardware kind's rounding taken as a factor
             call model%whole(m)%evaluate(z, value)
+            high = real(value, xp)
+            low = real(value - real(high, qp), xp)
+            value = real(exp(high)*(1.0_xp + low), qp)
             return
         end if
         associate (table => model%whole(m))
@@ -685,7 +704,7 @@ contains
     !! e^lambda q'/(2 (1 - q)^(3/2)) (q' = d q/d Lambda, from the law's hardware terms),
     !! summed in hardware precision on the same nodes (want_length_time needed).
     pure subroutine arch_sums(model, a, digits, want_length_time, sums, slopes, given, &
-                              given_count)
+                              given_count, every_panel)
         type(central_force_model), intent(in) :: model
         type(arch_setup), intent(in) :: a
         real(qp), intent(in) :: digits
@@ -695,11 +714,16 @@ contains
         !> `arch_panels(model, a, given, given_count)` where the caller has them
         type(panel), intent(in), optional :: given(max_panels)
         integer, intent(in), optional :: given_count
+        !> no panel skipped and each on the full rules (the tables' build)
+        logical, intent(in), optional :: every_panel
         type(panel) :: panels(max_panels)
         real(qp) :: part(3), last(3), share, v, lambda, delta, jacobian, q, omq, qv, rx
         real(qp) :: inverse_root, common, g(3), root_q, weighted, width
         real(xp) :: part_xp(2), carry(2), carry_all(2), log_slope, g_xp
         integer :: count, p, k, j
+        logical :: all_panels
+        all_panels = .false.
+        if (present(every_panel)) all_panels = every_panel
         if (present(given) .and. present(given_count)) then
             count = given_count
             panels(1:count) = given(1:count)
@@ -713,7 +737,7 @@ contains
         do p = 1, count
             associate (pan => panels(p))
             share = 1.0_qp
-            if (p > 1) then
+            if (p > 1 .and. .not. all_panels) then
                 share = panel_share(pan, last, sums, merge(3, 1, want_length_time))
                 ! skipped, not ended: a sliver next to a split is followed by a full panel
                 if (share < negligible) cycle
