@@ -101,6 +101,9 @@ module brachistochrone_central_force
     !! where the integrals are not analytic), table_points Chebyshev points each.
     real(qp), parameter :: table_low = 0.02_qp, table_high = 6.9_qp
     integer, parameter :: table_pieces = 12, table_points = 33
+    !> Laws whose integrands decay faster than exp(-steep_decay lambda) from the apse
+    !! (power laws n > 2 steep_decay - 1) take the early phase in u in logarithmic forms
+    real(qp), parameter :: steep_decay = 6.0_qp
 
     !> One Gauss-Legendre rule on [0, 1].
     type :: gauss_nodes
@@ -1208,8 +1211,13 @@ contains
         limit = real(prob%limit, real64)
         select case (prob%form)
         case (1)
-            ! log(Upsilon/psi) without forming Upsilon or psi (both may underflow double)
-            f = log(max(scaled, tiny(1.0_real64))) - shift - real(log(prob%psi), real64)
+            ! log(Upsilon/psi) without forming Upsilon or psi (both may underflow double;
+            ! the unknown u: the ratio first, log psi's rounding would count)
+            if (prob%use_u) then
+                f = log(upsilon/psi)
+            else
+                f = log(max(scaled, tiny(1.0_real64))) - shift - real(log(prob%psi), real64)
+            end if
         case (2)
             f = log(max(limit - upsilon, tiny(1.0_real64))/(limit - psi))
         case default
@@ -1450,8 +1458,12 @@ contains
         call theta_xp(model, a, rough, scaled, scaled_slope, shift)
         select case (prob%form)
         case (1)
-            ! log(Upsilon/psi)
-            f = log(max(scaled, tiny(1.0_xp))) - shift - real(log(prob%psi), xp)
+            ! log(Upsilon/psi) (the unknown u: the ratio first, as `residual64`)
+            if (prob%use_u) then
+                f = log(scaled*exp(-shift)/real(prob%psi, xp))
+            else
+                f = log(max(scaled, tiny(1.0_xp))) - shift - real(log(prob%psi), xp)
+            end if
             slope = scaled_slope/scaled*lambda_slope
         case (2)
             upsilon = scaled*exp(-shift)
@@ -1492,14 +1504,17 @@ contains
         rough = .true.
         xk = falsi()
         ! rho next to 1 (second half-arch): Upsilon - Theta(rho,rho) ~ c u^2 but for the
-        ! smallest u (falsi would start far below the root)
+        ! smallest u (falsi would start far below the root; f of opposite signs at a = 0
+        ! and b)
         if (prob%use_u .and. prob%second .and. prob%one_minus_rho < 1.0e-6_qp .and. &
-            fa < 0.0_xp .and. fb > 0.0_xp) xk = b*sqrt(-fa/(fb - fa))
+            ((fa < 0.0_xp) .neqv. (fb < 0.0_xp))) xk = b*sqrt(fa/(fa - fb))
         do iteration = 1, 80
             call residual_xp(model, prob, xk, rough, fk, dk)
             steps = steps + 1
+            ! |Upsilon''/Upsilon'| = |f''/f' + f'| in the logarithmic forms (1, 2)
             if (d_prev /= 0.0_xp .and. abs(xk - x_prev) > 1.0e-7_xp*floor) &
-                curvature = max(curvature, real(abs((dk - d_prev)/((xk - x_prev)*dk)), qp))
+                curvature = max(curvature, real(abs((dk - d_prev)/((xk - x_prev)*dk) + &
+                                                    merge(0.0_xp, dk, prob%form == 0)), qp))
             noise = residual_noise(prob, fk, rough)
             if ((abs(fk) <= noise .and. noise < 1.0e-3_xp) .or. &
                 (rough .and. iteration > 10)) then
@@ -1864,7 +1879,7 @@ contains
         if (hardware .and. prob%use_u .and. prob%rho < 1.0_qp) then
             ! B within 1e-16 of its apse angle (not at it): below what the early phase
             ! resolves; the root from the slope next to u = 0
-            if (abs(f_lo) <= 1.0e-16_real64*real(psi, real64)) &
+            if (abs(apse_angle_rho - psi) <= 1.0e-16_qp*psi) &
                 call apse_start(self, prob, hi, f_lo, x, slope_q, near)
             if (near) then
                 curvature = 0.0_qp
@@ -2046,14 +2061,30 @@ contains
             end do
             below = .not. f_lo < 0.0_real64
         else
-            ! R-bar in [rho/2, rho]: unknown u = sqrt(rho - R) on [0, sqrt(rho/2)]
+            ! R-bar in [rho/2, rho]: unknown u = sqrt(rho - R) on [0, sqrt(rho/2)], in
+            ! the forms that follow steep laws (Theta(r,R) ~ (R/r)^((n+1)/2) on the first
+            ! half-arch, limit - Upsilon ~ R^(n-1) on the second): log(Upsilon/psi),
+            ! log((limit - Upsilon)/(limit - psi)) (Theta(1,1) = 0)
             prob%form = 0
+            if (pi/self%sigma_apse > steep_decay) prob%form = merge(2, 1, prob%second)
             lo = 0.0_qp
             hi = sqrt(prob%rho - half)
-            f_lo = real(apse_angle_rho - prob%psi, real64)
-            if (prob%rho == 1.0_qp) f_lo = -real(prob%psi, real64)
-            f_hi = f_half
+            f_lo = form_of(apse_angle_rho)
+            f_hi = form_of(real(theta_half, qp))
         end if
+    contains
+        !> Upsilon - psi in the problem's form.
+        pure real(real64) function form_of(upsilon)
+            real(qp), intent(in) :: upsilon
+            select case (prob%form)
+            case (1)
+                form_of = real(log(upsilon/prob%psi), real64)
+            case (2)
+                form_of = real(log((prob%limit - upsilon)/(prob%limit - prob%psi)), real64)
+            case default
+                form_of = real(upsilon - prob%psi, real64)
+            end select
+        end function form_of
     end subroutine open_bracket
 
 end module brachistochrone_central_force
