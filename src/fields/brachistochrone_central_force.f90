@@ -803,11 +803,15 @@ contains
     !! whichever has fewer panels (the subtraction of the first half-arch only if
     !! int_0^lambda_r <= W/2: at most a bit lost). magnitude: the sums of the slopes'
     !! terms' sizes (for the error bounds of `arch_values`).
-    pure subroutine table_sums(model, a, sums, slopes, magnitude)
+    pure subroutine table_sums(model, a, sums, slopes, magnitude, expected)
         type(central_force_model), intent(in) :: model
         type(arch_setup), intent(in) :: a
         real(qp), intent(out) :: sums(3)
         real(xp), intent(out), optional :: slopes(2), magnitude(2)
+        !> Theta's value where it is known (the root finder's psi): the first half-arch
+        !! then goes straight to int_lambda_r^Lambda where W - int_0^lambda_r would lose
+        !! more than a bit
+        real(qp), intent(in), optional :: expected
         type(arch_setup) :: below, above
         type(panel) :: panels_below(max_panels), panels_above(max_panels)
         real(qp) :: whole(5), part(3), w_sign, p_sign
@@ -835,6 +839,8 @@ contains
         call arch_panels(model, below, panels_below, n_below)
         call arch_panels(model, above, panels_above, n_above)
         use_below = n_below <= n_above
+        if (present(expected) .and. a%weight_below == 0.0_qp) &
+            use_below = use_below .and. expected >= 0.5_qp*whole(1)
         if (a%weight_below == 2.0_qp) then
             w_sign = merge(1.0_qp, 2.0_qp, use_below)
             p_sign = merge(1.0_qp, -1.0_qp, use_below)
@@ -1042,7 +1048,7 @@ contains
     !> Theta, S, T at the endpoint for the apse data `a` (first or second half-arch as
     !! the weights say); d = r - R exact, one_minus_r = 1 - r.
     pure subroutine arch_values(model, a, d, one_minus_r, second, fall_r, angle, length, &
-                                time, slopes)
+                                time, slopes, expected)
         type(central_force_model), intent(in) :: model
         type(arch_setup), intent(in) :: a
         real(qp), intent(in) :: d, one_minus_r
@@ -1052,11 +1058,12 @@ contains
         !> d angle/d Lambda, d length/d Lambda in hardware precision and bounds on their
         !! absolute errors (the law's hardware terms needed)
         real(xp), intent(out), optional :: slopes(4)
+        real(qp), intent(in), optional :: expected  !! the angle where known (`table_sums`)
         real(qp) :: sums(3), fall
         real(xp) :: integral_slopes(2), g, omq, log_slope, root, h, jump, big_r, error
         real(xp) :: magnitude(2)
         if (present(slopes)) then
-            call table_sums(model, a, sums, integral_slopes, magnitude)
+            call table_sums(model, a, sums, integral_slopes, magnitude, expected)
             ! the endpoint lambda_r = Lambda - delta_r moves with Lambda: the integrands
             ! there times the jump of the weights (g = 0 at the start, delta_r = 0)
             g = 0.0_xp
@@ -1081,7 +1088,7 @@ contains
             slopes(3) = error*(magnitude(1) + abs(g))
             slopes(4) = error*big_r*(magnitude(2) + abs(h) + real(sums(2), xp))
         else
-            call table_sums(model, a, sums)
+            call table_sums(model, a, sums, expected=expected)
         end if
         if (second) then
             ! 2 t0(R) - t0(r) = t0(r) + 2 (t0(R) - t0(r))
@@ -1310,8 +1317,10 @@ contains
             else
                 call panel_theta_xp(model, above, rough, shift, part, part_slope)
             end if
-            if (a%weight_below == 0.0_qp .and. use_below .and. .not. (part <= 0.5_xp*whole(1) &
-                .and. a%delta_r >= 0.5_qp*a%big_lambda)) then
+            ! (the rough evaluations, which need about 7 digits, lose up to 10 bits)
+            if (a%weight_below == 0.0_qp .and. use_below .and. .not. ((part <= &
+                0.5_xp*whole(1) .and. a%delta_r >= 0.5_qp*a%big_lambda) .or. &
+                (rough .and. part <= 0.999_xp*whole(1)))) then
                 w_sign = 0.0_xp
                 p_sign = 1.0_xp
                 call panel_theta_xp(model, above, rough, shift, part, part_slope)
@@ -1657,7 +1666,7 @@ contains
             curve = 10.0_qp/x0
         end if
         call arch_values(model, a, d, prob%one_minus_rho, prob%second, prob%fall_rho, &
-                         angle, s, t, slopes)
+                         angle, s, t, slopes, prob%psi)
         solution%steps = solution%steps + 1
         f = angle - prob%psi
         slope_next = real(slopes(1), qp)*lambda_slope
@@ -1790,7 +1799,7 @@ contains
             d = prob%rho - a%big_r
         end if
         call arch_values(model, a, d, prob%one_minus_rho, prob%second, prob%fall_rho, &
-                         angle, s, t)
+                         angle, s, t, expected=prob%psi)
         f = angle - prob%psi
     end subroutine evaluate_full
 
