@@ -31,8 +31,8 @@
 !! quadrature of x/v otherwise (`fall_piece`).
 !!
 !! Whole-half-arch tables (as on the fast path): the integrals over [0, Lambda] with
-!! weight 1 and their slopes, tabulated once per model on R from about 0.98 down to 1e-3
-!! (Lambda in [0.02, 6.9]) as piecewise Chebyshev series in z = log Lambda (equal pieces
+!! weight 1 and their slopes, tabulated once per model on R from about 0.98 down to 1.7e-5
+!! (Lambda in [0.02, 11]) as piecewise Chebyshev series in z = log Lambda (equal pieces
 !! in z are graded toward R = 1, where the integrals are not analytic), each piece
 !! checked at build time against the quadrature between its points and used only if it
 !! agrees (`build_whole_tables`). A full evaluation then integrates only the panels
@@ -97,10 +97,10 @@ module brachistochrone_central_force
     !> Lowest log R searched (R above the smallest normal binary128 number).
     real(qp), parameter :: lowest_log_r = -11355.0_qp
     !> The whole-half-arch tables: Lambda = -log R in [table_low, table_high] (R from
-    !! about 0.98 down to 1e-3), in z = log Lambda on equal pieces (graded toward R = 1,
+    !! about 0.98 down to 1.7e-5), in z = log Lambda on equal pieces (graded toward R = 1,
     !! where the integrals are not analytic), table_points Chebyshev points each.
-    real(qp), parameter :: table_low = 0.02_qp, table_high = 6.9_qp
-    integer, parameter :: table_pieces = 12, table_points = 33
+    real(qp), parameter :: table_low = 0.02_qp, table_high = 11.0_qp
+    integer, parameter :: table_pieces = 13, table_points = 33
     !> Laws whose integrands decay faster than exp(-steep_decay lambda) from the apse
     !! (power laws n > 2 steep_decay - 1) take the early phase in u in logarithmic forms
     real(qp), parameter :: steep_decay = 6.0_qp
@@ -1285,7 +1285,7 @@ contains
         logical, intent(in) :: rough   !! 17-digit rules, transcendentals in double
         real(xp), intent(out) :: theta, slope, shift
         type(arch_setup) :: below, above
-        type(panel) :: panels(max_panels)
+        type(panel) :: panels_below(max_panels), panels_above(max_panels)
         real(xp) :: whole(2), part, part_slope, w_sign, p_sign, g, omq, log_slope
         integer :: n_below, n_above
         logical :: found, use_below
@@ -1302,8 +1302,8 @@ contains
             below%weight_above = 0.0_qp
             above = a
             above%weight_below = 0.0_qp
-            call arch_panels(model, below, panels, n_below)
-            call arch_panels(model, above, panels, n_above)
+            call arch_panels(model, below, panels_below, n_below)
+            call arch_panels(model, above, panels_above, n_above)
             use_below = n_below <= n_above
             if (a%weight_below == 2.0_qp) then
                 w_sign = merge(1.0_xp, 2.0_xp, use_below)
@@ -1313,9 +1313,11 @@ contains
                 p_sign = merge(-1.0_xp, 1.0_xp, use_below)
             end if
             if (use_below) then
-                call panel_theta_xp(model, below, rough, shift, part, part_slope)
+                call panel_theta_xp(model, below, rough, shift, part, part_slope, &
+                                    panels_below, n_below)
             else
-                call panel_theta_xp(model, above, rough, shift, part, part_slope)
+                call panel_theta_xp(model, above, rough, shift, part, part_slope, &
+                                    panels_above, n_above)
             end if
             ! (the rough evaluations, which need about 7 digits, lose up to 10 bits)
             if (a%weight_below == 0.0_qp .and. use_below .and. .not. ((part <= &
@@ -1323,7 +1325,8 @@ contains
                 (rough .and. part <= 0.999_xp*whole(1)))) then
                 w_sign = 0.0_xp
                 p_sign = 1.0_xp
-                call panel_theta_xp(model, above, rough, shift, part, part_slope)
+                call panel_theta_xp(model, above, rough, shift, part, part_slope, &
+                                    panels_above, n_above)
             end if
             theta = w_sign*whole(1) + p_sign*part
             slope = w_sign*whole(2) + p_sign*part_slope
@@ -1339,17 +1342,26 @@ contains
     end subroutine theta_xp
 
     !> `theta_xp` over the panels of `a` (its weights), without the jump at the endpoint.
-    pure subroutine panel_theta_xp(model, a, rough, shift, theta, slope)
+    pure subroutine panel_theta_xp(model, a, rough, shift, theta, slope, given, &
+                                   given_count)
         type(central_force_model), intent(in) :: model
         type(arch_setup), intent(in) :: a
         logical, intent(in) :: rough   !! 17-digit rules, transcendentals in double
         real(xp), intent(in) :: shift
         real(xp), intent(out) :: theta, slope
+        !> `arch_panels(model, a, given, given_count)` where the caller has them
+        type(panel), intent(in), optional :: given(max_panels)
+        integer, intent(in), optional :: given_count
         type(panel) :: panels(max_panels)
         real(xp) :: part(2), last, v, lambda, delta, jacobian, g, omq, log_slope, big
         real(xp) :: scale, share, lo, width
         integer :: count, p, k, j
-        call arch_panels(model, a, panels, count)
+        if (present(given) .and. present(given_count)) then
+            count = given_count
+            panels(1:count) = given(1:count)
+        else
+            call arch_panels(model, a, panels, count)
+        end if
         theta = 0.0_xp
         slope = 0.0_xp
         last = 0.0_xp
