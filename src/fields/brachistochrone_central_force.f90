@@ -1060,6 +1060,7 @@ contains
         real(xp), intent(out), optional :: slopes(4)
         real(qp), intent(in), optional :: expected  !! the angle where known (`table_sums`)
         real(qp) :: sums(3), fall
+        logical :: found
         real(xp) :: integral_slopes(2), g, omq, log_slope, root, h, jump, big_r, error
         real(xp) :: magnitude(2)
         if (present(slopes)) then
@@ -1091,8 +1092,14 @@ contains
             call table_sums(model, a, sums, expected=expected)
         end if
         if (second) then
-            ! 2 t0(R) - t0(r) = t0(r) + 2 (t0(R) - t0(r))
-            fall = fall_r + 2.0_qp*fall_piece(model, a%delta_r, a%big_lambda)
+            ! 2 t0(R) - t0(r) = t0(r) + 2 (t0(R) - t0(r)); in closed form 2 t0(R) - t0(r)
+            ! (fall_r: t0(r) in that closed form, one evaluation less)
+            call model%law%closed_fall(0.0_qp, a%big_lambda, fall, found)
+            if (found) then
+                fall = 2.0_qp*fall - fall_r
+            else
+                fall = fall_r + 2.0_qp*fall_piece(model, a%delta_r, a%big_lambda)
+            end if
             length = (one_minus_r + 2.0_qp*d) + a%big_r*sums(2)
         else
             fall = fall_r
