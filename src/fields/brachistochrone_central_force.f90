@@ -803,7 +803,7 @@ contains
     !! whichever has fewer panels (the subtraction of the first half-arch only if
     !! int_0^lambda_r <= W/2: at most a bit lost). magnitude: the sums of the slopes'
     !! terms' sizes (for the error bounds of `arch_values`).
-    pure subroutine table_sums(model, a, sums, slopes, magnitude, expected)
+    pure subroutine table_sums(model, a, sums, slopes, magnitude, expected, fall_r)
         type(central_force_model), intent(in) :: model
         type(arch_setup), intent(in) :: a
         real(qp), intent(out) :: sums(3)
@@ -812,9 +812,10 @@ contains
         !! then goes straight to int_lambda_r^Lambda where W - int_0^lambda_r would lose
         !! more than a bit
         real(qp), intent(in), optional :: expected
+        real(qp), intent(in), optional :: fall_r  !! t0(r), the fall time to the endpoint
         type(arch_setup) :: below, above
         type(panel) :: panels_below(max_panels), panels_above(max_panels)
-        real(qp) :: whole(5), part(3), w_sign, p_sign
+        real(qp) :: whole(5), part(3), w_sign, p_sign, sizes(3)
         real(xp) :: part_slopes(2)
         integer :: n_below, n_above
         logical :: found, use_below
@@ -856,8 +857,12 @@ contains
         if (a%weight_below == 0.0_qp .and. use_below) then
             ! W - int_0^lambda_r: at most a bit lost, and the endpoint nearer the apse
             ! (delta_r >= Lambda/2: 1 - r >= (1 - R)/2, t0(r) >= t0(R)/2, the sizes the
-            ! tables are checked against)
-            if (.not. (all(part <= 0.5_qp*whole(1:3)) .and. &
+            ! tables are checked against); the S and T corrections may lose more where
+            ! they are below (1 - R)/R and t0(r)/R: their errors are then within the
+            ! tables' own, of the sizes s and t exceed
+            sizes = 0.0_qp
+            if (present(fall_r)) sizes(2:3) = [a%one_minus_big_r, fall_r]/a%big_r
+            if (.not. (all(part <= 0.5_qp*whole(1:3) .or. whole(1:3) <= sizes) .and. &
                        a%delta_r >= 0.5_qp*a%big_lambda)) then
                 w_sign = 0.0_qp
                 p_sign = 1.0_qp
@@ -1064,7 +1069,7 @@ contains
         real(xp) :: integral_slopes(2), g, omq, log_slope, root, h, jump, big_r, error
         real(xp) :: magnitude(2)
         if (present(slopes)) then
-            call table_sums(model, a, sums, integral_slopes, magnitude, expected)
+            call table_sums(model, a, sums, integral_slopes, magnitude, expected, fall_r)
             ! the endpoint lambda_r = Lambda - delta_r moves with Lambda: the integrands
             ! there times the jump of the weights (g = 0 at the start, delta_r = 0)
             g = 0.0_xp
@@ -1089,7 +1094,7 @@ contains
             slopes(3) = error*(magnitude(1) + abs(g))
             slopes(4) = error*big_r*(magnitude(2) + abs(h) + real(sums(2), xp))
         else
-            call table_sums(model, a, sums, expected=expected)
+            call table_sums(model, a, sums, expected=expected, fall_r=fall_r)
         end if
         if (second) then
             ! 2 t0(R) - t0(r) = t0(r) + 2 (t0(R) - t0(r)); in closed form 2 t0(R) - t0(r)
