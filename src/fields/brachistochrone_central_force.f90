@@ -128,9 +128,9 @@ module brachistochrone_central_force
         real(xp), allocatable :: whole_xp(:, :, :)
         !> Theta, S and T tables: the powers of t from whole_split(piece, m) on, whose
         !! sum of sizes is below 2^-60 of the value's, in hardware precision
-        !! (`whole_value`)
+        !! (`whole_value`); the slopes' (logarithms): below 2^-10
         real(xp), allocatable :: whole_tail_xp(:, :, :)
-        integer :: whole_split(table_pieces, 3) = table_points
+        integer :: whole_split(table_pieces, 5) = table_points
     contains
         procedure :: half_arch => general_half_arch    !! theta, s, t at r (eqs. 27-41)
         procedure :: apse_angle => general_apse_angle  !! Theta(R,R)
@@ -261,7 +261,7 @@ contains
         end do
         model%whole_xp = reshape(real([model%whole(1)%power, model%whole(4)%power], xp), &
                                  [table_points, table_pieces, 2])
-        call split_whole_tables(model, values(:, :, 1:3))
+        call split_whole_tables(model, values)
         width = (upper - lower)/real(table_pieces, qp)
         do piece = 1, table_pieces
             model%whole_ok(piece) = positive
@@ -345,18 +345,21 @@ contains
     !! which on the sum of the coefficients' sizes is below 2^-60 of the value's least
     !! size (half the least of the tabulated values): Horner's rule in hardware precision
     !! there (error below ~70 eps(xp) 2^-60 < eps/4 of the value, t's rounding included).
+    !! For the slopes' logarithms (m = 4, 5; wanted to about eps(xp)/10 absolute) from
+    !! where that sum is below 2^-10 (error below ~70 eps(xp) 2^-10).
     subroutine split_whole_tables(model, values)
         type(central_force_model), intent(inout) :: model
         real(qp), intent(in) :: values(:, :, :)  !! the tabulated values (point, piece, m)
         real(qp) :: least, tail
         integer :: piece, m, j, used
-        allocate (model%whole_tail_xp(0:table_points - 1, table_pieces, 3))
+        allocate (model%whole_tail_xp(0:table_points - 1, table_pieces, 5))
         model%whole_tail_xp = 0.0_xp
-        do m = 1, 3
+        do m = 1, 5
             do piece = 1, table_pieces
                 ! (no associate: a section's name would start at 1)
                 used = model%whole(m)%used(piece)
                 least = 0.5_qp*minval(abs(values(:, piece, m)))
+                if (m > 3) least = 2.0_qp**50
                 model%whole_split(piece, m) = used
                 tail = 0.0_qp
                 do j = used - 1, 1, -1
@@ -370,8 +373,8 @@ contains
         end do
     end subroutine split_whole_tables
 
-    !> Table m at z: the powers of t from `whole_split` on in hardware precision (Theta,
-    !! S, T), the rest (and the slopes' tables) as `evaluate`.
+    !> Table m at z: the powers of t from `whole_split` on in hardware precision, the
+    !! rest in quad precision; the slopes (m = 4, 5) from their logarithms.
     pure subroutine whole_value(model, m, z, value)
         type(central_force_model), intent(in) :: model
         integer, intent(in) :: m
@@ -380,15 +383,6 @@ contains
         real(qp) :: width, position, t
         real(xp) :: t_xp, high, low
         integer :: piece, j, split, used
-        if (m > 3) then
-            ! the slopes' tables hold their logarithms: exp in hardware precision, the
-            ! logarithm's part below the hardware kind's rounding taken as a factor
-            call model%whole(m)%evaluate(z, value)
-            high = real(value, xp)
-            low = real(value - real(high, qp), xp)
-            value = real(exp(high)*(1.0_xp + low), qp)
-            return
-        end if
         associate (table => model%whole(m))
         width = (table%upper - table%lower)/real(table%pieces, qp)
         position = (z - table%lower)/width
@@ -406,6 +400,13 @@ contains
             value = value*t + table%power(j, piece)
         end do
         end associate
+        if (m > 3) then
+            ! the slopes' tables hold their logarithms: exp in hardware precision, the
+            ! logarithm's part below the hardware kind's rounding taken as a factor
+            high = real(value, xp)
+            low = real(value - real(high, qp), xp)
+            value = real(exp(high)*(1.0_xp + low), qp)
+        end if
     end subroutine whole_value
 
     !> The apse data for R (with 1 - R exact) and the endpoint r = R + d.
@@ -2072,11 +2073,19 @@ contains
         integer, intent(out) :: steps                 !! evaluations made
         logical, intent(out) :: below                 !! R-bar underflows
         real(real64) :: f_half, theta_half, scaled, shift
+        real(xp) :: theta_xp_half, slope_xp, shift_xp
         integer :: probe
         below = .false.
         prob%use_u = .true.
-        call theta64(self, setup_at64(self, prob, sqrt(prob%rho - half)), scaled, shift)
-        theta_half = scaled*exp(-shift)
+        if (self%law%has_terms_xp()) then
+            ! as a rough early evaluation (with the tables)
+            call theta_xp(self, setup_at64(self, prob, sqrt(prob%rho - half)), .true., &
+                          theta_xp_half, slope_xp, shift_xp)
+            theta_half = real(theta_xp_half*exp(-shift_xp), real64)
+        else
+            call theta64(self, setup_at64(self, prob, sqrt(prob%rho - half)), scaled, shift)
+            theta_half = scaled*exp(-shift)
+        end if
         f_half = theta_half - real(prob%psi, real64)
         steps = 1
         if ((f_half >= 0.0_real64) .neqv. prob%second) then
