@@ -2095,11 +2095,11 @@ contains
             prob%use_u = .false.
             prob%form = merge(2, 1, prob%second)
             hi = log(half)
-            f_hi = residual64(self, prob, hi)
+            f_hi = bracket_residual(hi)
             lo = hi
             do probe = 1, 40
                 lo = max(lowest_log_r, hi - 4.0_qp*2.0_qp**probe)
-                f_lo = residual64(self, prob, lo)
+                f_lo = bracket_residual(lo)
                 steps = steps + 1
                 if (f_lo < 0.0_real64 .or. lo == lowest_log_r) exit
             end do
@@ -2117,6 +2117,19 @@ contains
             f_hi = form_of(real(theta_half, qp))
         end if
     contains
+        !> The residual at y = log R: a rough early evaluation (with the tables) for laws
+        !! with hardware terms, else `residual64`.
+        pure real(real64) function bracket_residual(y)
+            real(qp), intent(in) :: y
+            real(xp) :: f, slope
+            if (self%law%has_terms_xp()) then
+                call residual_xp(self, prob, real(y, xp), .true., f, slope)
+                bracket_residual = real(f, real64)
+            else
+                bracket_residual = residual64(self, prob, y)
+            end if
+        end function bracket_residual
+
         !> Upsilon - psi in the problem's form.
         pure real(real64) function form_of(upsilon)
             real(qp), intent(in) :: upsilon
