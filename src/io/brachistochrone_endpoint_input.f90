@@ -40,6 +40,7 @@ module brachistochrone_endpoint_input
     use brachistochrone_fields, only: field_names
     use brachistochrone_kinds, only: qp, pi
     use brachistochrone_sha256, only: sha256_hex
+    !$ use omp_lib, only: omp_get_max_threads
     use brachistochrone_speed_laws, only: max_power_exponent
     use brachistochrone_namelist_scan, only: group_scan, scan_group, problem_list
     use brachistochrone_strings, only: integer_text, escape_text, real_from_text, &
@@ -195,6 +196,7 @@ contains
         character(len=:), allocatable :: text, problem
         character(len=64) :: digest
         logical :: want_checksum
+        integer :: threads
         if (path == stdin_path) then
             call read_stdin(text, problem)
         else
@@ -211,7 +213,9 @@ contains
         if (present(checksum)) want_checksum = checksum
         digest = ''
         ! the checksum (about 4 ms per MB) on a second thread while the first parses (8)
-        !$omp parallel sections num_threads(2) if (want_checksum) default(shared)
+        threads = 1
+        !$ threads = min(2, omp_get_max_threads())   ! never more than the run may use
+        !$omp parallel sections num_threads(threads) if (want_checksum) default(shared)
         !$omp section
         call read_endpoint_text(text, path, table)
         !$omp section
