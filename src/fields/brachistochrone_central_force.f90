@@ -1612,10 +1612,11 @@ contains
             floor = 1.0e-3_qp*(hi - lo)
             curve = merge(2.0_qp*curvature, 10.0_qp/(hi - lo), curvature > 0.0_qp)
         else
+            ! the unknown R: the step in y = log R (dx below), taken as R exp(dy)
             d = prob%rho - a%big_r
-            lambda_slope = -1.0_qp/a%big_r
-            floor = tiny(1.0_qp)
-            curve = 10.0_qp/x0
+            lambda_slope = -1.0_qp
+            floor = 1.0_qp
+            curve = merge(2.0_qp*curvature, 10.0_qp, curvature > 0.0_qp)
         end if
         call arch_values(model, a, d, prob%one_minus_rho, prob%second, prob%fall_rho, &
                          angle, s, t, slopes)
@@ -1624,15 +1625,22 @@ contains
         slope_next = real(slopes(1), qp)*lambda_slope
         if (.not. (ieee_is_finite(slope_next) .and. slope_next /= 0.0_qp)) return
         dx = -f/slope_next
-        x = x0 + dx
+        if (prob%use_u) then
+            x = x0 + dx
+        else
+            ! (Upsilon's curvature in log R is about 1/Lambda next to the sector's edge,
+            ! in R about 1/R: the Newton step in log R errs far less)
+            x = x0 + x0*expm1_qp(dx)
+        end if
         if (.not. (x > lo .and. x < hi)) return
         x_next = x
         error = curve*dx*dx + abs(dx)*real(slopes(3)/abs(slopes(1)), qp)
-        ! below 1e-35 of the unknown, or, for the unknown R (below rho/2), moving Upsilon
-        ! by less than 1e-35 psi (within the rounding of psi: R-bar's conditioning, next
-        ! to the edge of the sector) and s by less than 1e-35 of itself
+        ! below 1e-35 of the unknown (R: relative), or, for the unknown R (below rho/2),
+        ! moving Upsilon by less than 1e-35 psi (within the rounding of psi: R-bar's
+        ! conditioning, next to the edge of the sector) and s by less than 1e-35 of itself
+        if (.not. prob%use_u) slope_next = slope_next/x0
         if (.not. (error <= 1.0e-35_qp*max(abs(x), floor) .or. (.not. prob%use_u .and. &
-                   error*abs(slope_next) <= 1.0e-35_qp*prob%psi .and. &
+                   error*abs(slope_next*x0) <= 1.0e-35_qp*prob%psi .and. &
                    error*abs(real(slopes(2), qp)*lambda_slope) <= 1.0e-35_qp*abs(s)))) return
         if (.not. abs(dx*lambda_slope*real(slopes(4), qp)) <= eps_qp*abs(s)) return
         solution%arclength = s + real(slopes(2), qp)*lambda_slope*dx
@@ -1864,6 +1872,11 @@ contains
             slope = slope/real(x, real64)
             lo = exp(lo)
             hi = half
+            ! Upsilon's curvature in y, |Upsilon''/(2 Upsilon')| <= |f'|/2 + |f''/(2 f')|
+            ! (the forms 1, 2: Upsilon = psi e^f, limit - (limit - psi) e^f), for the
+            ! certified step in y (`final_step`)
+            if (hardware .and. curvature > 0.0_qp) &
+                curvature = curvature + 0.5_qp*abs(slope_q)
         end if
         if (hardware) then
             call final_steps(self, prob, x, lo, hi, curvature, solution, done, slope_q)
