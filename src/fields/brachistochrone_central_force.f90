@@ -135,11 +135,13 @@ module brachistochrone_central_force
         procedure :: solve => general_solve            !! the two-point problem
     end type central_force_model
 
-    !> A panel in its own variable, with its weight and Bernstein parameter.
+    !> A panel in its own variable, with its weight and Bernstein parameter. (No default
+    !! initialization: the arrays of max_panels panels in the engine's routines would be
+    !! initialized on every call.)
     type :: panel
-        integer :: kind = kind_apse
-        real(qp) :: lo = 0.0_qp, hi = 0.0_qp, scale = 0.0_qp, weight = 1.0_qp
-        real(real64) :: log_rho = 1.0_real64
+        integer :: kind
+        real(qp) :: lo, hi, scale, weight
+        real(real64) :: log_rho
     end type panel
 
     !> One apse R as the integrals need it: R, 1 - R, Lambda = -log R (all exact), the
@@ -521,15 +523,15 @@ contains
         w_lo = merge(a%weight_above, a%weight_below, reversed)
         w_hi = merge(a%weight_below, a%weight_above, reversed)
         if (split <= lo) then
-            call push(panels, count, panel(kind, lo, hi, scale, w_hi))
+            call push(panels, count, panel(kind, lo, hi, scale, w_hi, 1.0_real64))
         else if (split >= hi) then
-            call push(panels, count, panel(kind, lo, hi, scale, w_lo))
+            call push(panels, count, panel(kind, lo, hi, scale, w_lo, 1.0_real64))
         else if (reversed) then
-            call push(panels, count, panel(kind, split, hi, scale, w_hi))
-            call push(panels, count, panel(kind, lo, split, scale, w_lo))
+            call push(panels, count, panel(kind, split, hi, scale, w_hi, 1.0_real64))
+            call push(panels, count, panel(kind, lo, split, scale, w_lo, 1.0_real64))
         else
-            call push(panels, count, panel(kind, lo, split, scale, w_lo))
-            call push(panels, count, panel(kind, split, hi, scale, w_hi))
+            call push(panels, count, panel(kind, lo, split, scale, w_lo, 1.0_real64))
+            call push(panels, count, panel(kind, split, hi, scale, w_hi, 1.0_real64))
         end if
     end subroutine add_split
 
