@@ -153,6 +153,9 @@ module brachistochrone_central_force
         real(qp) :: lambda_r = 0.0_qp, delta_r = 0.0_qp
         real(qp) :: weight_below = 0.0_qp, weight_above = 1.0_qp
         real(xp) :: cx(4) = 0.0_xp    !! the law's constants in hardware precision
+        !> Theta of a first half-arch where known beforehand (psi: the two-point problem's
+        !! target), else 0: picks the panels in `table_sums` and `theta_xp`
+        real(qp) :: angle_hint = 0.0_qp
     end type arch_setup
 
     !> The endpoint of a two-point problem and the unknown used.
@@ -809,7 +812,7 @@ contains
         above%weight_below = 0.0_qp
         call arch_panels(model, below, panels_below, n_below)
         call arch_panels(model, above, panels_above, n_above)
-        use_below = n_below <= n_above
+        use_below = n_below <= n_above .and. .not. above_first(a, whole(1))
         if (a%weight_below == 2.0_qp) then
             w_sign = merge(1.0_qp, 2.0_qp, use_below)
             p_sign = merge(1.0_qp, -1.0_qp, use_below)
@@ -854,6 +857,17 @@ contains
             end if
         end subroutine part_sums
     end subroutine table_sums
+
+    !> Whether the first half-arch (weights 0, 1) must be int_lambda_r^Lambda, W -
+    !! int_0^lambda_r being bound to fail its check in `table_sums` and `theta_xp`
+    !! (int_0^lambda_r <= W/2 and delta_r >= Lambda/2): the endpoint nearer the start,
+    !! or its Theta (the hint, psi to within the early phase's rounding) below 0.45 W.
+    pure logical function above_first(a, whole_angle)
+        type(arch_setup), intent(in) :: a
+        real(qp), intent(in) :: whole_angle  !! W, Theta of the whole half-arch
+        above_first = a%weight_below == 0.0_qp .and. (a%delta_r < 0.5_qp*a%big_lambda .or. &
+            (a%angle_hint > 0.0_qp .and. a%angle_hint < 0.45_qp*whole_angle))
+    end function above_first
 
     !> Bound on a panel's share of the sums so far: its length in lambda times the
     !! integrands at the nearest node of the previous panel (they decay away from the
@@ -1154,6 +1168,7 @@ contains
         else
             a = setup_arch_log(model, -x, prob%rho, prob%delta_rho, prob%second)
         end if
+        if (.not. prob%second) a%angle_hint = prob%psi
     end function setup_at
 
     !> The apse data `theta64` needs at the unknown x: for laws with hardware-precision
@@ -1267,7 +1282,7 @@ contains
             above%weight_below = 0.0_qp
             call arch_panels(model, below, panels, n_below)
             call arch_panels(model, above, panels, n_above)
-            use_below = n_below <= n_above
+            use_below = n_below <= n_above .and. .not. above_first(a, real(whole(1), qp))
             if (a%weight_below == 2.0_qp) then
                 w_sign = merge(1.0_xp, 2.0_xp, use_below)
                 p_sign = merge(1.0_xp, -1.0_xp, use_below)
@@ -1411,6 +1426,7 @@ contains
         a%delta_r = prob%delta_rho
         a%weight_below = merge(2.0_qp, 0.0_qp, prob%second)
         a%weight_above = 1.0_qp
+        if (.not. prob%second) a%angle_hint = prob%psi
         a%cx = model%law%apse_constants_xp(big_lambda)
     end subroutine setup_xp
 
