@@ -467,14 +467,14 @@ contains
             b = a%big_lambda*b/(b + c)
             c = a%big_lambda - b
             call add_split(panels, count, kind_apse_root, 0.0_qp, 1.0_qp, b, &
-                           sqrt(a%lambda_r/b), a)
+                           split_root(a%lambda_r/b), a)
             call add_split(panels, count, kind_start_root, 0.0_qp, 1.0_qp, c, &
-                           sqrt(a%delta_r/c), a)
+                           split_root(a%delta_r/c), a)
         else
             meet = max(b, min(a%big_lambda - c, a%big_lambda*b/(b + c)))
             ! apse side: lambda = b s^2 on [0, b], then [b, 4b], [4b, 16b], ... to meet
             call add_split(panels, count, kind_apse_root, 0.0_qp, 1.0_qp, b, &
-                           sqrt(a%lambda_r/b), a)
+                           split_root(a%lambda_r/b), a)
             lo = b
             ! where the integrated region starts (the apse unless its weight is 0)
             origin = merge(0.0_qp, a%lambda_r, a%weight_below > 0.0_qp)
@@ -493,7 +493,7 @@ contains
             n_start = 0
             if (decay_rate*(meet - origin) > 300.0_qp) return
             call add_split(start_side, n_start, kind_start_root, 0.0_qp, 1.0_qp, c, &
-                           sqrt(a%delta_r/c), a)
+                           split_root(a%delta_r/c), a)
             lo = c
             do while (lo < a%big_lambda - meet)
                 hi = min(4.0_qp*lo, lo + 4.0_qp*model%sigma_start, a%big_lambda - meet)
@@ -510,6 +510,22 @@ contains
             end do
         end if
     end subroutine arch_panels
+
+    !> sqrt(z) for the root panels' splits, within an ulp: the hardware kind's square root
+    !! and one correction (z - s^2)/(2 s) in it (libquadmath's sqrtq costs about ten
+    !! binary128 multiplications); sqrt itself where that kind has no 64-bit significand.
+    elemental function split_root(z) result(s)
+        real(qp), intent(in) :: z
+        real(qp) :: s
+        real(xp) :: s0
+        if (precision(1.0_xp) < 18 .or. .not. (z > 1.0e-4000_qp .and. z < 1.0e4000_qp)) then
+            s = sqrt(z)
+            return
+        end if
+        s0 = sqrt(real(z, xp))
+        s = real(s0, qp)
+        s = s + real(real(z - s*s, xp)/(2.0_xp*s0), qp)
+    end function split_root
 
     !> Add the panel [lo, hi] of `kind`, split at `split` (in the panel's variable) into
     !! the parts below and above the endpoint, with their weights; zero weights dropped.
