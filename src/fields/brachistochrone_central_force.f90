@@ -1508,8 +1508,10 @@ contains
         do iteration = 1, 80
             call residual_xp(model, prob, xk, rough, fk, dk)
             steps = steps + 1
+            ! |Upsilon''/Upsilon'| = |f''/f' + f'| in the logarithmic forms (1, 2)
             if (d_prev /= 0.0_xp .and. abs(xk - x_prev) > 1.0e-7_xp*floor) &
-                curvature = max(curvature, real(abs((dk - d_prev)/((xk - x_prev)*dk)), qp))
+                curvature = max(curvature, real(abs((dk - d_prev)/((xk - x_prev)*dk) + &
+                                                    merge(0.0_xp, dk, prob%form == 0)), qp))
             noise = residual_noise(prob, fk, rough)
             if ((abs(fk) <= noise .and. noise < 1.0e-3_xp) .or. &
                 (rough .and. iteration > 10)) then
@@ -1906,11 +1908,6 @@ contains
             slope = slope/real(x, real64)
             lo = exp(lo)
             hi = half
-            ! Upsilon's curvature in y, |Upsilon''/(2 Upsilon')| <= |f'|/2 + |f''/(2 f')|
-            ! (the forms 1, 2: Upsilon = psi e^f, limit - (limit - psi) e^f), for the
-            ! certified step in y (`final_step`)
-            if (hardware .and. curvature > 0.0_qp) &
-                curvature = curvature + 0.5_qp*abs(slope_q)
         end if
         if (hardware) then
             call final_steps(self, prob, x, lo, hi, curvature, solution, done, slope_q)
