@@ -797,11 +797,15 @@ contains
     !! whichever has fewer panels (the subtraction of the first half-arch only if
     !! int_0^lambda_r <= W/2: at most a bit lost). magnitude: the sums of the slopes'
     !! terms' sizes (for the error bounds of `arch_values`).
-    pure subroutine table_sums(model, a, sums, slopes, magnitude)
+    pure subroutine table_sums(model, a, sums, slopes, magnitude, radial)
         type(central_force_model), intent(in) :: model
         type(arch_setup), intent(in) :: a
         real(qp), intent(out) :: sums(3)
         real(xp), intent(out), optional :: slopes(2), magnitude(2)
+        !> 1 - r and t0(r), which s and t of a first half-arch exceed: the S and T
+        !! corrections may lose more than a bit in W - int_0^lambda_r where R times
+        !! W + int_0^lambda_r is below half of them
+        real(qp), intent(in), optional :: radial(2)
         type(arch_setup) :: below, above
         type(panel) :: panels_below(max_panels), panels_above(max_panels)
         real(qp) :: whole(5), part(3), w_sign, p_sign
@@ -845,8 +849,8 @@ contains
             ! W - int_0^lambda_r: at most a bit lost, and the endpoint nearer the apse
             ! (delta_r >= Lambda/2: 1 - r >= (1 - R)/2, t0(r) >= t0(R)/2, the sizes the
             ! tables are checked against)
-            if (.not. (all(part <= 0.5_qp*whole(1:3)) .and. &
-                       a%delta_r >= 0.5_qp*a%big_lambda)) then
+            if (.not. (all(part <= 0.5_qp*whole(1:3) .or. [.false., small_next_to(radial)]) &
+                       .and. a%delta_r >= 0.5_qp*a%big_lambda)) then
                 w_sign = 0.0_qp
                 p_sign = 1.0_qp
                 call part_sums(above, panels_above, n_above, part, part_slopes)
@@ -858,6 +862,13 @@ contains
             magnitude = abs(real(w_sign*whole(4:5), xp)) + abs(part_slopes)
         end if
     contains
+        !> R (W + part) below half of 1 - r and t0(r) (false without them).
+        pure function small_next_to(sizes) result(small)
+            real(qp), intent(in), optional :: sizes(2)
+            logical :: small(2)
+            small = .false.
+            if (present(sizes)) small = a%big_r*(whole(2:3) + part(2:3)) <= 0.5_qp*sizes
+        end function small_next_to
         pure subroutine part_sums(b, pans, n_pans, part, part_slopes)
             type(arch_setup), intent(in) :: b
             type(panel), intent(in) :: pans(max_panels)
@@ -1061,7 +1072,7 @@ contains
         real(xp) :: integral_slopes(2), g, omq, log_slope, root, h, jump, big_r, error
         real(xp) :: magnitude(2)
         if (present(slopes)) then
-            call table_sums(model, a, sums, integral_slopes, magnitude)
+            call table_sums(model, a, sums, integral_slopes, magnitude, [one_minus_r, fall_r])
             ! the endpoint lambda_r = Lambda - delta_r moves with Lambda: the integrands
             ! there times the jump of the weights (g = 0 at the start, delta_r = 0)
             g = 0.0_xp
@@ -1086,7 +1097,7 @@ contains
             slopes(3) = error*(magnitude(1) + abs(g))
             slopes(4) = error*big_r*(magnitude(2) + abs(h) + real(sums(2), xp))
         else
-            call table_sums(model, a, sums)
+            call table_sums(model, a, sums, radial=[one_minus_r, fall_r])
         end if
         if (second) then
             ! 2 t0(R) - t0(r) = t0(r) + 2 (t0(R) - t0(r))
