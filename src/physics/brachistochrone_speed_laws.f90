@@ -736,12 +736,15 @@ contains
         class(power_law), intent(in) :: self
         real(qp), intent(in) :: c(8)
         real(real64), intent(in) :: lambda, delta, shift
-        real(real64) :: g, a, e2, e_big
+        real(real64) :: g, a, e2, e_big, om2, e_lambda
         a = real(c(3), real64)
         e_big = real(c(2), real64)
         e2 = exp(-2.0_real64*lambda)
-        g = sqrt((-expm1_64(-a*delta))/(-expm1_64(-2.0_real64*lambda)*e_big &
-                                         + e2*(-expm1_64(-a*lambda)))) &
+        om2 = -expm1_64(-2.0_real64*lambda)
+        ! n = 3: E(lambda) = 1 - exp(-2 lambda)
+        e_lambda = om2
+        if (a /= 2.0_real64) e_lambda = -expm1_64(-a*lambda)
+        g = sqrt((-expm1_64(-a*delta))/(om2*e_big + e2*e_lambda)) &
             *exp(shift - 0.5_real64*(a + 2.0_real64)*lambda)
     end function power_theta_ratio64
 
@@ -929,8 +932,21 @@ contains
         logical, intent(in) :: rough
         real(xp), intent(out) :: g, one_minus_q, log_slope
         real(xp) :: e2, om2, ea, e_lambda, ead, e_delta
-        call exp_and_decay_xp(2.0_xp*lambda, e2, om2, rough)
-        call exp_and_decay_xp(c(3)*lambda, ea, e_lambda, rough)
+        if (c(3) == 1.0_xp) then
+            ! n = 2: exp(-2 lambda) and its decay from exp(-lambda)'s
+            call exp_and_decay_xp(lambda, ea, e_lambda, rough)
+            e2 = ea*ea
+            om2 = e_lambda*(1.0_xp + ea)
+        else
+            call exp_and_decay_xp(2.0_xp*lambda, e2, om2, rough)
+            if (c(3) == 2.0_xp) then
+                ! n = 3: exp(-a lambda) = exp(-2 lambda)
+                ea = e2
+                e_lambda = om2
+            else
+                call exp_and_decay_xp(c(3)*lambda, ea, e_lambda, rough)
+            end if
+        end if
         call exp_and_decay_xp(c(3)*delta, ead, e_delta, rough)
         one_minus_q = om2 + e2*e_lambda/c(2)
         g = sqrt(e_delta/(one_minus_q*c(2)))*scaled_exp(shift - 0.5_xp*(c(3) + 2.0_xp)*lambda, &
