@@ -69,7 +69,8 @@ module brachistochrone_central_force
     use brachistochrone_fast_exp, only: fast_exp
     use brachistochrone_quadrature, only: gauss_legendre_rule, gauss_legendre
     use brachistochrone_speed_laws, only: speed_law
-    use brachistochrone_chebyshev, only: chebyshev_table, chebyshev_points, chebyshev_fit
+    use brachistochrone_chebyshev, only: chebyshev_table, chebyshev_points, chebyshev_fit, &
+                                         chebyshev_table_xp, hardware_copy
     use brachistochrone_solution, only: endpoint_solution, endpoint_status, region_inside
     use brachistochrone_arches, only: arch_first, arch_second, arch_complete, arch_radial, &
                                       arch_inaccessible
@@ -101,6 +102,10 @@ module brachistochrone_central_force
     !! where the integrals are not analytic), table_points Chebyshev points each.
     real(qp), parameter :: table_low = 0.02_qp, table_high = 6.9_qp
     integer, parameter :: table_pieces = 12, table_points = 33
+    !> The far tables beyond them: Lambda in [table_high, far_high] (R from 1e-3 down to
+    !! about 2e-35), far_pieces equal pieces in z = log Lambda (`build_far_tables`).
+    real(qp), parameter :: far_high = 80.0_qp
+    integer, parameter :: far_pieces = 5
 
     !> One Gauss-Legendre rule on [0, 1].
     type :: gauss_nodes
@@ -128,6 +133,11 @@ module brachistochrone_central_force
         !! (`whole_value`)
         real(xp), allocatable :: whole_tail_xp(:, :, :)
         integer :: whole_split(table_pieces, 3) = table_points
+        !> the same integrals beyond the tables (Lambda in [table_high, far_high]), the
+        !! pieces that passed their check, Theta's and its slope's in hardware precision
+        type(chebyshev_table) :: far(5)
+        logical :: far_ok(far_pieces) = .false.
+        type(chebyshev_table_xp) :: far_xp(2)
     contains
         procedure :: half_arch => general_half_arch    !! theta, s, t at r (eqs. 27-41)
         procedure :: apse_angle => general_apse_angle  !! Theta(R,R)
@@ -198,6 +208,7 @@ contains
             if (.not. tables) return
         end if
         call build_whole_tables(model)
+        call build_far_tables(model)
     end function new_central_force_model
 
     !> The apse data of the whole half-arch (weights 1) at Lambda = -log R.
@@ -288,6 +299,10 @@ contains
         integer :: piece, m, j
         values = 0.0_xp
         found = .false.
+        if (big_lambda > real(table_high, xp)) then
+            call far_lookup_xp(model, big_lambda, values, found)
+            return
+        end if
         if (.not. (big_lambda >= real(table_low, xp) .and. &
                    big_lambda <= real(table_high, xp))) return
         position = (log(big_lambda) - log(real(table_low, xp)))/ &
@@ -318,6 +333,10 @@ contains
         integer :: piece, m
         values = 0.0_qp
         found = .false.
+        if (big_lambda > table_high) then
+            call far_lookup(model, big_lambda, values, found, wanted)
+            return
+        end if
         if (.not. (big_lambda >= table_low .and. big_lambda <= table_high)) return
         z = log(big_lambda)
         piece = min(table_pieces, max(1, int((z - log(table_low))/(log(table_high) - &
@@ -390,6 +409,103 @@ contains
         end do
         end associate
     end subroutine whole_value
+
+    !> Tabulate the whole-half-arch integrals beyond the tables (Lambda from table_high
+    !! to far_high: R-bar far below 1e-3, the logarithmic law next to its sector's edge),
+    !! on far_pieces pieces in z = log Lambda, each checked at two points against the
+    !! quadrature to the tolerances of `build_whole_tables` (every Theta, S, T to 8
+    !! roundings of Theta and of what the S and T corrections are added to, the slopes
+    !! to 4 roundings of the hardware kind); unchecked pieces are not used. Not built
+    !! where Theta's slope falls by more than 1e3 from Lambda = table_high to twice that
+    !! (power laws: like R^((n+1)/2), which the pieces do not resolve; the logarithmic
+    !! law: like 1/Lambda^2).
+    subroutine build_far_tables(model)
+        type(central_force_model), intent(inout) :: model
+        real(qp) :: points(table_points, far_pieces), values(table_points, far_pieces, 5)
+        real(qp) :: direct(5), table(5), sizes(5), z, width, lower, upper, big_r
+        real(qp), parameter :: slope_noise = real(epsilon(1.0_xp), qp)
+        integer :: k, piece, m, side
+        direct = whole_direct(model, table_high)
+        table = whole_direct(model, 2.0_qp*table_high)
+        if (.not. abs(table(4)) >= 1.0e-3_qp*abs(direct(4))) return
+        lower = log(table_high)
+        upper = log(far_high)
+        points = chebyshev_points(lower, upper, far_pieces, table_points)
+        do piece = 1, far_pieces
+            do k = 1, table_points
+                values(k, piece, :) = whole_direct(model, exp(points(k, piece)))
+            end do
+        end do
+        do m = 1, 5
+            model%far(m) = chebyshev_fit(lower, upper, values(:, :, m), &
+                                         merge(0.5_qp*eps_qp, slope_noise, m <= 3))
+        end do
+        model%far_xp = [hardware_copy(model%far(1)), hardware_copy(model%far(4))]
+        width = (upper - lower)/real(far_pieces, qp)
+        do piece = 1, far_pieces
+            model%far_ok(piece) = .true.
+            do side = 1, 2
+                z = lower + width*(real(piece - 1, qp) + merge(0.3_qp, 0.71_qp, side == 1))
+                direct = whole_direct(model, exp(z))
+                do m = 1, 5
+                    call model%far(m)%evaluate(z, table(m))
+                end do
+                big_r = exp(-exp(z))
+                sizes = [direct(1), max(direct(2), -expm1_qp(-exp(z))/big_r), &
+                         max(direct(3), fall_piece(model, 0.0_qp, exp(z))/big_r), &
+                         abs(direct(4)), abs(direct(5)) + direct(2)]
+                if (.not. (all(abs(table(1:3) - direct(1:3)) <= 8.0_qp*eps_qp*sizes(1:3)) &
+                           .and. all(abs(table(4:5) - direct(4:5)) <= &
+                                     4.0_qp*slope_noise*sizes(4:5)))) &
+                    model%far_ok(piece) = .false.
+            end do
+        end do
+    end subroutine build_far_tables
+
+    !> The piece of the far tables holding z = log Lambda, if it passed its check.
+    pure function far_piece(model, z) result(piece)
+        type(central_force_model), intent(in) :: model
+        real(qp), intent(in) :: z
+        integer :: piece
+        piece = 0
+        if (.not. (z >= log(table_high) .and. z <= log(far_high))) return
+        piece = min(far_pieces, max(1, int((z - log(table_high))/(log(far_high) - &
+                    log(table_high))*real(far_pieces, qp)) + 1))
+        if (.not. model%far_ok(piece)) piece = 0
+    end function far_piece
+
+    !> `whole_lookup` beyond the tables (the far tables).
+    pure subroutine far_lookup(model, big_lambda, values, found, wanted)
+        type(central_force_model), intent(in) :: model
+        real(qp), intent(in) :: big_lambda
+        real(qp), intent(out) :: values(5)
+        logical, intent(out) :: found
+        integer, intent(in) :: wanted
+        real(qp) :: z
+        integer :: m
+        values = 0.0_qp
+        z = log(big_lambda)
+        found = far_piece(model, z) > 0
+        if (.not. found) return
+        do m = 1, wanted
+            call model%far(m)%evaluate(z, values(m))
+        end do
+    end subroutine far_lookup
+
+    !> `whole_lookup_xp` beyond the tables (the far tables' hardware copies).
+    pure subroutine far_lookup_xp(model, big_lambda, values, found)
+        type(central_force_model), intent(in) :: model
+        real(xp), intent(in) :: big_lambda
+        real(xp), intent(out) :: values(2)
+        logical, intent(out) :: found
+        integer :: m
+        values = 0.0_xp
+        found = far_piece(model, real(log(big_lambda), qp)) > 0
+        if (.not. found) return
+        do m = 1, 2
+            call model%far_xp(m)%evaluate(log(big_lambda), values(m))
+        end do
+    end subroutine far_lookup_xp
 
     !> The apse data for R (with 1 - R exact) and the endpoint r = R + d.
     pure function setup_arch(model, big_r, one_minus_big_r, d, delta_r, second, whole) &
