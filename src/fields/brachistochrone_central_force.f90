@@ -38,7 +38,10 @@
 !! agrees (`build_whole_tables`). A full evaluation then integrates only the panels
 !! between the endpoint and the nearer end (`table_sums`): the second half-arch is
 !! W + int_0^lambda_r or 2W - int_lambda_r^Lambda, the first int_lambda_r^Lambda or
-!! W - int_0^lambda_r (if that loses at most a bit). Outside the tables: all panels.
+!! W - int_0^lambda_r (if that loses at most a bit). Beyond them, Lambda up to 80 (R down
+!! to 2e-35), far tables built and checked the same way (`build_far_tables`; they pass
+!! for the logarithmic law, whose integrals vary like 1/Lambda there). Elsewhere: all
+!! panels.
 !!
 !! Two-point problem: the root R-bar of Upsilon(R) = psi, in the unknown u = sqrt(rho - R)
 !! for R in [rho/2, rho] (R-bar and rho - R-bar exact next to the apse) or y = log R
@@ -417,8 +420,8 @@ contains
     !! roundings of Theta and of what the S and T corrections are added to, the slopes
     !! to 4 roundings of the hardware kind); unchecked pieces are not used. Not built
     !! where Theta's slope falls by more than 1e3 from Lambda = table_high to twice that
-    !! (power laws: like R^((n+1)/2), which the pieces do not resolve; the logarithmic
-    !! law: like 1/Lambda^2).
+    !! (power laws n >= 3, whose pieces there all fail the check; the logarithmic law's
+    !! falls like 1/Lambda^2: all its pieces pass, n = 1.5 three, n = 2 one).
     subroutine build_far_tables(model)
         type(central_force_model), intent(inout) :: model
         real(qp) :: points(table_points, far_pieces), values(table_points, far_pieces, 5)
