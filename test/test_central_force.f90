@@ -404,7 +404,7 @@ contains
         call check(worst_solve >= 32.5_qp, 'two-point R (+1.5), s, t with tables = all panels')
     end subroutine whole_tables
 
-    !> The far tables (Lambda from 6.9 to 80, R-bar from 1e-3 down to 2e-35) of the
+    !> The far tables (Lambda from 11 to 80, R-bar from 1.7e-5 down to 2e-35) of the
     !! logarithmic law against all panels: theta, s, t on both half-arches at apse radii
     !! 1e-4 .. 1e-34, and R, s, t of the two-point problem next to the sector's edge
     !! (psi/pi = 0.95 .. 0.993: R-bar about 1e-5 .. 1e-31; R-bar's conditioning there,
@@ -498,14 +498,14 @@ contains
         real(qp), parameter :: radii(4) = [1.0e-30_qp, 1.0e-6_qp, 0.5_qp, 0.99_qp]
         real(qp), parameter :: offsets(6) = [-30.0_qp, -3.0_qp, -1.0_qp, 1.0_qp, 3.0_qp, &
                                              30.0_qp]
-        real(qp), parameter :: exponents(3) = [1.5_qp, 6.0_qp, 10.0_qp]
+        real(qp), parameter :: exponents(4) = [1.5_qp, 6.0_qp, 10.0_qp, 32.0_qp]
         real(qp) :: psi, apse, worst, digits(3)
         integer :: law, i, k, status, most_steps, failed
         call section('central force: B within 1e-16 of its apse angle')
         worst = 99.0_qp
         most_steps = 0
         failed = 0
-        do law = 1, 3
+        do law = 1, 4
             hardware = new_central_force_model(power_law(n=exponents(law)))
             secant = new_central_force_model(secant_power_law(n=exponents(law)))
             do i = 1, size(radii)
@@ -530,7 +530,8 @@ contains
                 end do
             end do
         end do
-        write (output_unit, '(a,f6.2,a,i0,a,i0)') '   n = 1.5, 6, 10, 4 radii, 6 offsets: '// &
+        write (output_unit, '(a,f6.2,a,i0,a,i0)') '   n = 1.5, 6, 10, 32, 4 radii, '// &
+            '6 offsets: '// &
             'fewest digits (gap credited) ', worst, ', most evaluations ', most_steps, &
             ', unsolved ', failed
         call check(failed == 0 .and. worst >= 32.0_qp, &
@@ -552,7 +553,7 @@ contains
                                                0.999_qp, 1.0_qp - 1.0e-9_qp]
         real(qp) :: angle, length, time, residual
         integer :: status
-        real(qp), parameter :: exponents(3) = [1.5_qp, 3.0_qp, 10.0_qp]
+        real(qp), parameter :: exponents(4) = [1.5_qp, 3.0_qp, 10.0_qp, 32.0_qp]
         real(qp) :: worst, psi, credit(3), digits(3), worst_solution
         integer :: law, i, j, failed
         call section('central force: hardware early phase = double phase and secant steps')
@@ -560,7 +561,7 @@ contains
         worst_solution = 99.0_qp
         residual = 0.0_qp
         failed = 0
-        do law = 1, 3
+        do law = 1, 4
             hardware = new_central_force_model(power_law(n=exponents(law)))
             secant = new_central_force_model(secant_power_law(n=exponents(law)))
             do i = 1, size(radii)
@@ -595,7 +596,7 @@ contains
                 end do
             end do
         end do
-        write (output_unit, '(a,f6.2,a,i0)') '   n = 1.5, 3, 10 on 30 endpoints each: '// &
+        write (output_unit, '(a,f6.2,a,i0)') '   n = 1.5, 3, 10, 32 on 30 endpoints each: '// &
             'fewest digits (credited) ', worst, ', unsolved ', failed
         write (output_unit, '(a,f6.2,a,f6.2)') '   at the edge: worst |Upsilon(R) - psi| '// &
             'in eps psi ', residual, ', fewest digits of s, t = S, T(R) ', worst_solution
