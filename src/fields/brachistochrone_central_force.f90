@@ -127,6 +127,12 @@ module brachistochrone_central_force
         type(gauss_nodes) :: gauss(max_nodes/2)   !! rules with 2j nodes
         real(qp) :: sigma_apse = 1.0_qp           !! singularity distance, apse side
         real(qp) :: sigma_start = 1.0_qp          !! singularity distance, start side
+        !> the whole-half-arch integrals beyond the tables below (Lambda in [table_high,
+        !! far_high]), the pieces that passed their check, Theta's and its slope's in
+        !! hardware precision (`build_far_tables`)
+        type(chebyshev_table) :: far(5)
+        logical :: far_ok(far_pieces) = .false.
+        type(chebyshev_table_xp) :: far_xp(2)
         !> the whole-half-arch integrals (weights 1) in z = log Lambda: Theta, S and T
         !! corrections/R, and their slopes at fixed lambda (as `arch_sums`)
         type(chebyshev_table) :: whole(5)
@@ -139,11 +145,6 @@ module brachistochrone_central_force
         !! (`whole_value`)
         real(xp), allocatable :: whole_tail_xp(:, :, :)
         integer :: whole_split(table_pieces, 3) = table_points
-        !> the same integrals beyond the tables (Lambda in [table_high, far_high]), the
-        !! pieces that passed their check, Theta's and its slope's in hardware precision
-        type(chebyshev_table) :: far(5)
-        logical :: far_ok(far_pieces) = .false.
-        type(chebyshev_table_xp) :: far_xp(2)
     contains
         procedure :: half_arch => general_half_arch    !! theta, s, t at r (eqs. 27-41)
         procedure :: apse_angle => general_apse_angle  !! Theta(R,R)
