@@ -31,14 +31,17 @@
 !! quadrature of x/v otherwise (`fall_piece`).
 !!
 !! Whole-half-arch tables (as on the fast path): the integrals over [0, Lambda] with
-!! weight 1 and their slopes, tabulated once per model on R from about 0.98 down to 1e-3
-!! (Lambda in [0.02, 6.9]) as piecewise Chebyshev series in z = log Lambda (equal pieces
+!! weight 1 and their slopes, tabulated once per model on R from about 0.98 down to 1.7e-5
+!! (Lambda in [0.02, 11]) as piecewise Chebyshev series in z = log Lambda (equal pieces
 !! in z are graded toward R = 1, where the integrals are not analytic), each piece
 !! checked at build time against the quadrature between its points and used only if it
 !! agrees (`build_whole_tables`). A full evaluation then integrates only the panels
 !! between the endpoint and the nearer end (`table_sums`): the second half-arch is
 !! W + int_0^lambda_r or 2W - int_lambda_r^Lambda, the first int_lambda_r^Lambda or
-!! W - int_0^lambda_r (if that loses at most a bit). Outside the tables: all panels.
+!! W - int_0^lambda_r (if that loses at most a bit). Beyond them, Lambda up to 80 (R down
+!! to 2e-35), far tables built and checked the same way (`build_far_tables`; they pass
+!! for the logarithmic law, whose integrals vary like 1/Lambda there). Elsewhere: all
+!! panels.
 !!
 !! Two-point problem: the root R-bar of Upsilon(R) = psi, in the unknown u = sqrt(rho - R)
 !! for R in [rho/2, rho] (R-bar and rho - R-bar exact next to the apse) or y = log R
@@ -69,7 +72,8 @@ module brachistochrone_central_force
     use brachistochrone_fast_exp, only: fast_exp
     use brachistochrone_quadrature, only: gauss_legendre_rule, gauss_legendre
     use brachistochrone_speed_laws, only: speed_law
-    use brachistochrone_chebyshev, only: chebyshev_table, chebyshev_points, chebyshev_fit
+    use brachistochrone_chebyshev, only: chebyshev_table, chebyshev_points, chebyshev_fit, &
+                                         chebyshev_table_xp, hardware_copy
     use brachistochrone_solution, only: endpoint_solution, endpoint_status, region_inside
     use brachistochrone_arches, only: arch_first, arch_second, arch_complete, arch_radial, &
                                       arch_inaccessible
@@ -97,10 +101,17 @@ module brachistochrone_central_force
     !> Lowest log R searched (R above the smallest normal binary128 number).
     real(qp), parameter :: lowest_log_r = -11355.0_qp
     !> The whole-half-arch tables: Lambda = -log R in [table_low, table_high] (R from
-    !! about 0.98 down to 1e-3), in z = log Lambda on equal pieces (graded toward R = 1,
+    !! about 0.98 down to 1.7e-5), in z = log Lambda on equal pieces (graded toward R = 1,
     !! where the integrals are not analytic), table_points Chebyshev points each.
-    real(qp), parameter :: table_low = 0.02_qp, table_high = 6.9_qp
-    integer, parameter :: table_pieces = 12, table_points = 33
+    real(qp), parameter :: table_low = 0.02_qp, table_high = 11.0_qp
+    integer, parameter :: table_pieces = 13, table_points = 33
+    !> Laws whose integrands decay faster than exp(-steep_decay lambda) from the apse
+    !! (power laws n > 2 steep_decay - 1) take the early phase in u in logarithmic forms
+    real(qp), parameter :: steep_decay = 6.0_qp
+    !> The far tables beyond them: Lambda in [table_high, far_high] (R from 1.7e-5 down
+    !! to about 2e-35), far_pieces equal pieces in z = log Lambda (`build_far_tables`).
+    real(qp), parameter :: far_high = 80.0_qp
+    integer, parameter :: far_pieces = 4
 
     !> One Gauss-Legendre rule on [0, 1].
     type :: gauss_nodes
@@ -116,6 +127,12 @@ module brachistochrone_central_force
         type(gauss_nodes) :: gauss(max_nodes/2)   !! rules with 2j nodes
         real(qp) :: sigma_apse = 1.0_qp           !! singularity distance, apse side
         real(qp) :: sigma_start = 1.0_qp          !! singularity distance, start side
+        !> the whole-half-arch integrals beyond the tables below (Lambda in [table_high,
+        !! far_high]), the pieces that passed their check, Theta's and its slope's in
+        !! hardware precision (`build_far_tables`)
+        type(chebyshev_table) :: far(5)
+        logical :: far_ok(far_pieces) = .false.
+        type(chebyshev_table_xp) :: far_xp(2)
         !> the whole-half-arch integrals (weights 1) in z = log Lambda: Theta, S and T
         !! corrections/R, and their slopes at fixed lambda (as `arch_sums`)
         type(chebyshev_table) :: whole(5)
@@ -135,11 +152,13 @@ module brachistochrone_central_force
         procedure :: solve => general_solve            !! the two-point problem
     end type central_force_model
 
-    !> A panel in its own variable, with its weight and Bernstein parameter.
+    !> A panel in its own variable, with its weight and Bernstein parameter. (No default
+    !! initialization: the arrays of max_panels panels in the engine's routines would be
+    !! initialized on every call.)
     type :: panel
-        integer :: kind = kind_apse
-        real(qp) :: lo = 0.0_qp, hi = 0.0_qp, scale = 0.0_qp, weight = 1.0_qp
-        real(real64) :: log_rho = 1.0_real64
+        integer :: kind
+        real(qp) :: lo, hi, scale, weight
+        real(real64) :: log_rho
     end type panel
 
     !> One apse R as the integrals need it: R, 1 - R, Lambda = -log R (all exact), the
@@ -151,6 +170,9 @@ module brachistochrone_central_force
         real(qp) :: lambda_r = 0.0_qp, delta_r = 0.0_qp
         real(qp) :: weight_below = 0.0_qp, weight_above = 1.0_qp
         real(xp) :: cx(4) = 0.0_xp    !! the law's constants in hardware precision
+        !> Theta of a first half-arch where known beforehand (psi: the two-point problem's
+        !! target), else 0: picks the panels of the early phase (`theta_xp`)
+        real(qp) :: angle_hint = 0.0_qp
     end type arch_setup
 
     !> The endpoint of a two-point problem and the unknown used.
@@ -193,6 +215,7 @@ contains
             if (.not. tables) return
         end if
         call build_whole_tables(model)
+        call build_far_tables(model)
     end function new_central_force_model
 
     !> The apse data of the whole half-arch (weights 1) at Lambda = -log R.
@@ -207,14 +230,16 @@ contains
     end function whole_setup
 
     !> The whole-half-arch integrals and their slopes (`arch_sums`, weights 1) at
-    !! Lambda, as five numbers.
+    !! Lambda, as five numbers; every panel on the full rules (`every_panel`: the
+    !! slopes' integrands grow toward the start for steep laws, where Theta's are below
+    !! `negligible`).
     pure function whole_direct(model, big_lambda) result(values)
         type(central_force_model), intent(in) :: model
         real(qp), intent(in) :: big_lambda
         real(qp) :: values(5)
         real(xp) :: slopes(2)
         call arch_sums(model, whole_setup(model, big_lambda), fine_digits, .true., &
-                       values(1:3), slopes)
+                       values(1:3), slopes, every_panel=.true.)
         values(4:5) = real(slopes, qp)
     end function whole_direct
 
@@ -231,6 +256,7 @@ contains
         real(qp) :: lower, upper, big_r, sizes(5)
         real(qp), parameter :: slope_noise = real(epsilon(1.0_xp), qp)
         integer :: k, piece, m, side
+        logical :: positive
         lower = log(table_low)
         upper = log(table_high)
         points = chebyshev_points(lower, upper, table_pieces, table_points)
@@ -239,17 +265,26 @@ contains
                 values(k, piece, :) = whole_direct(model, exp(points(k, piece)))
             end do
         end do
-        ! the values carry rounding noise of about eps (the slopes: of the hardware kind)
+        ! the slopes (positive) as their logarithms: for steep laws they fall like
+        ! R^((n+1)/2) across a piece, which a polynomial in the slope itself resolves only
+        ! relative to the piece's largest value
+        positive = all(values(:, :, 4:5) > 0.0_qp)
+        do m = 4, 5
+            values(:, :, m) = log(merge(values(:, :, m), 1.0_qp, positive))
+        end do
+        ! the values carry rounding noise of about eps (the slopes: of the hardware kind,
+        ! absolute in their logarithms)
         do m = 1, 5
             model%whole(m) = chebyshev_fit(lower, upper, values(:, :, m), &
-                                           merge(0.5_qp*eps_qp, slope_noise, m <= 3))
+                                           merge(0.5_qp*eps_qp, 0.1_qp*slope_noise/ &
+                                           max(1.0_qp, maxval(abs(values(:, :, m)))), m <= 3))
         end do
         model%whole_xp = reshape(real([model%whole(1)%power, model%whole(4)%power], xp), &
                                  [table_points, table_pieces, 2])
         call split_whole_tables(model, values(:, :, 1:3))
         width = (upper - lower)/real(table_pieces, qp)
         do piece = 1, table_pieces
-            model%whole_ok(piece) = .true.
+            model%whole_ok(piece) = positive
             do side = 1, 2
                 z = lower + width*(real(piece - 1, qp) + merge(0.3_qp, 0.71_qp, side == 1))
                 direct = whole_direct(model, exp(z))
@@ -283,6 +318,10 @@ contains
         integer :: piece, m, j
         values = 0.0_xp
         found = .false.
+        if (big_lambda > real(table_high, xp)) then
+            call far_lookup_xp(model, big_lambda, values, found)
+            return
+        end if
         if (.not. (big_lambda >= real(table_low, xp) .and. &
                    big_lambda <= real(table_high, xp))) return
         position = (log(big_lambda) - log(real(table_low, xp)))/ &
@@ -297,6 +336,8 @@ contains
                 values(m) = values(m)*t + model%whole_xp(j, piece, m)
             end do
         end do
+        ! the slope's table holds its logarithm
+        values(2) = exp(values(2))
         found = .true.
     end subroutine whole_lookup_xp
 
@@ -313,6 +354,10 @@ contains
         integer :: piece, m
         values = 0.0_qp
         found = .false.
+        if (big_lambda > table_high) then
+            call far_lookup(model, big_lambda, values, found, wanted)
+            return
+        end if
         if (.not. (big_lambda >= table_low .and. big_lambda <= table_high)) return
         z = log(big_lambda)
         piece = min(table_pieces, max(1, int((z - log(table_low))/(log(table_high) - &
@@ -361,10 +406,15 @@ contains
         real(qp), intent(in) :: z
         real(qp), intent(out) :: value
         real(qp) :: width, position, t
-        real(xp) :: t_xp, high
+        real(xp) :: t_xp, high, low
         integer :: piece, j, split, used
         if (m > 3) then
+            ! the slopes' tables hold their logarithms: exp in hardware precision, the
+            ! logarithm's part below the hardware kind's rounding taken as a factor
             call model%whole(m)%evaluate(z, value)
+            high = real(value, xp)
+            low = real(value - real(high, qp), xp)
+            value = real(exp(high)*(1.0_xp + low), qp)
             return
         end if
         associate (table => model%whole(m))
@@ -385,6 +435,103 @@ contains
         end do
         end associate
     end subroutine whole_value
+
+    !> Tabulate the whole-half-arch integrals beyond the tables (Lambda from table_high
+    !! to far_high: R-bar far below 1e-3, the logarithmic law next to its sector's edge),
+    !! on far_pieces pieces in z = log Lambda, each checked at two points against the
+    !! quadrature to the tolerances of `build_whole_tables` (every Theta, S, T to 8
+    !! roundings of Theta and of what the S and T corrections are added to, the slopes
+    !! to 4 roundings of the hardware kind); unchecked pieces are not used. Not built
+    !! where Theta's slope falls by more than 1e3 from Lambda = table_high to twice that
+    !! (power laws n >= 2, whose pieces there all fail the check; the logarithmic law's
+    !! falls like 1/Lambda^2: all its pieces pass; n = 1.5: two of four).
+    subroutine build_far_tables(model)
+        type(central_force_model), intent(inout) :: model
+        real(qp) :: points(table_points, far_pieces), values(table_points, far_pieces, 5)
+        real(qp) :: direct(5), table(5), sizes(5), z, width, lower, upper, big_r
+        real(qp), parameter :: slope_noise = real(epsilon(1.0_xp), qp)
+        integer :: k, piece, m, side
+        direct = whole_direct(model, table_high)
+        table = whole_direct(model, 2.0_qp*table_high)
+        if (.not. abs(table(4)) >= 1.0e-3_qp*abs(direct(4))) return
+        lower = log(table_high)
+        upper = log(far_high)
+        points = chebyshev_points(lower, upper, far_pieces, table_points)
+        do piece = 1, far_pieces
+            do k = 1, table_points
+                values(k, piece, :) = whole_direct(model, exp(points(k, piece)))
+            end do
+        end do
+        do m = 1, 5
+            model%far(m) = chebyshev_fit(lower, upper, values(:, :, m), &
+                                         merge(0.5_qp*eps_qp, slope_noise, m <= 3))
+        end do
+        model%far_xp = [hardware_copy(model%far(1)), hardware_copy(model%far(4))]
+        width = (upper - lower)/real(far_pieces, qp)
+        do piece = 1, far_pieces
+            model%far_ok(piece) = .true.
+            do side = 1, 2
+                z = lower + width*(real(piece - 1, qp) + merge(0.3_qp, 0.71_qp, side == 1))
+                direct = whole_direct(model, exp(z))
+                do m = 1, 5
+                    call model%far(m)%evaluate(z, table(m))
+                end do
+                big_r = exp(-exp(z))
+                sizes = [direct(1), max(direct(2), -expm1_qp(-exp(z))/big_r), &
+                         max(direct(3), fall_piece(model, 0.0_qp, exp(z))/big_r), &
+                         abs(direct(4)), abs(direct(5)) + direct(2)]
+                if (.not. (all(abs(table(1:3) - direct(1:3)) <= 8.0_qp*eps_qp*sizes(1:3)) &
+                           .and. all(abs(table(4:5) - direct(4:5)) <= &
+                                     4.0_qp*slope_noise*sizes(4:5)))) &
+                    model%far_ok(piece) = .false.
+            end do
+        end do
+    end subroutine build_far_tables
+
+    !> The piece of the far tables holding z = log Lambda, if it passed its check.
+    pure function far_piece(model, z) result(piece)
+        type(central_force_model), intent(in) :: model
+        real(qp), intent(in) :: z
+        integer :: piece
+        piece = 0
+        if (.not. (z >= log(table_high) .and. z <= log(far_high))) return
+        piece = min(far_pieces, max(1, int((z - log(table_high))/(log(far_high) - &
+                    log(table_high))*real(far_pieces, qp)) + 1))
+        if (.not. model%far_ok(piece)) piece = 0
+    end function far_piece
+
+    !> `whole_lookup` beyond the tables (the far tables).
+    pure subroutine far_lookup(model, big_lambda, values, found, wanted)
+        type(central_force_model), intent(in) :: model
+        real(qp), intent(in) :: big_lambda
+        real(qp), intent(out) :: values(5)
+        logical, intent(out) :: found
+        integer, intent(in) :: wanted
+        real(qp) :: z
+        integer :: m
+        values = 0.0_qp
+        z = log(big_lambda)
+        found = far_piece(model, z) > 0
+        if (.not. found) return
+        do m = 1, wanted
+            call model%far(m)%evaluate(z, values(m))
+        end do
+    end subroutine far_lookup
+
+    !> `whole_lookup_xp` beyond the tables (the far tables' hardware copies).
+    pure subroutine far_lookup_xp(model, big_lambda, values, found)
+        type(central_force_model), intent(in) :: model
+        real(xp), intent(in) :: big_lambda
+        real(xp), intent(out) :: values(2)
+        logical, intent(out) :: found
+        integer :: m
+        values = 0.0_xp
+        found = far_piece(model, real(log(big_lambda), qp)) > 0
+        if (.not. found) return
+        do m = 1, 2
+            call model%far_xp(m)%evaluate(log(big_lambda), values(m))
+        end do
+    end subroutine far_lookup_xp
 
     !> The apse data for R (with 1 - R exact) and the endpoint r = R + d.
     pure function setup_arch(model, big_r, one_minus_big_r, d, delta_r, second, whole) &
@@ -462,14 +609,14 @@ contains
             b = a%big_lambda*b/(b + c)
             c = a%big_lambda - b
             call add_split(panels, count, kind_apse_root, 0.0_qp, 1.0_qp, b, &
-                           sqrt(a%lambda_r/b), a)
+                           split_root(a%lambda_r/b), a)
             call add_split(panels, count, kind_start_root, 0.0_qp, 1.0_qp, c, &
-                           sqrt(a%delta_r/c), a)
+                           split_root(a%delta_r/c), a)
         else
             meet = max(b, min(a%big_lambda - c, a%big_lambda*b/(b + c)))
             ! apse side: lambda = b s^2 on [0, b], then [b, 4b], [4b, 16b], ... to meet
             call add_split(panels, count, kind_apse_root, 0.0_qp, 1.0_qp, b, &
-                           sqrt(a%lambda_r/b), a)
+                           split_root(a%lambda_r/b), a)
             lo = b
             ! where the integrated region starts (the apse unless its weight is 0)
             origin = merge(0.0_qp, a%lambda_r, a%weight_below > 0.0_qp)
@@ -488,7 +635,7 @@ contains
             n_start = 0
             if (decay_rate*(meet - origin) > 300.0_qp) return
             call add_split(start_side, n_start, kind_start_root, 0.0_qp, 1.0_qp, c, &
-                           sqrt(a%delta_r/c), a)
+                           split_root(a%delta_r/c), a)
             lo = c
             do while (lo < a%big_lambda - meet)
                 hi = min(4.0_qp*lo, lo + 4.0_qp*model%sigma_start, a%big_lambda - meet)
@@ -506,6 +653,22 @@ contains
         end if
     end subroutine arch_panels
 
+    !> sqrt(z) for the root panels' splits, within an ulp: the hardware kind's square root
+    !! and one correction (z - s^2)/(2 s) in it (libquadmath's sqrtq costs about ten
+    !! binary128 multiplications); sqrt itself where that kind has no 64-bit significand.
+    elemental function split_root(z) result(s)
+        real(qp), intent(in) :: z
+        real(qp) :: s
+        real(xp) :: s0
+        if (precision(1.0_xp) < 18 .or. .not. (z > 1.0e-4000_qp .and. z < 1.0e4000_qp)) then
+            s = sqrt(z)
+            return
+        end if
+        s0 = sqrt(real(z, xp))
+        s = real(s0, qp)
+        s = s + real(real(z - s*s, xp)/(2.0_xp*s0), qp)
+    end function split_root
+
     !> Add the panel [lo, hi] of `kind`, split at `split` (in the panel's variable) into
     !! the parts below and above the endpoint, with their weights; zero weights dropped.
     pure subroutine add_split(panels, count, kind, lo, hi, scale, split, a)
@@ -521,15 +684,15 @@ contains
         w_lo = merge(a%weight_above, a%weight_below, reversed)
         w_hi = merge(a%weight_below, a%weight_above, reversed)
         if (split <= lo) then
-            call push(panels, count, panel(kind, lo, hi, scale, w_hi))
+            call push(panels, count, panel(kind, lo, hi, scale, w_hi, 1.0_real64))
         else if (split >= hi) then
-            call push(panels, count, panel(kind, lo, hi, scale, w_lo))
+            call push(panels, count, panel(kind, lo, hi, scale, w_lo, 1.0_real64))
         else if (reversed) then
-            call push(panels, count, panel(kind, split, hi, scale, w_hi))
-            call push(panels, count, panel(kind, lo, split, scale, w_lo))
+            call push(panels, count, panel(kind, split, hi, scale, w_hi, 1.0_real64))
+            call push(panels, count, panel(kind, lo, split, scale, w_lo, 1.0_real64))
         else
-            call push(panels, count, panel(kind, lo, split, scale, w_lo))
-            call push(panels, count, panel(kind, split, hi, scale, w_hi))
+            call push(panels, count, panel(kind, lo, split, scale, w_lo, 1.0_real64))
+            call push(panels, count, panel(kind, split, hi, scale, w_hi, 1.0_real64))
         end if
     end subroutine add_split
 
@@ -685,7 +848,7 @@ contains
     !! e^lambda q'/(2 (1 - q)^(3/2)) (q' = d q/d Lambda, from the law's hardware terms),
     !! summed in hardware precision on the same nodes (want_length_time needed).
     pure subroutine arch_sums(model, a, digits, want_length_time, sums, slopes, given, &
-                              given_count)
+                              given_count, every_panel)
         type(central_force_model), intent(in) :: model
         type(arch_setup), intent(in) :: a
         real(qp), intent(in) :: digits
@@ -695,11 +858,16 @@ contains
         !> `arch_panels(model, a, given, given_count)` where the caller has them
         type(panel), intent(in), optional :: given(max_panels)
         integer, intent(in), optional :: given_count
+        !> no panel skipped and each on the full rules (the tables' build)
+        logical, intent(in), optional :: every_panel
         type(panel) :: panels(max_panels)
         real(qp) :: part(3), last(3), share, v, lambda, delta, jacobian, q, omq, qv, rx
         real(qp) :: inverse_root, common, g(3), root_q, weighted, width
         real(xp) :: part_xp(2), carry(2), carry_all(2), log_slope, g_xp
         integer :: count, p, k, j
+        logical :: all_panels
+        all_panels = .false.
+        if (present(every_panel)) all_panels = every_panel
         if (present(given) .and. present(given_count)) then
             count = given_count
             panels(1:count) = given(1:count)
@@ -713,7 +881,7 @@ contains
         do p = 1, count
             associate (pan => panels(p))
             share = 1.0_qp
-            if (p > 1) then
+            if (p > 1 .and. .not. all_panels) then
                 share = panel_share(pan, last, sums, merge(3, 1, want_length_time))
                 ! skipped, not ended: a sliver next to a split is followed by a full panel
                 if (share < negligible) cycle
@@ -776,14 +944,19 @@ contains
     !! whichever has fewer panels (the subtraction of the first half-arch only if
     !! int_0^lambda_r <= W/2: at most a bit lost). magnitude: the sums of the slopes'
     !! terms' sizes (for the error bounds of `arch_values`).
-    pure subroutine table_sums(model, a, sums, slopes, magnitude)
+    pure subroutine table_sums(model, a, sums, slopes, magnitude, expected, fall_r)
         type(central_force_model), intent(in) :: model
         type(arch_setup), intent(in) :: a
         real(qp), intent(out) :: sums(3)
         real(xp), intent(out), optional :: slopes(2), magnitude(2)
+        !> Theta's value where it is known (the root finder's psi): the first half-arch
+        !! then goes straight to int_lambda_r^Lambda where W - int_0^lambda_r would lose
+        !! more than a bit
+        real(qp), intent(in), optional :: expected
+        real(qp), intent(in), optional :: fall_r  !! t0(r), the fall time to the endpoint
         type(arch_setup) :: below, above
         type(panel) :: panels_below(max_panels), panels_above(max_panels)
-        real(qp) :: whole(5), part(3), w_sign, p_sign
+        real(qp) :: whole(5), part(3), w_sign, p_sign, sizes(3)
         real(xp) :: part_slopes(2)
         integer :: n_below, n_above
         logical :: found, use_below
@@ -808,6 +981,8 @@ contains
         call arch_panels(model, below, panels_below, n_below)
         call arch_panels(model, above, panels_above, n_above)
         use_below = n_below <= n_above
+        if (present(expected) .and. a%weight_below == 0.0_qp) &
+            use_below = use_below .and. expected >= 0.5_qp*whole(1)
         if (a%weight_below == 2.0_qp) then
             w_sign = merge(1.0_qp, 2.0_qp, use_below)
             p_sign = merge(1.0_qp, -1.0_qp, use_below)
@@ -823,8 +998,12 @@ contains
         if (a%weight_below == 0.0_qp .and. use_below) then
             ! W - int_0^lambda_r: at most a bit lost, and the endpoint nearer the apse
             ! (delta_r >= Lambda/2: 1 - r >= (1 - R)/2, t0(r) >= t0(R)/2, the sizes the
-            ! tables are checked against)
-            if (.not. (all(part <= 0.5_qp*whole(1:3)) .and. &
+            ! tables are checked against); the S and T corrections may lose more where
+            ! they are below (1 - R)/R and t0(r)/R: their errors are then within the
+            ! tables' own, of the sizes s and t exceed
+            sizes = 0.0_qp
+            if (present(fall_r)) sizes(2:3) = [a%one_minus_big_r, fall_r]/a%big_r
+            if (.not. (all(part <= 0.5_qp*whole(1:3) .or. whole(1:3) <= sizes) .and. &
                        a%delta_r >= 0.5_qp*a%big_lambda)) then
                 w_sign = 0.0_qp
                 p_sign = 1.0_qp
@@ -852,6 +1031,17 @@ contains
             end if
         end subroutine part_sums
     end subroutine table_sums
+
+    !> Whether the first half-arch (weights 0, 1) must be int_lambda_r^Lambda in the early
+    !! phase, W - int_0^lambda_r being bound to fail its check in `theta_xp`
+    !! (int_0^lambda_r <= W/2 and delta_r >= Lambda/2): the endpoint nearer the start,
+    !! or its Theta (the hint, psi to within the early phase's rounding) below 0.45 W.
+    pure logical function above_first(a, whole_angle)
+        type(arch_setup), intent(in) :: a
+        real(qp), intent(in) :: whole_angle  !! W, Theta of the whole half-arch
+        above_first = a%weight_below == 0.0_qp .and. (a%delta_r < 0.5_qp*a%big_lambda .or. &
+            (a%angle_hint > 0.0_qp .and. a%angle_hint < 0.45_qp*whole_angle))
+    end function above_first
 
     !> Bound on a panel's share of the sums so far: its length in lambda times the
     !! integrands at the nearest node of the previous panel (they decay away from the
@@ -1015,7 +1205,7 @@ contains
     !> Theta, S, T at the endpoint for the apse data `a` (first or second half-arch as
     !! the weights say); d = r - R exact, one_minus_r = 1 - r.
     pure subroutine arch_values(model, a, d, one_minus_r, second, fall_r, angle, length, &
-                                time, slopes)
+                                time, slopes, expected)
         type(central_force_model), intent(in) :: model
         type(arch_setup), intent(in) :: a
         real(qp), intent(in) :: d, one_minus_r
@@ -1025,11 +1215,13 @@ contains
         !> d angle/d Lambda, d length/d Lambda in hardware precision and bounds on their
         !! absolute errors (the law's hardware terms needed)
         real(xp), intent(out), optional :: slopes(4)
+        real(qp), intent(in), optional :: expected  !! the angle where known (`table_sums`)
         real(qp) :: sums(3), fall
+        logical :: found
         real(xp) :: integral_slopes(2), g, omq, log_slope, root, h, jump, big_r, error
         real(xp) :: magnitude(2)
         if (present(slopes)) then
-            call table_sums(model, a, sums, integral_slopes, magnitude)
+            call table_sums(model, a, sums, integral_slopes, magnitude, expected, fall_r)
             ! the endpoint lambda_r = Lambda - delta_r moves with Lambda: the integrands
             ! there times the jump of the weights (g = 0 at the start, delta_r = 0)
             g = 0.0_xp
@@ -1054,11 +1246,17 @@ contains
             slopes(3) = error*(magnitude(1) + abs(g))
             slopes(4) = error*big_r*(magnitude(2) + abs(h) + real(sums(2), xp))
         else
-            call table_sums(model, a, sums)
+            call table_sums(model, a, sums, expected=expected, fall_r=fall_r)
         end if
         if (second) then
-            ! 2 t0(R) - t0(r) = t0(r) + 2 (t0(R) - t0(r))
-            fall = fall_r + 2.0_qp*fall_piece(model, a%delta_r, a%big_lambda)
+            ! 2 t0(R) - t0(r) = t0(r) + 2 (t0(R) - t0(r)); in closed form 2 t0(R) - t0(r)
+            ! (fall_r: t0(r) in that closed form, one evaluation less)
+            call model%law%closed_fall(0.0_qp, a%big_lambda, fall, found)
+            if (found) then
+                fall = 2.0_qp*fall - fall_r
+            else
+                fall = fall_r + 2.0_qp*fall_piece(model, a%delta_r, a%big_lambda)
+            end if
             length = (one_minus_r + 2.0_qp*d) + a%big_r*sums(2)
         else
             fall = fall_r
@@ -1184,8 +1382,13 @@ contains
         limit = real(prob%limit, real64)
         select case (prob%form)
         case (1)
-            ! log(Upsilon/psi) without forming Upsilon or psi (both may underflow double)
-            f = log(max(scaled, tiny(1.0_real64))) - shift - real(log(prob%psi), real64)
+            ! log(Upsilon/psi) without forming Upsilon or psi (both may underflow double;
+            ! the unknown u: the ratio first, log psi's rounding would count)
+            if (prob%use_u) then
+                f = log(upsilon/psi)
+            else
+                f = log(max(scaled, tiny(1.0_real64))) - shift - real(log(prob%psi), real64)
+            end if
         case (2)
             f = log(max(limit - upsilon, tiny(1.0_real64))/(limit - psi))
         case default
@@ -1246,7 +1449,7 @@ contains
         logical, intent(in) :: rough   !! 17-digit rules, transcendentals in double
         real(xp), intent(out) :: theta, slope, shift
         type(arch_setup) :: below, above
-        type(panel) :: panels(max_panels)
+        type(panel) :: panels_below(max_panels), panels_above(max_panels)
         real(xp) :: whole(2), part, part_slope, w_sign, p_sign, g, omq, log_slope
         integer :: n_below, n_above
         logical :: found, use_below
@@ -1263,9 +1466,12 @@ contains
             below%weight_above = 0.0_qp
             above = a
             above%weight_below = 0.0_qp
-            call arch_panels(model, below, panels, n_below)
-            call arch_panels(model, above, panels, n_above)
-            use_below = n_below <= n_above
+            call arch_panels(model, below, panels_below, n_below)
+            call arch_panels(model, above, panels_above, n_above)
+            ! (the hardware-precision evaluations straight to int_lambda_r^Lambda where the
+            ! check below is bound to fail)
+            use_below = n_below <= n_above .and. &
+                        (rough .or. .not. above_first(a, real(whole(1), qp)))
             if (a%weight_below == 2.0_qp) then
                 w_sign = merge(1.0_xp, 2.0_xp, use_below)
                 p_sign = merge(1.0_xp, -1.0_xp, use_below)
@@ -1274,15 +1480,20 @@ contains
                 p_sign = merge(-1.0_xp, 1.0_xp, use_below)
             end if
             if (use_below) then
-                call panel_theta_xp(model, below, rough, shift, part, part_slope)
+                call panel_theta_xp(model, below, rough, shift, part, part_slope, &
+                                    panels_below, n_below)
             else
-                call panel_theta_xp(model, above, rough, shift, part, part_slope)
+                call panel_theta_xp(model, above, rough, shift, part, part_slope, &
+                                    panels_above, n_above)
             end if
-            if (a%weight_below == 0.0_qp .and. use_below .and. .not. (part <= 0.5_xp*whole(1) &
-                .and. a%delta_r >= 0.5_qp*a%big_lambda)) then
+            ! (the rough evaluations, which need about 7 digits, lose up to 10 bits)
+            if (a%weight_below == 0.0_qp .and. use_below .and. .not. ((part <= &
+                0.5_xp*whole(1) .and. a%delta_r >= 0.5_qp*a%big_lambda) .or. &
+                (rough .and. part <= 0.999_xp*whole(1)))) then
                 w_sign = 0.0_xp
                 p_sign = 1.0_xp
-                call panel_theta_xp(model, above, rough, shift, part, part_slope)
+                call panel_theta_xp(model, above, rough, shift, part, part_slope, &
+                                    panels_above, n_above)
             end if
             theta = w_sign*whole(1) + p_sign*part
             slope = w_sign*whole(2) + p_sign*part_slope
@@ -1298,17 +1509,26 @@ contains
     end subroutine theta_xp
 
     !> `theta_xp` over the panels of `a` (its weights), without the jump at the endpoint.
-    pure subroutine panel_theta_xp(model, a, rough, shift, theta, slope)
+    pure subroutine panel_theta_xp(model, a, rough, shift, theta, slope, given, &
+                                   given_count)
         type(central_force_model), intent(in) :: model
         type(arch_setup), intent(in) :: a
         logical, intent(in) :: rough   !! 17-digit rules, transcendentals in double
         real(xp), intent(in) :: shift
         real(xp), intent(out) :: theta, slope
+        !> `arch_panels(model, a, given, given_count)` where the caller has them
+        type(panel), intent(in), optional :: given(max_panels)
+        integer, intent(in), optional :: given_count
         type(panel) :: panels(max_panels)
         real(xp) :: part(2), last, v, lambda, delta, jacobian, g, omq, log_slope, big
         real(xp) :: scale, share, lo, width
         integer :: count, p, k, j
-        call arch_panels(model, a, panels, count)
+        if (present(given) .and. present(given_count)) then
+            count = given_count
+            panels(1:count) = given(1:count)
+        else
+            call arch_panels(model, a, panels, count)
+        end if
         theta = 0.0_xp
         slope = 0.0_xp
         last = 0.0_xp
@@ -1409,6 +1629,7 @@ contains
         a%delta_r = prob%delta_rho
         a%weight_below = merge(2.0_qp, 0.0_qp, prob%second)
         a%weight_above = 1.0_qp
+        if (.not. prob%second) a%angle_hint = prob%psi
         a%cx = model%law%apse_constants_xp(big_lambda)
     end subroutine setup_xp
 
@@ -1426,8 +1647,12 @@ contains
         call theta_xp(model, a, rough, scaled, scaled_slope, shift)
         select case (prob%form)
         case (1)
-            ! log(Upsilon/psi)
-            f = log(max(scaled, tiny(1.0_xp))) - shift - real(log(prob%psi), xp)
+            ! log(Upsilon/psi) (the unknown u: the ratio first, as `residual64`)
+            if (prob%use_u) then
+                f = log(scaled*exp(-shift)/real(prob%psi, xp))
+            else
+                f = log(max(scaled, tiny(1.0_xp))) - shift - real(log(prob%psi), xp)
+            end if
             slope = scaled_slope/scaled*lambda_slope
         case (2)
             upsilon = scaled*exp(-shift)
@@ -1468,14 +1693,17 @@ contains
         rough = .true.
         xk = falsi()
         ! rho next to 1 (second half-arch): Upsilon - Theta(rho,rho) ~ c u^2 but for the
-        ! smallest u (falsi would start far below the root)
+        ! smallest u (falsi would start far below the root; f of opposite signs at a = 0
+        ! and b)
         if (prob%use_u .and. prob%second .and. prob%one_minus_rho < 1.0e-6_qp .and. &
-            fa < 0.0_xp .and. fb > 0.0_xp) xk = b*sqrt(-fa/(fb - fa))
+            ((fa < 0.0_xp) .neqv. (fb < 0.0_xp))) xk = b*sqrt(fa/(fa - fb))
         do iteration = 1, 80
             call residual_xp(model, prob, xk, rough, fk, dk)
             steps = steps + 1
+            ! |Upsilon''/Upsilon'| = |f''/f' + f'| in the logarithmic forms (1, 2)
             if (d_prev /= 0.0_xp .and. abs(xk - x_prev) > 1.0e-7_xp*floor) &
-                curvature = max(curvature, real(abs((dk - d_prev)/((xk - x_prev)*dk)), qp))
+                curvature = max(curvature, real(abs((dk - d_prev)/((xk - x_prev)*dk) + &
+                                                    merge(0.0_xp, dk, prob%form == 0)), qp))
             noise = residual_noise(prob, fk, rough)
             if ((abs(fk) <= noise .and. noise < 1.0e-3_xp) .or. &
                 (rough .and. iteration > 10)) then
@@ -1612,27 +1840,35 @@ contains
             floor = 1.0e-3_qp*(hi - lo)
             curve = merge(2.0_qp*curvature, 10.0_qp/(hi - lo), curvature > 0.0_qp)
         else
+            ! the unknown R: the step in y = log R (dx below), taken as R exp(dy)
             d = prob%rho - a%big_r
-            lambda_slope = -1.0_qp/a%big_r
-            floor = tiny(1.0_qp)
-            curve = 10.0_qp/x0
+            lambda_slope = -1.0_qp
+            floor = 1.0_qp
+            curve = merge(2.0_qp*curvature, 10.0_qp, curvature > 0.0_qp)
         end if
         call arch_values(model, a, d, prob%one_minus_rho, prob%second, prob%fall_rho, &
-                         angle, s, t, slopes)
+                         angle, s, t, slopes, prob%psi)
         solution%steps = solution%steps + 1
         f = angle - prob%psi
         slope_next = real(slopes(1), qp)*lambda_slope
         if (.not. (ieee_is_finite(slope_next) .and. slope_next /= 0.0_qp)) return
         dx = -f/slope_next
-        x = x0 + dx
+        if (prob%use_u) then
+            x = x0 + dx
+        else
+            ! (Upsilon's curvature in log R is about 1/Lambda next to the sector's edge,
+            ! in R about 1/R: the Newton step in log R errs far less)
+            x = x0 + x0*expm1_qp(dx)
+        end if
         if (.not. (x > lo .and. x < hi)) return
         x_next = x
         error = curve*dx*dx + abs(dx)*real(slopes(3)/abs(slopes(1)), qp)
-        ! below 1e-35 of the unknown, or, for the unknown R (below rho/2), moving Upsilon
-        ! by less than 1e-35 psi (within the rounding of psi: R-bar's conditioning, next
-        ! to the edge of the sector) and s by less than 1e-35 of itself
+        ! below 1e-35 of the unknown (R: relative), or, for the unknown R (below rho/2),
+        ! moving Upsilon by less than 1e-35 psi (within the rounding of psi: R-bar's
+        ! conditioning, next to the edge of the sector) and s by less than 1e-35 of itself
+        if (.not. prob%use_u) slope_next = slope_next/x0
         if (.not. (error <= 1.0e-35_qp*max(abs(x), floor) .or. (.not. prob%use_u .and. &
-                   error*abs(slope_next) <= 1.0e-35_qp*prob%psi .and. &
+                   error*abs(slope_next*x0) <= 1.0e-35_qp*prob%psi .and. &
                    error*abs(real(slopes(2), qp)*lambda_slope) <= 1.0e-35_qp*abs(s)))) return
         if (.not. abs(dx*lambda_slope*real(slopes(4), qp)) <= eps_qp*abs(s)) return
         solution%arclength = s + real(slopes(2), qp)*lambda_slope*dx
@@ -1751,7 +1987,7 @@ contains
             d = prob%rho - a%big_r
         end if
         call arch_values(model, a, d, prob%one_minus_rho, prob%second, prob%fall_rho, &
-                         angle, s, t)
+                         angle, s, t, expected=prob%psi)
         f = angle - prob%psi
     end subroutine evaluate_full
 
@@ -1840,7 +2076,7 @@ contains
         if (hardware .and. prob%use_u .and. prob%rho < 1.0_qp) then
             ! B within 1e-16 of its apse angle (not at it): below what the early phase
             ! resolves; the root from the slope next to u = 0
-            if (abs(f_lo) <= 1.0e-16_real64*real(psi, real64)) &
+            if (abs(apse_angle_rho - psi) <= 1.0e-16_qp*psi) &
                 call apse_start(self, prob, hi, f_lo, x, slope_q, near)
             if (near) then
                 curvature = 0.0_qp
@@ -2022,14 +2258,30 @@ contains
             end do
             below = .not. f_lo < 0.0_real64
         else
-            ! R-bar in [rho/2, rho]: unknown u = sqrt(rho - R) on [0, sqrt(rho/2)]
+            ! R-bar in [rho/2, rho]: unknown u = sqrt(rho - R) on [0, sqrt(rho/2)], in
+            ! the forms that follow steep laws (Theta(r,R) ~ (R/r)^((n+1)/2) on the first
+            ! half-arch, limit - Upsilon ~ R^(n-1) on the second): log(Upsilon/psi),
+            ! log((limit - Upsilon)/(limit - psi)) (Theta(1,1) = 0)
             prob%form = 0
+            if (pi/self%sigma_apse > steep_decay) prob%form = merge(2, 1, prob%second)
             lo = 0.0_qp
             hi = sqrt(prob%rho - half)
-            f_lo = real(apse_angle_rho - prob%psi, real64)
-            if (prob%rho == 1.0_qp) f_lo = -real(prob%psi, real64)
-            f_hi = f_half
+            f_lo = form_of(apse_angle_rho)
+            f_hi = form_of(real(theta_half, qp))
         end if
+    contains
+        !> Upsilon - psi in the problem's form.
+        pure real(real64) function form_of(upsilon)
+            real(qp), intent(in) :: upsilon
+            select case (prob%form)
+            case (1)
+                form_of = real(log(upsilon/prob%psi), real64)
+            case (2)
+                form_of = real(log((prob%limit - upsilon)/(prob%limit - prob%psi)), real64)
+            case default
+                form_of = real(upsilon - prob%psi, real64)
+            end select
+        end function form_of
     end subroutine open_bracket
 
 end module brachistochrone_central_force
