@@ -54,6 +54,7 @@ contains
         call two_root_finders()
         call next_to_the_apse_angle()
         call whole_tables()
+        call far_tables()
         call general_references('power1.5', power_law(n=1.5_qp))
         call general_references('power3', power_law(n=3.0_qp))
         call general_references('logarithmic', logarithmic_law())
@@ -402,6 +403,66 @@ contains
         call check(worst >= 32.5_qp, 'half-arch values with tables = all panels (32.5 digits)')
         call check(worst_solve >= 32.5_qp, 'two-point R (+1.5), s, t with tables = all panels')
     end subroutine whole_tables
+
+    !> The far tables (Lambda from 11 to 80, R-bar from 1.7e-5 down to 2e-35) of the
+    !! logarithmic law against all panels: theta, s, t on both half-arches at apse radii
+    !! 1e-4 .. 1e-34, and R, s, t of the two-point problem next to the sector's edge
+    !! (psi/pi = 0.95 .. 0.993: R-bar about 1e-5 .. 1e-31; R-bar's conditioning there,
+    !! d log R/d log psi of 10^2.5 .. 10^4, measured and credited).
+    subroutine far_tables()
+        type(central_force_model) :: with, without
+        type(endpoint_solution) :: a, b, c
+        real(qp) :: big_r, r, x(3), y(3), worst, worst_solve, limit, credit
+        real(qp), parameter :: radii(7) = [1.0e-4_qp, 1.0e-6_qp, 1.0e-10_qp, 1.0e-16_qp, &
+                                           1.0e-22_qp, 1.0e-30_qp, 1.0e-34_qp]
+        real(qp), parameter :: fractions(7) = [0.0_qp, 1.0e-20_qp, 1.0e-6_qp, 0.1_qp, &
+                                               0.5_qp, 0.9_qp, 1.0_qp]
+        real(qp), parameter :: edge(4) = [0.95_qp, 0.98_qp, 0.99_qp, 0.993_qp]
+        integer :: i, j, k, m, status
+        call section('central force: far tables (logarithmic law) against all panels')
+        worst = 99.0_qp
+        worst_solve = 99.0_qp
+        with = new_central_force_model(logarithmic_law())
+        without = new_central_force_model(logarithmic_law(), tables=.false.)
+        do i = 1, size(radii)
+            big_r = radii(i)
+            do j = 1, size(fractions)
+                r = big_r + fractions(j)*(1.0_qp - big_r)
+                do k = 0, 1
+                    call with%half_arch(r, big_r, k == 1, x(1), x(2), x(3), status)
+                    call without%half_arch(r, big_r, k == 1, y(1), y(2), y(3), status)
+                    worst = min(worst, minval([(digits_of_agreement(x(m), y(m)), m = 1, 3)]))
+                end do
+            end do
+        end do
+        limit = 2.0_qp*with%law%apse_angle_limit()
+        do i = 1, 4
+            do j = 1, size(edge)
+                a = with%solve(0.2_qp*real(i, qp) + 0.2_qp, edge(j)*limit)
+                b = without%solve(0.2_qp*real(i, qp) + 0.2_qp, edge(j)*limit)
+                c = with%solve(0.2_qp*real(i, qp) + 0.2_qp, edge(j)*limit*(1.0_qp + 1.0e-20_qp))
+                if (a%status /= status_ok .or. b%status /= status_ok .or. &
+                    c%status /= status_ok) then
+                    worst_solve = 0.0_qp
+                else
+                    ! R-bar's conditioning next to the edge: log10 of |d log R/d log psi|
+                    credit = log10(max(1.0_qp, abs(c%apse_radius - a%apse_radius)/ &
+                                                (1.0e-20_qp*a%apse_radius)))
+                    worst_solve = min(worst_solve, credit + &
+                                      digits_of_agreement(a%apse_radius, b%apse_radius), &
+                                      digits_of_agreement(a%arclength, b%arclength), &
+                                      digits_of_agreement(a%time, b%time))
+                end if
+            end do
+        end do
+        write (output_unit, '(a,2f7.2)') '   fewest digits of theta, s, t (98 points | '// &
+            'R (credited), s, t on 16 endpoints):', worst, worst_solve
+        call check(all(with%far_ok) .and. .not. any(without%far_ok), &
+                   'far tables built and checked on every piece (logarithmic law)')
+        call check(worst >= 32.5_qp, 'half-arch values with far tables = all panels')
+        call check(worst_solve >= 32.5_qp, 'two-point R (conditioning credited), s, t with '// &
+                   'far tables = all panels')
+    end subroutine far_tables
 
     pure subroutine no_closed_fall_power(self, delta_lo, delta_hi, t, found)
         class(quadrature_power_law), intent(in) :: self

@@ -11,6 +11,8 @@ module test_physics
     use brachistochrone_closed_forms, only: radial_time, kappa_time, fall_to_centre_time, &
                             apse_angle_limit, inaccessible_angle, radial_fall_time
     use brachistochrone_quadrature, only: univariate_integrand, gauss_legendre, integrate_adaptive
+    use brachistochrone_chebyshev, only: chebyshev_table
+    use brachistochrone_inverse_square, only: whole_tables_by_quadrature
     use brachistochrone_inverse_square, only: inverse_square_model, new_inverse_square_model, &
             evaluate_arch, &
             arch_values, level_fine
@@ -52,7 +54,42 @@ contains
         call robustness_tests(model)
         call derivative_tests(model)
         call whole_arch_tests(model)
+        call shipped_table_tests(model)
     end subroutine run_physics_tests
+
+    !> The whole-half-arch tables shipped as constants
+    !! (`brachistochrone_inverse_square_tables`) against a fresh computation by the
+    !! quadrature (`whole_tables_by_quadrature`): the same terms on every piece and every
+    !! power coefficient within 4 eps of the piece's size (bit-identical expected; the count
+    !! is printed). A failure means the module is stale: run
+    !! scripts/make_inverse_square_tables.sh.
+    subroutine shipped_table_tests(model)
+        type(inverse_square_model), intent(in) :: model
+        type(chebyshev_table) :: fresh(3)
+        integer :: k, piece, identical, values
+        real(qp) :: worst
+        call section('physics: shipped inverse-square tables against the quadrature')
+        fresh = whole_tables_by_quadrature(model)
+        identical = 0
+        values = 0
+        worst = 0.0_qp
+        do k = 1, 3
+            call check(all(fresh(k)%used == model%whole(k)%used) .and. &
+                       all(shape(fresh(k)%power) == shape(model%whole(k)%power)), &
+                       'shipped table '//achar(iachar('0') + k)//': the same terms per piece')
+            if (.not. all(shape(fresh(k)%power) == shape(model%whole(k)%power))) cycle
+            do piece = 1, size(fresh(k)%power, 2)
+                worst = max(worst, maxval(abs(fresh(k)%power(:, piece) - &
+                    model%whole(k)%power(:, piece)))/(eps_qp*fresh(k)%tail(0, piece)))
+            end do
+            identical = identical + count(fresh(k)%power == model%whole(k)%power)
+            values = values + size(fresh(k)%power)
+        end do
+        call check(worst <= 4.0_qp, 'shipped tables within 4 eps of the quadrature '// &
+                   '(else run scripts/make_inverse_square_tables.sh)')
+        write (output_unit, '(a,i0,a,i0,a,es9.2,a)') '   ', identical, ' of ', values, &
+            ' coefficients bit-identical; largest difference ', worst, ' eps'
+    end subroutine shipped_table_tests
 
     !> The tabulated whole half-arch against mpmath on the original integrals at r = R
     !! (236 dyadic R from 2^-58 to 1 - 2^-58, both sides of every piece boundary).

@@ -38,7 +38,10 @@
 !! agrees (`build_whole_tables`). A full evaluation then integrates only the panels
 !! between the endpoint and the nearer end (`table_sums`): the second half-arch is
 !! W + int_0^lambda_r or 2W - int_lambda_r^Lambda, the first int_lambda_r^Lambda or
-!! W - int_0^lambda_r (if that loses at most a bit). Outside the tables: all panels.
+!! W - int_0^lambda_r (if that loses at most a bit). Beyond them, Lambda up to 80 (R down
+!! to 2e-35), far tables built and checked the same way (`build_far_tables`; they pass
+!! for the logarithmic law, whose integrals vary like 1/Lambda there). Elsewhere: all
+!! panels.
 !!
 !! Two-point problem: the root R-bar of Upsilon(R) = psi, in the unknown u = sqrt(rho - R)
 !! for R in [rho/2, rho] (R-bar and rho - R-bar exact next to the apse) or y = log R
@@ -69,7 +72,8 @@ module brachistochrone_central_force
     use brachistochrone_fast_exp, only: fast_exp
     use brachistochrone_quadrature, only: gauss_legendre_rule, gauss_legendre
     use brachistochrone_speed_laws, only: speed_law
-    use brachistochrone_chebyshev, only: chebyshev_table, chebyshev_points, chebyshev_fit
+    use brachistochrone_chebyshev, only: chebyshev_table, chebyshev_points, chebyshev_fit, &
+                                         chebyshev_table_xp, hardware_copy
     use brachistochrone_solution, only: endpoint_solution, endpoint_status, region_inside
     use brachistochrone_arches, only: arch_first, arch_second, arch_complete, arch_radial, &
                                       arch_inaccessible
@@ -104,6 +108,10 @@ module brachistochrone_central_force
     !> Laws whose integrands decay faster than exp(-steep_decay lambda) from the apse
     !! (power laws n > 2 steep_decay - 1) take the early phase in u in logarithmic forms
     real(qp), parameter :: steep_decay = 6.0_qp
+    !> The far tables beyond them: Lambda in [table_high, far_high] (R from 1.7e-5 down
+    !! to about 2e-35), far_pieces equal pieces in z = log Lambda (`build_far_tables`).
+    real(qp), parameter :: far_high = 80.0_qp
+    integer, parameter :: far_pieces = 4
 
     !> One Gauss-Legendre rule on [0, 1].
     type :: gauss_nodes
@@ -119,6 +127,12 @@ module brachistochrone_central_force
         type(gauss_nodes) :: gauss(max_nodes/2)   !! rules with 2j nodes
         real(qp) :: sigma_apse = 1.0_qp           !! singularity distance, apse side
         real(qp) :: sigma_start = 1.0_qp          !! singularity distance, start side
+        !> the whole-half-arch integrals beyond the tables below (Lambda in [table_high,
+        !! far_high]), the pieces that passed their check, Theta's and its slope's in
+        !! hardware precision (`build_far_tables`)
+        type(chebyshev_table) :: far(5)
+        logical :: far_ok(far_pieces) = .false.
+        type(chebyshev_table_xp) :: far_xp(2)
         !> the whole-half-arch integrals (weights 1) in z = log Lambda: Theta, S and T
         !! corrections/R, and their slopes at fixed lambda (as `arch_sums`)
         type(chebyshev_table) :: whole(5)
@@ -138,9 +152,9 @@ module brachistochrone_central_force
         procedure :: solve => general_solve            !! the two-point problem
     end type central_force_model
 
-    !> A panel in its own variable, with its weight and Bernstein parameter (no default
-    !! values: the arrays of panels, locals of the hot routines, would be filled with
-    !! them on every call).
+    !> A panel in its own variable, with its weight and Bernstein parameter. (No default
+    !! initialization: the arrays of max_panels panels in the engine's routines would be
+    !! initialized on every call.)
     type :: panel
         integer :: kind
         real(qp) :: lo, hi, scale, weight
@@ -156,6 +170,9 @@ module brachistochrone_central_force
         real(qp) :: lambda_r = 0.0_qp, delta_r = 0.0_qp
         real(qp) :: weight_below = 0.0_qp, weight_above = 1.0_qp
         real(xp) :: cx(4) = 0.0_xp    !! the law's constants in hardware precision
+        !> Theta of a first half-arch where known beforehand (psi: the two-point problem's
+        !! target), else 0: picks the panels of the early phase (`theta_xp`)
+        real(qp) :: angle_hint = 0.0_qp
     end type arch_setup
 
     !> The endpoint of a two-point problem and the unknown used.
@@ -198,6 +215,7 @@ contains
             if (.not. tables) return
         end if
         call build_whole_tables(model)
+        call build_far_tables(model)
     end function new_central_force_model
 
     !> The apse data of the whole half-arch (weights 1) at Lambda = -log R.
@@ -300,6 +318,10 @@ contains
         integer :: piece, m, j
         values = 0.0_xp
         found = .false.
+        if (big_lambda > real(table_high, xp)) then
+            call far_lookup_xp(model, big_lambda, values, found)
+            return
+        end if
         if (.not. (big_lambda >= real(table_low, xp) .and. &
                    big_lambda <= real(table_high, xp))) return
         position = (log(big_lambda) - log(real(table_low, xp)))/ &
@@ -332,6 +354,10 @@ contains
         integer :: piece, m
         values = 0.0_qp
         found = .false.
+        if (big_lambda > table_high) then
+            call far_lookup(model, big_lambda, values, found, wanted)
+            return
+        end if
         if (.not. (big_lambda >= table_low .and. big_lambda <= table_high)) return
         z = log(big_lambda)
         piece = min(table_pieces, max(1, int((z - log(table_low))/(log(table_high) - &
@@ -411,6 +437,103 @@ contains
         end if
     end subroutine whole_value
 
+    !> Tabulate the whole-half-arch integrals beyond the tables (Lambda from table_high
+    !! to far_high: R-bar far below 1e-3, the logarithmic law next to its sector's edge),
+    !! on far_pieces pieces in z = log Lambda, each checked at two points against the
+    !! quadrature to the tolerances of `build_whole_tables` (every Theta, S, T to 8
+    !! roundings of Theta and of what the S and T corrections are added to, the slopes
+    !! to 4 roundings of the hardware kind); unchecked pieces are not used. Not built
+    !! where Theta's slope falls by more than 1e3 from Lambda = table_high to twice that
+    !! (power laws n >= 2, whose pieces there all fail the check; the logarithmic law's
+    !! falls like 1/Lambda^2: all its pieces pass; n = 1.5: two of four).
+    subroutine build_far_tables(model)
+        type(central_force_model), intent(inout) :: model
+        real(qp) :: points(table_points, far_pieces), values(table_points, far_pieces, 5)
+        real(qp) :: direct(5), table(5), sizes(5), z, width, lower, upper, big_r
+        real(qp), parameter :: slope_noise = real(epsilon(1.0_xp), qp)
+        integer :: k, piece, m, side
+        direct = whole_direct(model, table_high)
+        table = whole_direct(model, 2.0_qp*table_high)
+        if (.not. abs(table(4)) >= 1.0e-3_qp*abs(direct(4))) return
+        lower = log(table_high)
+        upper = log(far_high)
+        points = chebyshev_points(lower, upper, far_pieces, table_points)
+        do piece = 1, far_pieces
+            do k = 1, table_points
+                values(k, piece, :) = whole_direct(model, exp(points(k, piece)))
+            end do
+        end do
+        do m = 1, 5
+            model%far(m) = chebyshev_fit(lower, upper, values(:, :, m), &
+                                         merge(0.5_qp*eps_qp, slope_noise, m <= 3))
+        end do
+        model%far_xp = [hardware_copy(model%far(1)), hardware_copy(model%far(4))]
+        width = (upper - lower)/real(far_pieces, qp)
+        do piece = 1, far_pieces
+            model%far_ok(piece) = .true.
+            do side = 1, 2
+                z = lower + width*(real(piece - 1, qp) + merge(0.3_qp, 0.71_qp, side == 1))
+                direct = whole_direct(model, exp(z))
+                do m = 1, 5
+                    call model%far(m)%evaluate(z, table(m))
+                end do
+                big_r = exp(-exp(z))
+                sizes = [direct(1), max(direct(2), -expm1_qp(-exp(z))/big_r), &
+                         max(direct(3), fall_piece(model, 0.0_qp, exp(z))/big_r), &
+                         abs(direct(4)), abs(direct(5)) + direct(2)]
+                if (.not. (all(abs(table(1:3) - direct(1:3)) <= 8.0_qp*eps_qp*sizes(1:3)) &
+                           .and. all(abs(table(4:5) - direct(4:5)) <= &
+                                     4.0_qp*slope_noise*sizes(4:5)))) &
+                    model%far_ok(piece) = .false.
+            end do
+        end do
+    end subroutine build_far_tables
+
+    !> The piece of the far tables holding z = log Lambda, if it passed its check.
+    pure function far_piece(model, z) result(piece)
+        type(central_force_model), intent(in) :: model
+        real(qp), intent(in) :: z
+        integer :: piece
+        piece = 0
+        if (.not. (z >= log(table_high) .and. z <= log(far_high))) return
+        piece = min(far_pieces, max(1, int((z - log(table_high))/(log(far_high) - &
+                    log(table_high))*real(far_pieces, qp)) + 1))
+        if (.not. model%far_ok(piece)) piece = 0
+    end function far_piece
+
+    !> `whole_lookup` beyond the tables (the far tables).
+    pure subroutine far_lookup(model, big_lambda, values, found, wanted)
+        type(central_force_model), intent(in) :: model
+        real(qp), intent(in) :: big_lambda
+        real(qp), intent(out) :: values(5)
+        logical, intent(out) :: found
+        integer, intent(in) :: wanted
+        real(qp) :: z
+        integer :: m
+        values = 0.0_qp
+        z = log(big_lambda)
+        found = far_piece(model, z) > 0
+        if (.not. found) return
+        do m = 1, wanted
+            call model%far(m)%evaluate(z, values(m))
+        end do
+    end subroutine far_lookup
+
+    !> `whole_lookup_xp` beyond the tables (the far tables' hardware copies).
+    pure subroutine far_lookup_xp(model, big_lambda, values, found)
+        type(central_force_model), intent(in) :: model
+        real(xp), intent(in) :: big_lambda
+        real(xp), intent(out) :: values(2)
+        logical, intent(out) :: found
+        integer :: m
+        values = 0.0_xp
+        found = far_piece(model, real(log(big_lambda), qp)) > 0
+        if (.not. found) return
+        do m = 1, 2
+            call model%far_xp(m)%evaluate(log(big_lambda), values(m))
+        end do
+    end subroutine far_lookup_xp
+
     !> The apse data for R (with 1 - R exact) and the endpoint r = R + d.
     pure function setup_arch(model, big_r, one_minus_big_r, d, delta_r, second, whole) &
         result(a)
@@ -487,14 +610,14 @@ contains
             b = a%big_lambda*b/(b + c)
             c = a%big_lambda - b
             call add_split(panels, count, kind_apse_root, 0.0_qp, 1.0_qp, b, &
-                           sqrt(a%lambda_r/b), a)
+                           split_root(a%lambda_r/b), a)
             call add_split(panels, count, kind_start_root, 0.0_qp, 1.0_qp, c, &
-                           sqrt(a%delta_r/c), a)
+                           split_root(a%delta_r/c), a)
         else
             meet = max(b, min(a%big_lambda - c, a%big_lambda*b/(b + c)))
             ! apse side: lambda = b s^2 on [0, b], then [b, 4b], [4b, 16b], ... to meet
             call add_split(panels, count, kind_apse_root, 0.0_qp, 1.0_qp, b, &
-                           sqrt(a%lambda_r/b), a)
+                           split_root(a%lambda_r/b), a)
             lo = b
             ! where the integrated region starts (the apse unless its weight is 0)
             origin = merge(0.0_qp, a%lambda_r, a%weight_below > 0.0_qp)
@@ -513,7 +636,7 @@ contains
             n_start = 0
             if (decay_rate*(meet - origin) > 300.0_qp) return
             call add_split(start_side, n_start, kind_start_root, 0.0_qp, 1.0_qp, c, &
-                           sqrt(a%delta_r/c), a)
+                           split_root(a%delta_r/c), a)
             lo = c
             do while (lo < a%big_lambda - meet)
                 hi = min(4.0_qp*lo, lo + 4.0_qp*model%sigma_start, a%big_lambda - meet)
@@ -530,6 +653,22 @@ contains
             end do
         end if
     end subroutine arch_panels
+
+    !> sqrt(z) for the root panels' splits, within an ulp: the hardware kind's square root
+    !! and one correction (z - s^2)/(2 s) in it (libquadmath's sqrtq costs about ten
+    !! binary128 multiplications); sqrt itself where that kind has no 64-bit significand.
+    elemental function split_root(z) result(s)
+        real(qp), intent(in) :: z
+        real(qp) :: s
+        real(xp) :: s0
+        if (precision(1.0_xp) < 18 .or. .not. (z > 1.0e-4000_qp .and. z < 1.0e4000_qp)) then
+            s = sqrt(z)
+            return
+        end if
+        s0 = sqrt(real(z, xp))
+        s = real(s0, qp)
+        s = s + real(real(z - s*s, xp)/(2.0_xp*s0), qp)
+    end function split_root
 
     !> Add the panel [lo, hi] of `kind`, split at `split` (in the panel's variable) into
     !! the parts below and above the endpoint, with their weights; zero weights dropped.
@@ -893,6 +1032,17 @@ contains
             end if
         end subroutine part_sums
     end subroutine table_sums
+
+    !> Whether the first half-arch (weights 0, 1) must be int_lambda_r^Lambda in the early
+    !! phase, W - int_0^lambda_r being bound to fail its check in `theta_xp`
+    !! (int_0^lambda_r <= W/2 and delta_r >= Lambda/2): the endpoint nearer the start,
+    !! or its Theta (the hint, psi to within the early phase's rounding) below 0.45 W.
+    pure logical function above_first(a, whole_angle)
+        type(arch_setup), intent(in) :: a
+        real(qp), intent(in) :: whole_angle  !! W, Theta of the whole half-arch
+        above_first = a%weight_below == 0.0_qp .and. (a%delta_r < 0.5_qp*a%big_lambda .or. &
+            (a%angle_hint > 0.0_qp .and. a%angle_hint < 0.45_qp*whole_angle))
+    end function above_first
 
     !> Bound on a panel's share of the sums so far: its length in lambda times the
     !! integrands at the nearest node of the previous panel (they decay away from the
@@ -1319,7 +1469,10 @@ contains
             above%weight_below = 0.0_qp
             call arch_panels(model, below, panels_below, n_below)
             call arch_panels(model, above, panels_above, n_above)
-            use_below = n_below <= n_above
+            ! (the hardware-precision evaluations straight to int_lambda_r^Lambda where the
+            ! check below is bound to fail)
+            use_below = n_below <= n_above .and. &
+                        (rough .or. .not. above_first(a, real(whole(1), qp)))
             if (a%weight_below == 2.0_qp) then
                 w_sign = merge(1.0_xp, 2.0_xp, use_below)
                 p_sign = merge(1.0_xp, -1.0_xp, use_below)
@@ -1477,6 +1630,7 @@ contains
         a%delta_r = prob%delta_rho
         a%weight_below = merge(2.0_qp, 0.0_qp, prob%second)
         a%weight_above = 1.0_qp
+        if (.not. prob%second) a%angle_hint = prob%psi
         a%cx = model%law%apse_constants_xp(big_lambda)
     end subroutine setup_xp
 
@@ -1687,10 +1841,11 @@ contains
             floor = 1.0e-3_qp*(hi - lo)
             curve = merge(2.0_qp*curvature, 10.0_qp/(hi - lo), curvature > 0.0_qp)
         else
+            ! the unknown R: the step in y = log R (dx below), taken as R exp(dy)
             d = prob%rho - a%big_r
-            lambda_slope = -1.0_qp/a%big_r
-            floor = tiny(1.0_qp)
-            curve = 10.0_qp/x0
+            lambda_slope = -1.0_qp
+            floor = 1.0_qp
+            curve = merge(2.0_qp*curvature, 10.0_qp, curvature > 0.0_qp)
         end if
         call arch_values(model, a, d, prob%one_minus_rho, prob%second, prob%fall_rho, &
                          angle, s, t, slopes, prob%psi)
@@ -1699,15 +1854,22 @@ contains
         slope_next = real(slopes(1), qp)*lambda_slope
         if (.not. (ieee_is_finite(slope_next) .and. slope_next /= 0.0_qp)) return
         dx = -f/slope_next
-        x = x0 + dx
+        if (prob%use_u) then
+            x = x0 + dx
+        else
+            ! (Upsilon's curvature in log R is about 1/Lambda next to the sector's edge,
+            ! in R about 1/R: the Newton step in log R errs far less)
+            x = x0 + x0*expm1_qp(dx)
+        end if
         if (.not. (x > lo .and. x < hi)) return
         x_next = x
         error = curve*dx*dx + abs(dx)*real(slopes(3)/abs(slopes(1)), qp)
-        ! below 1e-35 of the unknown, or, for the unknown R (below rho/2), moving Upsilon
-        ! by less than 1e-35 psi (within the rounding of psi: R-bar's conditioning, next
-        ! to the edge of the sector) and s by less than 1e-35 of itself
+        ! below 1e-35 of the unknown (R: relative), or, for the unknown R (below rho/2),
+        ! moving Upsilon by less than 1e-35 psi (within the rounding of psi: R-bar's
+        ! conditioning, next to the edge of the sector) and s by less than 1e-35 of itself
+        if (.not. prob%use_u) slope_next = slope_next/x0
         if (.not. (error <= 1.0e-35_qp*max(abs(x), floor) .or. (.not. prob%use_u .and. &
-                   error*abs(slope_next) <= 1.0e-35_qp*prob%psi .and. &
+                   error*abs(slope_next*x0) <= 1.0e-35_qp*prob%psi .and. &
                    error*abs(real(slopes(2), qp)*lambda_slope) <= 1.0e-35_qp*abs(s)))) return
         if (.not. abs(dx*lambda_slope*real(slopes(4), qp)) <= eps_qp*abs(s)) return
         solution%arclength = s + real(slopes(2), qp)*lambda_slope*dx

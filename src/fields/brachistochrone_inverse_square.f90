@@ -27,7 +27,8 @@
 !! corrections) depends on R alone. Divided by 1-R (Theta, S) or sqrt(1-R) (T) these are
 !! analytic on a neighbourhood of [0, 1]: the nearest singularity is at R = 3/2, where q
 !! vanishes at lambda = 0 (another at R = -3, where q's zeros in cos^2 lambda meet). They
-!! are tabulated once, as piecewise Chebyshev series, when the model is built; an
+!! are tabulated as piecewise Chebyshev series (`whole_tables_by_quadrature`, shipped as
+!! constants in `brachistochrone_inverse_square_tables`, so building a model is a copy); an
 !! evaluation then costs a Horner sum of at most 21 terms instead of a quadrature.
 !! Second half-arch (eq. 29): F = 2 F(R,R) - F(r,R) = F(R,R) + int_0^L, one panel.
 module brachistochrone_inverse_square
@@ -36,7 +37,10 @@ module brachistochrone_inverse_square
     use brachistochrone_closed_forms, only: radial_time
     use brachistochrone_fast_math, only: inverse_sqrt
     use brachistochrone_chebyshev, only: chebyshev_table, chebyshev_points, chebyshev_fit, &
-                                         chebyshev_table_xp, hardware_copy
+                                         chebyshev_table_xp, hardware_copy, &
+                                         chebyshev_table_from_powers
+    use brachistochrone_inverse_square_tables, only: whole_power_1, whole_power_2, &
+                                                     whole_power_3, whole_used
     use brachistochrone_summation, only: compensated_sum
     use brachistochrone_quadrature, only: gauss_legendre_rule, gauss_legendre
     use, intrinsic :: iso_fortran_env, only: real64
@@ -46,6 +50,7 @@ module brachistochrone_inverse_square
     public :: inverse_square_model, new_inverse_square_model
     public :: evaluate_arch, arch_values, level_fine, level_coarse, level_rough, level_digits
     public :: level_hardware, level_final, hardware_epsilon
+    public :: whole_tables_by_quadrature, table_pieces, table_points
 
     !> Rule set selector: full quad precision.
     integer, parameter :: level_fine = 1
@@ -155,7 +160,14 @@ contains
     function new_inverse_square_model() result(model)
         type(inverse_square_model) :: model
         real(qp) :: angle, slope
-        call build_rules_and_tables(model)
+        integer :: j, k
+        do j = min_nodes/2, max_nodes/2
+            call set_rule(model, j)
+        end do
+        do k = 1, 3
+            model%whole(k) = chebyshev_table_from_powers(0.0_qp, 1.0_qp, whole_power(k), &
+                                                         whole_used(:, k))
+        end do
         model%whole_xp = hardware_copy(model%whole(1), 0.1_qp*10.0_qp**(-hardware_digits))
         ! d Theta(R,R)/dR at R = 0 (Theta(R,R) = pi/3 - 0.8095502 R + ...), with
         ! Theta(R,R) = (1 - R) A(R): A'(0) - A(0)
@@ -163,44 +175,48 @@ contains
         model%apse_slope_at_zero = slope - angle
     end function new_inverse_square_model
 
-    !> The Gauss rules and the tables of the whole half-arch integrals in R
-    !! (`whole_half_arch`, on the largest rule): first the two largest rules, then the
-    !! other rules and the table points as one pool of work, then the three fits.
-    subroutine build_rules_and_tables(model)
-        type(inverse_square_model), intent(inout) :: model
-        integer, parameter :: largest = max_nodes/2, smallest = min_nodes/2, &
-                              rules_left = largest - 1 - smallest, &
-                              points_count = table_points*table_pieces
+    !> The power form of whole-half-arch table k (1: Theta, 2: S, 3: T correction) as
+    !! shipped in `brachistochrone_inverse_square_tables`.
+    pure function whole_power(k) result(power)
+        integer, intent(in) :: k
+        real(qp) :: power(0:table_points - 1, table_pieces)
+        select case (k)
+        case (1); power = whole_power_1
+        case (2); power = whole_power_2
+        case default; power = whole_power_3
+        end select
+    end function whole_power
+
+    !> The tables of the whole half-arch integrals in R (`whole_half_arch`, on the largest
+    !! rule of `model`), computed: the quadrature at the Chebyshev points of every piece
+    !! by the threads, then the three fits. What `scripts/make_inverse_square_tables.sh`
+    !! writes into `brachistochrone_inverse_square_tables` (which the model uses: this
+    !! takes about 40 ms) and the tests check the shipped tables against.
+    function whole_tables_by_quadrature(model) result(whole)
+        type(inverse_square_model), intent(in) :: model !! with its Gauss rules
+        type(chebyshev_table) :: whole(3)
+        integer, parameter :: points_count = table_points*table_pieces
         real(qp) :: points(table_points, table_pieces)
         real(qp) :: values(table_points, table_pieces, 3)
         integer :: item, k, piece
         points = chebyshev_points(0.0_qp, 1.0_qp, table_pieces, table_points)
         !$omp parallel default(shared) private(item, k, piece)
-        !$omp do schedule(static, 1)
-        do item = largest, largest - 1, -1
-            call set_rule(model, item)
-        end do
-        !$omp end do
         !$omp do schedule(dynamic, 1)
-        do item = 1, rules_left + points_count       ! the costly rules first
-            if (item <= rules_left) then
-                call set_rule(model, largest - 1 - item)
-            else
-                k = mod(item - rules_left - 1, table_points) + 1
-                piece = (item - rules_left - 1)/table_points + 1
-                values(k, piece, :) = whole_half_arch(model, points(k, piece))
-            end if
+        do item = 1, points_count
+            k = mod(item - 1, table_points) + 1
+            piece = (item - 1)/table_points + 1
+            values(k, piece, :) = whole_half_arch(model, points(k, piece))
         end do
         !$omp end do
         ! the values are about 1 with rounding errors below eps, which put noise of about
         ! eps/5 in the coefficients: those below eps/2 are dropped
         !$omp do schedule(dynamic, 1)
         do k = 1, 3
-            model%whole(k) = chebyshev_fit(0.0_qp, 1.0_qp, values(:, :, k), 0.5_qp*eps_qp)
+            whole(k) = chebyshev_fit(0.0_qp, 1.0_qp, values(:, :, k), 0.5_qp*eps_qp)
         end do
         !$omp end do
         !$omp end parallel
-    end subroutine build_rules_and_tables
+    end function whole_tables_by_quadrature
 
     !> Gauss rule j of the model: 2j nodes on [0, 1], weights doubled.
     subroutine set_rule(model, j)

@@ -19,8 +19,9 @@ module brachistochrone_repulsive_field
     public :: repulsive_field, new_repulsive_field, least_time_repulsive
 
     !> F = -mu/r^2 (repulsive): v^2 = 2(r - 1)/r, endpoints rho >= 1.
-    !! Make it with `new_repulsive_field` (its Gauss rules built once); a default-built
-    !! value solves the same endpoints, building the rules on every call.
+    !! Make it with `new_repulsive_field` (its Gauss rules copied once); a default-built
+    !! value solves the same endpoints, copying the rules (constants, about 0.03 ms) on
+    !! every call.
     type, extends(brachistochrone_field) :: repulsive_field
         logical :: has_rules = .false.   !! rules built
         type(panel_rules) :: rules       !! the fast panels' Gauss rules

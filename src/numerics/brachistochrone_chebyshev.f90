@@ -24,7 +24,7 @@ module brachistochrone_chebyshev
     implicit none
     private
 
-    public :: chebyshev_table, chebyshev_points, chebyshev_fit
+    public :: chebyshev_table, chebyshev_points, chebyshev_fit, chebyshev_table_from_powers
     public :: chebyshev_table_xp, hardware_copy
 
     !> A piecewise Chebyshev interpolant on [lower, upper].
@@ -33,7 +33,8 @@ module brachistochrone_chebyshev
         real(qp) :: upper = 0.0_qp   !! right end of the interval
         integer :: pieces = 0        !! number of equal pieces
         integer :: terms = 0         !! coefficients per piece
-        !> c_j of piece k in coefficient(j, k), j = 0 .. terms-1 (c_0 already halved)
+        !> c_j of piece k in coefficient(j, k), j = 0 .. terms-1 (c_0 already halved);
+        !! from `chebyshev_fit` only (a table made by `chebyshev_table_from_powers` has none)
         real(qp), allocatable :: coefficient(:, :)
         !> The same polynomials in powers of t: a_j of piece k in power(j, k)
         real(qp), allocatable :: power(:, :)
@@ -162,6 +163,31 @@ contains
             end do
         end do
     end function chebyshev_fit
+
+    !> A table from its power form (a `chebyshev_table`'s `power` and `used`, e.g. shipped
+    !! as constants): the same polynomials, evaluated the same way, bit for bit.
+    pure function chebyshev_table_from_powers(lower, upper, power, used) result(table)
+        real(qp), intent(in) :: lower          !! left end
+        real(qp), intent(in) :: upper          !! right end
+        real(qp), intent(in) :: power(0:, :)   !! a_j of piece k in power(j, k)
+        integer, intent(in) :: used(:)         !! terms of each piece, 1 .. size(power, 1)
+        type(chebyshev_table) :: table
+        integer :: j, piece
+        table%lower = lower
+        table%upper = upper
+        table%terms = size(power, 1)
+        table%pieces = size(power, 2)
+        table%power = power
+        table%used = max(1, min(table%terms, used))
+        allocate (table%tail(0:table%terms, table%pieces))
+        do piece = 1, table%pieces
+            table%power(table%used(piece):, piece) = 0.0_qp
+            table%tail(table%terms, piece) = 0.0_qp
+            do j = table%terms - 1, 0, -1
+                table%tail(j, piece) = table%tail(j + 1, piece) + abs(table%power(j, piece))
+            end do
+        end do
+    end function chebyshev_table_from_powers
 
     !> Terms of piece `piece` needed so that the dropped ones sum to at most `tolerance`.
     pure function terms_for(self, piece, tolerance) result(terms)

@@ -69,6 +69,11 @@ contains
         end if
         ! k need only be near x/log 2 (the reduction below is exact for any k)
         k = nint(real(x, real64)*real(inverse_ln2, real64))
+        if (k == 0) then
+            ! |x| below about log(2)/2: no reduction, no scaling
+            y = 1.0_qp + small_expm1(x)
+            return
+        end if
         reduced = (x - real(k, qp)*ln2_high) - real(k, qp)*ln2_low
         y = scale(1.0_qp + small_expm1(reduced), k)
     end function fast_exp

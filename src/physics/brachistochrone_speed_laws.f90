@@ -397,13 +397,13 @@ contains
         sigma = [acos(-1.0_qp), acos(-1.0_qp)]
     end function harmonic_log_scales
 
-    !> exp(-lambda), 1 - exp(-lambda) and 1 - exp(-2 lambda), all to full relative precision
-    !! (lambda >= 0);
+    !> exp(-lambda), 1 - exp(-lambda), 1 - exp(-2 lambda) and exp(-2 lambda), all to full
+    !! relative precision (lambda >= 0);
     !! where delta < lambda (nearer the start) exp(-lambda) = R exp(delta), since lambda =
     !! Lambda - delta carries an absolute rounding error of Lambda's size.
-    elemental subroutine exp_pair(lambda, delta, big_r, e1, om1, om2)
+    elemental subroutine exp_pair(lambda, delta, big_r, e1, om1, om2, e2)
         real(qp), intent(in) :: lambda, delta, big_r
-        real(qp), intent(out) :: e1, om1, om2
+        real(qp), intent(out) :: e1, om1, om2, e2
         real(qp) :: em1
         if (lambda > 0.5_qp) then
             if (delta < lambda .and. big_r > 0.0_qp) then
@@ -412,12 +412,14 @@ contains
                 e1 = fast_exp(-lambda)
             end if
             om1 = 1.0_qp - e1
-            om2 = 1.0_qp - e1*e1
+            e2 = e1*e1
+            om2 = 1.0_qp - e2
         else
             em1 = fast_expm1(-lambda)
             e1 = 1.0_qp + em1
             om1 = -em1
             om2 = -em1*(2.0_qp + em1)
+            e2 = e1*e1
         end if
     end subroutine exp_pair
 
@@ -477,8 +479,7 @@ contains
         real(qp) :: a, om1, om2, e1, e2, eam1, ea, e_delta, ea_e_delta
         real(xp) :: ratio_xp
         a = c(3)
-        call exp_pair(lambda, delta, c(5), e1, om1, om2)
-        e2 = e1*e1
+        call exp_pair(lambda, delta, c(5), e1, om1, om2, e2)
         if (a == 2.0_qp) then
             ! n = 3: exp(-a lambda) = exp(-2 lambda)
             ea = e2
@@ -662,8 +663,7 @@ contains
         !! has_terms_xp; 0 otherwise)
         real(xp), intent(out), optional :: log_slope
         real(qp) :: om1, om2, e1, e2
-        call exp_pair(lambda, delta, c(5), e1, om1, om2)
-        e2 = e1*e1
+        call exp_pair(lambda, delta, c(5), e1, om1, om2, e2)
         ! c(6) = 1/Lambda, c(7) = 1/sqrt(2 Lambda)
         root_q = e1*root(delta*c(6))
         q = root_q*root_q
@@ -736,12 +736,15 @@ contains
         class(power_law), intent(in) :: self
         real(qp), intent(in) :: c(8)
         real(real64), intent(in) :: lambda, delta, shift
-        real(real64) :: g, a, e2, e_big
+        real(real64) :: g, a, e2, e_big, om2, e_lambda
         a = real(c(3), real64)
         e_big = real(c(2), real64)
         e2 = exp(-2.0_real64*lambda)
-        g = sqrt((-expm1_64(-a*delta))/(-expm1_64(-2.0_real64*lambda)*e_big &
-                                         + e2*(-expm1_64(-a*lambda)))) &
+        om2 = -expm1_64(-2.0_real64*lambda)
+        ! n = 3: E(lambda) = 1 - exp(-2 lambda)
+        e_lambda = om2
+        if (a /= 2.0_real64) e_lambda = -expm1_64(-a*lambda)
+        g = sqrt((-expm1_64(-a*delta))/(om2*e_big + e2*e_lambda)) &
             *exp(shift - 0.5_real64*(a + 2.0_real64)*lambda)
     end function power_theta_ratio64
 
@@ -791,8 +794,8 @@ contains
         !> d(log q)/d Lambda at fixed lambda in hardware precision (laws with
         !! has_terms_xp; 0 otherwise)
         real(xp), intent(out), optional :: log_slope
-        real(qp) :: e1, om1, om2, p_x
-        call exp_pair(lambda, delta, c(5), e1, om1, om2)
+        real(qp) :: e1, om1, om2, e2, p_x
+        call exp_pair(lambda, delta, c(5), e1, om1, om2, e2)
         p_x = -fast_expm1(-2.0_qp*delta)
         ! c(6) = 1/(1 - R^2), c(7) = sqrt(c(6))
         root_q = e1*root(p_x*c(6))
@@ -929,8 +932,21 @@ contains
         logical, intent(in) :: rough
         real(xp), intent(out) :: g, one_minus_q, log_slope
         real(xp) :: e2, om2, ea, e_lambda, ead, e_delta
-        call exp_and_decay_xp(2.0_xp*lambda, e2, om2, rough)
-        call exp_and_decay_xp(c(3)*lambda, ea, e_lambda, rough)
+        if (c(3) == 1.0_xp) then
+            ! n = 2: exp(-2 lambda) and its decay from exp(-lambda)'s
+            call exp_and_decay_xp(lambda, ea, e_lambda, rough)
+            e2 = ea*ea
+            om2 = e_lambda*(1.0_xp + ea)
+        else
+            call exp_and_decay_xp(2.0_xp*lambda, e2, om2, rough)
+            if (c(3) == 2.0_xp) then
+                ! n = 3: exp(-a lambda) = exp(-2 lambda)
+                ea = e2
+                e_lambda = om2
+            else
+                call exp_and_decay_xp(c(3)*lambda, ea, e_lambda, rough)
+            end if
+        end if
         call exp_and_decay_xp(c(3)*delta, ead, e_delta, rough)
         one_minus_q = om2 + e2*e_lambda/c(2)
         g = sqrt(e_delta/(one_minus_q*c(2)))*scaled_exp(shift - 0.5_xp*(c(3) + 2.0_xp)*lambda, &
