@@ -1676,13 +1676,16 @@ contains
     !! the rounding of the hardware kind (usually one such evaluation). x the root, slope
     !! f'(x) (the form's), curvature |f''/2f'| measured between the iterates (0 if not).
     pure subroutine hardware_phase(model, prob, lo, f_lo, hi, f_hi, x, slope, curvature, &
-                                   steps)
+                                   steps, slope_hi)
         type(central_force_model), intent(in) :: model
         type(endpoint_problem), intent(in) :: prob
         real(qp), intent(in) :: lo, hi
         real(real64), intent(in) :: f_lo, f_hi
         real(qp), intent(out) :: x, slope, curvature
         integer, intent(inout) :: steps
+        !> f'(hi) for the unknown u (0: unknown): the first iterate from the quadratic
+        !! through f(lo), f(hi), f'(hi) rather than regula falsi
+        real(real64), intent(in), optional :: slope_hi
         real(xp) :: a, b, fa, fb, xk, fk, dk, x_new, x_prev, d_prev, floor, noise
         integer :: iteration
         logical :: rough
@@ -1693,6 +1696,9 @@ contains
         d_prev = 0.0_xp
         rough = .true.
         xk = falsi()
+        if (present(slope_hi) .and. prob%use_u .and. prob%form == 0) then
+            if (slope_hi /= 0.0_real64) xk = hermite(real(slope_hi, xp))
+        end if
         ! rho next to 1 (second half-arch): Upsilon - Theta(rho,rho) ~ c u^2 but for the
         ! smallest u (falsi would start far below the root; f of opposite signs at a = 0
         ! and b)
@@ -1744,6 +1750,25 @@ contains
             falsi = b - fb*(b - a)/(fb - fa)
             if (.not. (falsi > min(a, b) .and. falsi < max(a, b))) falsi = 0.5_xp*(a + b)
         end function falsi
+
+        !> The root in (a, b) of f(b) + f'(b) t + c t^2 (t = x - b) through f(a); falsi
+        !! if there is none.
+        pure real(xp) function hermite(d)
+            real(xp), intent(in) :: d
+            real(xp) :: c, disc, q, t(2)
+            hermite = falsi()
+            c = (fa - fb + d*(b - a))/(b - a)**2
+            disc = d*d - 4.0_xp*c*fb
+            if (.not. disc >= 0.0_xp) return
+            q = -0.5_xp*(d + sign(sqrt(disc), d))
+            if (q == 0.0_xp) return
+            t = [fb/q, merge(q/c, huge(1.0_xp), c /= 0.0_xp)]
+            if (b + t(1) > min(a, b) .and. b + t(1) < max(a, b)) then
+                hermite = b + t(1)
+            else if (b + t(2) > min(a, b) .and. b + t(2) < max(a, b)) then
+                hermite = b + t(2)
+            end if
+        end function hermite
     end subroutine hardware_phase
 
     !> The rounding level of the early phase's residual f: Upsilon to about 1e-15
@@ -2035,7 +2060,7 @@ contains
         type(endpoint_solution) :: solution
         type(endpoint_problem) :: prob
         real(qp) :: limit, apse_angle_rho, half, x, lo, hi, slope_q, curvature
-        real(real64) :: f_lo, f_hi, slope
+        real(real64) :: f_lo, f_hi, slope, slope_hi
         logical :: below, hardware, done, near
 
         solution%rho = rho
@@ -2064,7 +2089,7 @@ contains
         end if
         half = 0.5_qp*rho
         call open_bracket(self, prob, apse_angle_rho, half, lo, hi, f_lo, f_hi, &
-                          solution%steps, below)
+                          solution%steps, below, slope_hi)
         if (below) then
             ! R-bar is below the binary128 range (the logarithmic law next to psi = pi):
             ! R-bar underflows to 0, and s, t equal their limits R -> 0 to far more
@@ -2088,7 +2113,7 @@ contains
             slope = real(slope_q, real64)
         else if (hardware) then
             call hardware_phase(self, prob, lo, f_lo, hi, f_hi, x, slope_q, curvature, &
-                                solution%steps)
+                                solution%steps, slope_hi)
             slope = real(slope_q, real64)
         else
             call double_phase(self, prob, lo, f_lo, hi, f_hi, x, slope, solution%steps)
@@ -2228,7 +2253,7 @@ contains
     !! bracket: u = sqrt(rho - R) on [0, sqrt(rho/2)], or y = log R on [y_lo, log(rho/2)]
     !! with y_lo found by stepping down; `below` when R-bar is below the binary128 range.
     pure subroutine open_bracket(self, prob, apse_angle_rho, half, lo, hi, f_lo, f_hi, &
-                                 steps, below)
+                                 steps, below, slope_hi)
         type(central_force_model), intent(in) :: self
         type(endpoint_problem), intent(inout) :: prob !! gets its unknown (use_u, form)
         real(qp), intent(in) :: apse_angle_rho, half
@@ -2236,16 +2261,24 @@ contains
         real(real64), intent(out) :: f_lo, f_hi       !! residuals at its ends
         integer, intent(out) :: steps                 !! evaluations made
         logical, intent(out) :: below                 !! R-bar underflows
-        real(real64) :: f_half, theta_half, scaled, shift
+        !> the residual's slope d f/du at hi (the unknown u, laws with hardware terms;
+        !! else 0)
+        real(real64), intent(out) :: slope_hi
+        real(real64) :: f_half, theta_half, scaled, shift, upsilon_slope
         real(xp) :: theta_xp_half, slope_xp, shift_xp
         integer :: probe
         below = .false.
         prob%use_u = .true.
+        upsilon_slope = 0.0_real64
+        slope_hi = 0.0_real64
         if (self%law%has_terms_xp()) then
             ! as a rough early evaluation (with the tables)
             call theta_xp(self, setup_at64(self, prob, sqrt(prob%rho - half)), .true., &
                           theta_xp_half, slope_xp, shift_xp)
             theta_half = real(theta_xp_half*exp(-shift_xp), real64)
+            ! d Upsilon/du = d Upsilon/d Lambda 2u/R at u = sqrt(rho - half), R = half
+            upsilon_slope = real(slope_xp*exp(-shift_xp), real64)* &
+                            real(2.0_qp*sqrt(prob%rho - half)/half, real64)
         else
             call theta64(self, setup_at64(self, prob, sqrt(prob%rho - half)), scaled, shift)
             theta_half = scaled*exp(-shift)
@@ -2257,7 +2290,8 @@ contains
             prob%use_u = .false.
             prob%form = merge(2, 1, prob%second)
             hi = log(half)
-            f_hi = bracket_residual(hi)
+            ! (Upsilon at R = rho/2 as above: the sign the branch was chosen by)
+            f_hi = form_of(real(theta_half, qp))
             lo = hi
             do probe = 1, 40
                 lo = max(lowest_log_r, hi - 4.0_qp*2.0_qp**probe)
@@ -2277,6 +2311,14 @@ contains
             hi = sqrt(prob%rho - half)
             f_lo = form_of(apse_angle_rho)
             f_hi = form_of(real(theta_half, qp))
+            select case (prob%form)
+            case (1)
+                slope_hi = upsilon_slope/theta_half
+            case (2)
+                slope_hi = -upsilon_slope/(real(prob%limit, real64) - theta_half)
+            case default
+                slope_hi = upsilon_slope
+            end select
         end if
     contains
         !> The residual at y = log R: a rough early evaluation (with the tables) for laws
