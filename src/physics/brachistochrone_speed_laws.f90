@@ -53,6 +53,32 @@ module brachistochrone_speed_laws
         [((real(k_, qp) + 0.5_qp)/real(k_ + 1, qp), k_ = 0, max_series_terms)]
     real(qp), parameter :: log_two = log(2.0_qp)
 
+    !> sqrt(z/sinh z) = sum_m sinh_root(m) z^(2m) (radius pi), for the fall time of the
+    !! power laws n < 3 where (n - 1) delta <= log 2 (`mild_fall_time`); 40 digits from
+    !! mpmath (taylor(lambda z: sqrt(z/sinh(z)), 0, 42) at 60 digits).
+    integer, parameter :: mild_terms = 21
+    real(qp), parameter :: sinh_root(0:mild_terms) = [ &
+        1.0e0_qp, -8.333333333333333333333333333333333333333e-2_qp, 6.25e-3_qp, &
+        -5.042989417989417989417989417989417989418e-4_qp, &
+        4.343722442680776014109347442680776014109e-5_qp, &
+        -3.896385732323232323232323232323232323232e-6_qp, &
+        3.5833354634507908317432126955936479746e-7_qp, &
+        -3.349747072060577902729578214587032929185e-8_qp, &
+        3.167585434316114761035785000926613127049e-9_qp, &
+        -3.021036851737096156278742947805201253256e-10_qp, &
+        2.900415787669253041460419685680819465987e-11_qp, &
+        -2.799396748375269290000330833169690392468e-12_qp, &
+        2.713639320017203700482007716326339699919e-13_qp, &
+        -2.640047892184152890324073200737982690296e-14_qp, &
+        2.576345276111417982816729253880419663641e-15_qp, &
+        -2.520813255420055633867949277570450368858e-16_qp, &
+        2.472127507451747074250283620694908877938e-17_qp, &
+        -2.429248639502351558272628537939467695867e-18_qp, &
+        2.391348018764929546325534307879697167263e-19_qp, &
+        -2.357755946411740481256440405565376374944e-20_qp, &
+        2.327924615768231866669533139979789887871e-21_qp, &
+        -2.301401107906203587724045173661755178386e-22_qp]
+
     !> A speed law: v^2 and its divided difference. Attractive laws here: v > 0 for
     !! 0 < r < 1, v(1) = 0.
     type, abstract :: speed_law
@@ -566,7 +592,8 @@ contains
     end function power_fall_integrand
 
     !> n = 3: t0(x) = sqrt(1 - x^2); n = 2: the inverse-square fall time (Tee eq. 46);
-    !! 1/4 <= a = n - 1: an incomplete beta function (`power_fall_time`); below: none.
+    !! other n: a series of incomplete gamma functions or an incomplete beta function
+    !! (`power_fall_time`).
     pure subroutine power_closed_fall(self, delta_lo, delta_hi, t, found)
         class(power_law), intent(in) :: self
         real(qp), intent(in) :: delta_lo, delta_hi
@@ -574,7 +601,7 @@ contains
         logical, intent(out) :: found
         real(qp) :: a
         a = self%n - 1.0_qp
-        found = a >= 0.25_qp
+        found = a > 0.0_qp
         t = 0.0_qp
         if (self%n == 3.0_qp) then
             t = sqrt(-expm1(-2.0_qp*delta_hi)) - sqrt(-expm1(-2.0_qp*delta_lo))
@@ -587,7 +614,66 @@ contains
         end if
     end subroutine power_closed_fall
 
-    !> The fall time from 1 to x = exp(-delta) of the power law a = n - 1 >= 1/4:
+    !> The fall time from 1 to x = exp(-delta) of the power law a = n - 1 < 2 where
+    !! a min(delta, 100) <= log 2 (beyond delta = 100 it is t0(100) to within exp(-100)):
+    !! x/v = exp(-b u) sqrt(z/sinh z)/sqrt(2 u), b = 1 + a/4, z = a u/2, so that
+    !! t0 = (2 b)^(-1/2) sum_m C_m (a/(2 b))^(2m) gamma(2m + 1/2, b delta) (C_m:
+    !! `sinh_root`; z <= log(2)/2: the terms fall like (z/pi)^(2m), about 18 of them).
+    !! The lower incomplete gamma functions: from sqrt(pi) erf(sqrt(x)) upward (x >= 2,
+    !! where the recurrence loses less than the terms' fall gains) or from Kummer's series
+    !! at the top downward (x < 2; sums of positive terms): within a few roundings.
+    pure function mild_fall_time(a, delta) result(t)
+        real(qp), intent(in) :: a, delta
+        real(qp) :: t, b, x, w, total, power, sum, term, s
+        real(qp) :: gam(0:2*mild_terms), p(0:2*mild_terms)
+        integer :: m, top, j, k
+        b = 1.0_qp + 0.25_qp*a
+        x = b*min(delta, 100.0_qp)
+        w = (0.5_qp*a/b)**2
+        ! terms while 0.2 (z/pi)^(2m) exceeds 1e-37
+        top = mild_terms
+        s = real(0.5_qp*a*min(delta, 100.0_qp)/acos(-1.0_qp), qp)
+        do m = 1, mild_terms
+            if (s**(2*m) < 5.0e-37_qp) then
+                top = m
+                exit
+            end if
+        end do
+        ! p(j) = x^(j + 1/2) exp(-x), gam(j) = gamma(j + 1/2, x)
+        p(0) = sqrt(x)*fast_exp(-x)
+        do j = 1, 2*top
+            p(j) = p(j - 1)*x
+        end do
+        if (x >= 2.0_qp) then
+            gam(0) = sqrt(acos(-1.0_qp))*erf(sqrt(x))
+            do j = 1, 2*top
+                gam(j) = (real(j, qp) - 0.5_qp)*gam(j - 1) - p(j - 1)
+            end do
+        else
+            s = real(2*top, qp) + 0.5_qp
+            sum = 1.0_qp
+            term = 1.0_qp
+            do k = 1, max_series_terms
+                term = term*x/(s + real(k, qp))
+                sum = sum + term
+                if (term <= 1.0e-36_qp*sum) exit
+            end do
+            gam(2*top) = p(2*top)/s*sum
+            do j = 2*top - 1, 0, -1
+                gam(j) = (gam(j + 1) + p(j))/(real(j, qp) + 0.5_qp)
+            end do
+        end if
+        total = 0.0_qp
+        power = 1.0_qp
+        do m = 0, top
+            total = total + sinh_root(m)*power*gam(2*m)
+            power = power*w
+        end do
+        t = total/sqrt(2.0_qp*b)
+    end function mild_fall_time
+
+    !> The fall time from 1 to x = exp(-delta) of the power law a = n - 1 (`mild_fall_time`
+    !! where a < 2 and a min(delta, 100) <= log 2; otherwise, where p <= 1/a + 1/2 < 146):
     !! t0 = I(y)/sqrt(2 a), I(y) = int_y^1 t^(p-1) (1-t)^(-1/2) dt, y = x^a, p = 1/a + 1/2
     !! (t = y). For y >= 1/2, with 1 - t = w^2, I = 2 sum_k c_k W^(2k+1)/(2k+1), W^2 = 1 - y,
     !! c_k the binomial series of (1 - w^2)^(p-1); below, I = B(p, 1/2) - sum_k d_k
@@ -597,6 +683,10 @@ contains
         real(qp), intent(in) :: a, delta
         real(qp) :: t, p, w2, power, c, term, total, y, beta
         integer :: k
+        if (a < 2.0_qp .and. a*min(delta, 100.0_qp) <= log_two) then
+            t = mild_fall_time(a, delta)
+            return
+        end if
         p = 1.0_qp/a + 0.5_qp
         total = 0.0_qp
         if (a*delta <= log_two) then
