@@ -489,8 +489,9 @@ contains
         end if
     end function power_of
 
-    !> Two expm1 per node (three where a delta < 1/4; one less for n = 1.5, 2, 3, where
-    !! exp(-a lambda) follows from exp(-lambda)): exp(-lambda) = 1 + expm1(-lambda),
+    !> Two expm1 per node (one for n = 1.5, 2, 3, where exp(-a lambda) follows from
+    !! exp(-lambda); where a delta <= 1/4 E(lambda) and E(delta) follow from either and
+    !! E(Lambda)): exp(-lambda) = 1 + expm1(-lambda),
     !! 1 - exp(-2 lambda) = -expm1(-lambda) (2 + expm1(-lambda)), E(lambda) =
     !! -expm1(-a lambda), exp(-a delta) = exp(-a Lambda)/exp(-a lambda).
     pure subroutine power_arch_terms(self, c, lambda, delta, q, one_minus_q, q_over_v, &
@@ -504,7 +505,9 @@ contains
         real(xp), intent(out), optional :: log_slope
         real(qp) :: a, om1, om2, e1, e2, eam1, ea, e_delta, ea_e_delta
         real(xp) :: ratio_xp
+        logical :: known  ! E(delta) already at hand
         a = c(3)
+        known = .false.
         call exp_pair(lambda, delta, c(5), e1, om1, om2, e2)
         if (a == 2.0_qp) then
             ! n = 3: exp(-a lambda) = exp(-2 lambda)
@@ -518,6 +521,20 @@ contains
             ! n = 1.5: exp(-lambda/2) = sqrt(exp(-lambda)), 1 - it = (1 - e1)/(1 + it)
             ea = root(e1)
             eam1 = -om1/(1.0_qp + ea)
+        else if (delta <= c(8) .and. delta < lambda .and. c(4) > 0.0_qp) then
+            ! nearer the start, a delta <= 1/4: E(delta) by expm1 (below) and from it
+            ! exp(-a lambda) = R^a/(1 - E(delta)), E(lambda) = (E(Lambda) - E(delta))/
+            ! (1 - E(delta)) (lambda >= Lambda/2: at most two bits cancel; one
+            ! transcendental for the two)
+            e_delta = decay(a, delta)
+            known = .true.
+            if (lambda > 2.0_qp*c(8)) then
+                ea = c(4)/(1.0_qp - e_delta)
+                eam1 = ea - 1.0_qp
+            else
+                eam1 = (e_delta - c(2))/(1.0_qp - e_delta)
+                ea = 1.0_qp + eam1
+            end if
         else if (lambda > 2.0_qp*c(8)) then
             if (delta < lambda .and. c(4) > 0.0_qp) then
                 ! nearer the start: exp(-a lambda) = R^a exp(a delta), exact arguments
@@ -535,8 +552,13 @@ contains
             ! 1 - e^(-1/4): at most two bits cancel, as in 1 - R^a/exp(-a lambda))
             ea_e_delta = ea - c(4)
             ratio_xp = real(c(4), xp)/real(ea_e_delta, xp)
+        else if (lambda <= delta .and. c(4) > 0.0_qp) then
+            ! nearer the apse, a delta <= 1/4: exp(-a lambda) E(delta) = E(Lambda) -
+            ! E(lambda) (delta >= Lambda/2: at most two bits cancel; no expm1)
+            ea_e_delta = c(2) + eam1
+            ratio_xp = real(c(4), xp)/real(ea_e_delta, xp)
         else
-            e_delta = decay(a, delta)
+            if (.not. known) e_delta = decay(a, delta)
             ea_e_delta = ea*e_delta
             ratio_xp = real(1.0_qp - e_delta, xp)/real(e_delta, xp)
         end if
