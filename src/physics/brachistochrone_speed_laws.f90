@@ -1044,6 +1044,8 @@ contains
         logical, intent(in) :: rough
         real(xp), intent(out) :: g, one_minus_q, log_slope
         real(xp) :: e2, om2, ea, e_lambda, ead, e_delta
+        logical :: known  ! E(delta) at hand
+        known = .false.
         if (c(3) == 1.0_xp) then
             ! n = 2: exp(-2 lambda) and its decay from exp(-lambda)'s
             call exp_and_decay_xp(lambda, ea, e_lambda, rough)
@@ -1055,11 +1057,32 @@ contains
                 ! n = 3: exp(-a lambda) = exp(-2 lambda)
                 ea = e2
                 e_lambda = om2
+            else if (c(3) == 0.5_xp) then
+                ! n = 1.5: exp(-lambda/2) = exp(-2 lambda)^(1/4), 1 - exp(-2 lambda) =
+                ! (1 - it) (1 + it) (1 + it^2)
+                ea = sqrt(sqrt(e2))
+                e_lambda = om2/((1.0_xp + ea)*(1.0_xp + ea*ea))
+            else if (c(3)*delta <= 0.25_xp .and. delta < lambda .and. &
+                     c(3)*lambda <= 0.5_xp) then
+                ! nearer the start: E(lambda) = (E(Lambda) - E(delta))/(1 - E(delta)) (as
+                ! `power_arch_terms`: at most two bits cancel; one exponential for both)
+                call exp_and_decay_xp(c(3)*delta, ead, e_delta, rough)
+                known = .true.
+                e_lambda = (c(2) - e_delta)/ead
+                ea = 1.0_xp - e_lambda
             else
                 call exp_and_decay_xp(c(3)*lambda, ea, e_lambda, rough)
             end if
         end if
-        call exp_and_decay_xp(c(3)*delta, ead, e_delta, rough)
+        if (.not. known) then
+            if (c(3)*delta <= 0.25_xp .and. lambda <= delta) then
+                ! nearer the apse: exp(-a lambda) E(delta) = E(Lambda) - E(lambda)
+                e_delta = (c(2) - e_lambda)/ea
+                ead = 1.0_xp - e_delta
+            else
+                call exp_and_decay_xp(c(3)*delta, ead, e_delta, rough)
+            end if
+        end if
         one_minus_q = om2 + e2*e_lambda/c(2)
         g = sqrt(e_delta/(one_minus_q*c(2)))*scaled_exp(shift - 0.5_xp*(c(3) + 2.0_xp)*lambda, &
                                                          rough)
