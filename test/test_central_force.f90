@@ -700,9 +700,10 @@ contains
         type(central_force_model) :: closed, quadrature
         type(inverse_square_model) :: fast
         type(endpoint_solution) :: a, b
-        real(qp), parameter :: radii(10) = [0.0_qp, 1.0e-6_qp, 0.3_qp, 0.9_qp, &
+        real(qp), parameter :: radii(12) = [0.0_qp, 1.0e-6_qp, 0.3_qp, 0.9_qp, &
                                             1.0_qp - 1.0e-12_qp, 1.0_qp - 1.0e-30_qp, &
-                                            0.05_qp, 3.0e-4_qp, 2.0e-22_qp, 1.0e-65_qp]
+                                            0.05_qp, 3.0e-4_qp, 2.0e-22_qp, 1.0e-65_qp, &
+                                            0.082_qp, 4.5e-5_qp]
         real(qp), parameter :: exponents(11) = [2.0_qp, 3.0_qp, 1.25_qp, 1.5_qp, 10.0_qp, &
                                                 32.0_qp, 1.1_qp, 1.01_qp, 1.0_qp + 1.0e-6_qp, &
                                                 1.0_qp + 2.0_qp**(-100), 2.5_qp]
@@ -731,7 +732,7 @@ contains
             end do
         end do
         write (output_unit, '(a,f6.2)') '   n = 2, 3, 1.25, 1.5, 10, 32, 1.1, 1.01, 1 + 1e-6, ' &
-            //'1 + 2^-100, 2.5, logarithmic, harmonic, 10 radii: fewest digits ', worst
+            //'1 + 2^-100, 2.5, logarithmic, harmonic, 12 radii: fewest digits ', worst
         call check(worst >= 32.5_qp, 'closed-form fall times = quadrature to >= 32.5 digits')
         closed = new_central_force_model(power_law(n=2.0_qp))
         fast = new_inverse_square_model()

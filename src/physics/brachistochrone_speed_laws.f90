@@ -54,9 +54,9 @@ module brachistochrone_speed_laws
     real(qp), parameter :: log_two = log(2.0_qp)
 
     !> sqrt(z/sinh z) = sum_m sinh_root(m) z^(2m) (radius pi), for the fall time of the
-    !! power laws n < 3 where (n - 1) delta <= log 2 (`mild_fall_time`); 40 digits from
-    !! mpmath (taylor(lambda z: sqrt(z/sinh(z)), 0, 42) at 60 digits).
-    integer, parameter :: mild_terms = 21
+    !! power laws n < 3 where (n - 1) delta <= 2 log 2 (`mild_fall_time`); 40 digits from
+    !! mpmath (taylor(lambda z: sqrt(z/sinh(z)), 0, 80) at 70 digits).
+    integer, parameter :: mild_terms = 40
     real(qp), parameter :: sinh_root(0:mild_terms) = [ &
         1.0e0_qp, -8.333333333333333333333333333333333333333e-2_qp, 6.25e-3_qp, &
         -5.042989417989417989417989417989417989418e-4_qp, &
@@ -77,7 +77,26 @@ module brachistochrone_speed_laws
         2.391348018764929546325534307879697167263e-19_qp, &
         -2.357755946411740481256440405565376374944e-20_qp, &
         2.327924615768231866669533139979789887871e-21_qp, &
-        -2.301401107906203587724045173661755178386e-22_qp]
+        -2.301401107906203587724045173661755178386e-22_qp, &
+        2.27780735734473662400585763213415032165e-23_qp, &
+        -2.256825055267753398663825185279649405166e-24_qp, &
+        2.238184113077813437978847334000099299076e-25_qp, &
+        -2.221653734513266919675727836676171554971e-26_qp, &
+        2.207035426746869403222671127252579043125e-27_qp, &
+        -2.194157471766908839292169391163766390714e-28_qp, &
+        2.182870510763488759130553249729622318812e-29_qp, &
+        -2.17304398619209826110578575113569440814e-30_qp, &
+        2.164563251472097105081419736584696185448e-31_qp, &
+        -2.157327205261501897742819338394024057059e-32_qp, &
+        2.151246341485599259846516438070392896562e-33_qp, &
+        -2.146241131533082548150734421018861075117e-34_qp, &
+        2.142240673835419615714246699036617377132e-35_qp, &
+        -2.139181560193522561415686926967345147643e-36_qp, &
+        2.137006918961645339412778460236613907037e-37_qp, &
+        -2.135665603431259287116514242103730989369e-38_qp, &
+        2.135111500116744217678797448991474082368e-39_qp, &
+        -2.13530293659428030211367519475879566002e-40_qp, &
+        2.136202172425637372263518718226106429429e-41_qp]
 
     !> A speed law: v^2 and its divided difference. Attractive laws here: v > 0 for
     !! 0 < r < 1, v(1) = 0.
@@ -637,36 +656,35 @@ contains
     end subroutine power_closed_fall
 
     !> The fall time from 1 to x = exp(-delta) of the power law a = n - 1 < 2 where
-    !! a min(delta, 100) <= log 2 (beyond delta = 100 it is t0(100) to within exp(-100)):
+    !! a min(delta, 100) <= 2 log 2 (beyond delta = 100 it is t0(100) to within exp(-100)):
     !! x/v = exp(-b u) sqrt(z/sinh z)/sqrt(2 u), b = 1 + a/4, z = a u/2, so that
     !! t0 = (2 b)^(-1/2) sum_m C_m (a/(2 b))^(2m) gamma(2m + 1/2, b delta) (C_m:
-    !! `sinh_root`; z <= log(2)/2: the terms fall like (z/pi)^(2m), about 18 of them).
-    !! The lower incomplete gamma functions: from sqrt(pi) erf(sqrt(x)) upward (x >= 2,
-    !! where the recurrence loses less than the terms' fall gains) or from Kummer's series
-    !! at the top downward (x < 2; sums of positive terms): within a few roundings.
+    !! `sinh_root`; z <= log 2: the terms fall like (z/pi)^(2m), at most 28 of them).
+    !! The lower incomplete gamma functions: from sqrt(pi) erf(sqrt(x)) upward (x >= 2 and
+    !! 2 m a <= 8, where the recurrence loses less than the terms' fall gains) or from
+    !! Kummer's series at the top downward (sums of positive terms): a few roundings.
     pure function mild_fall_time(a, delta) result(t)
         real(qp), intent(in) :: a, delta
         real(qp) :: t, b, x, w, total, power, sum, term, s
         real(qp) :: gam(0:2*mild_terms), p(0:2*mild_terms)
+        real(real64) :: ratio
         integer :: m, top, j, k
         b = 1.0_qp + 0.25_qp*a
         x = b*min(delta, 100.0_qp)
         w = (0.5_qp*a/b)**2
-        ! terms while 0.2 (z/pi)^(2m) exceeds 1e-37
-        top = mild_terms
-        s = real(0.5_qp*a*min(delta, 100.0_qp)/acos(-1.0_qp), qp)
-        do m = 1, mild_terms
-            if (s**(2*m) < 5.0e-37_qp) then
-                top = m
-                exit
-            end if
-        end do
+        ! terms while 0.2 (z/pi)^(2m) exceeds 1e-37 (z/pi <= log(2)/pi: at most 28)
+        ratio = real(0.5_qp*a*min(delta, 100.0_qp), real64)/acos(-1.0_real64)
+        top = 1
+        if (ratio > 0.0_real64) top = min(mild_terms, max(1, &
+            ceiling(log(5.0e-37_real64)/(2.0_real64*log(ratio)))))
         ! p(j) = x^(j + 1/2) exp(-x), gam(j) = gamma(j + 1/2, x)
         p(0) = sqrt(x)*fast_exp(-x)
         do j = 1, 2*top
             p(j) = p(j - 1)*x
         end do
-        if (x >= 2.0_qp) then
+        if (x >= 2.0_qp .and. real(2*top, qp)*a <= 8.0_qp) then
+            ! (the upward recurrence multiplies gam(0)'s rounding by about Gamma(2m + 1/2),
+            ! the weights by (a/(2 pi b))^(2m): below (2 m a/(2 pi b e))^(2m) < 0.5^(2m))
             gam(0) = sqrt(acos(-1.0_qp))*erf(sqrt(x))
             do j = 1, 2*top
                 gam(j) = (real(j, qp) - 0.5_qp)*gam(j - 1) - p(j - 1)
@@ -695,7 +713,7 @@ contains
     end function mild_fall_time
 
     !> The fall time from 1 to x = exp(-delta) of the power law a = n - 1 (`mild_fall_time`
-    !! where a < 2 and a min(delta, 100) <= log 2; otherwise, where p <= 1/a + 1/2 < 146):
+    !! where a < 2 and a min(delta, 100) <= 2 log 2; otherwise, where p = 1/a + 1/2 < 73):
     !! t0 = I(y)/sqrt(2 a), I(y) = int_y^1 t^(p-1) (1-t)^(-1/2) dt, y = x^a, p = 1/a + 1/2
     !! (t = y). For y >= 1/2, with 1 - t = w^2, I = 2 sum_k c_k W^(2k+1)/(2k+1), W^2 = 1 - y,
     !! c_k the binomial series of (1 - w^2)^(p-1); below, I = B(p, 1/2) - sum_k d_k
@@ -705,7 +723,7 @@ contains
         real(qp), intent(in) :: a, delta
         real(qp) :: t, p, w2, power, c, term, total, y, beta
         integer :: k
-        if (a < 2.0_qp .and. a*min(delta, 100.0_qp) <= log_two) then
+        if (a < 2.0_qp .and. a*min(delta, 100.0_qp) <= 2.0_qp*log_two) then
             t = mild_fall_time(a, delta)
             return
         end if
