@@ -57,6 +57,9 @@ module brachistochrone_speed_laws
     !! power laws n < 3 where (n - 1) delta <= 2 log 2 (`mild_fall_time`); 40 digits from
     !! mpmath (taylor(lambda z: sqrt(z/sinh(z)), 0, 80) at 70 digits).
     integer, parameter :: mild_terms = 40
+    !> 1/(j + 1/2) for the incomplete gamma functions' recurrence and series
+    real(qp), parameter :: inverse_half(0:2*mild_terms + max_series_terms) = &
+        [(1.0_qp/(real(k_, qp) + 0.5_qp), k_ = 0, 2*mild_terms + max_series_terms)]
     real(qp), parameter :: sinh_root(0:mild_terms) = [ &
         1.0e0_qp, -8.333333333333333333333333333333333333333e-2_qp, 6.25e-3_qp, &
         -5.042989417989417989417989417989417989418e-4_qp, &
@@ -665,7 +668,7 @@ contains
     !! Kummer's series at the top downward (sums of positive terms): a few roundings.
     pure function mild_fall_time(a, delta) result(t)
         real(qp), intent(in) :: a, delta
-        real(qp) :: t, b, x, w, total, power, sum, term, s
+        real(qp) :: t, b, x, w, total, power, sum, term
         real(qp) :: gam(0:2*mild_terms), p(0:2*mild_terms)
         real(real64) :: ratio
         integer :: m, top, j, k
@@ -690,17 +693,16 @@ contains
                 gam(j) = (real(j, qp) - 0.5_qp)*gam(j - 1) - p(j - 1)
             end do
         else
-            s = real(2*top, qp) + 0.5_qp
             sum = 1.0_qp
             term = 1.0_qp
             do k = 1, max_series_terms
-                term = term*x/(s + real(k, qp))
+                term = term*x*inverse_half(2*top + k)
                 sum = sum + term
                 if (term <= 1.0e-36_qp*sum) exit
             end do
-            gam(2*top) = p(2*top)/s*sum
+            gam(2*top) = p(2*top)*inverse_half(2*top)*sum
             do j = 2*top - 1, 0, -1
-                gam(j) = (gam(j + 1) + p(j))/(real(j, qp) + 0.5_qp)
+                gam(j) = (gam(j + 1) + p(j))*inverse_half(j)
             end do
         end if
         total = 0.0_qp
