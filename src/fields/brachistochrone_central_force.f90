@@ -1670,9 +1670,10 @@ contains
     !! the bracket [lo, hi] (f of opposite signs at its ends; regula falsi with the
     !! Anderson-Bjorck correction where a Newton step would leave it). First `rough`
     !! evaluations (17-digit rules, transcendentals in double precision) until a step is
-    !! below 1e-7 of the unknown (the next iterate then within about 1e-14), then
+    !! below 1e-5 of the unknown (the next iterate then within about 1e-10), then
     !! hardware-precision ones (20-digit rules)
-    !! until a step is below 1e-12: by the quadratic convergence the root is then within
+    !! until a step is below 1e-12, or its own error by the measured curvature below 1e-20
+    !! of the unknown: by the quadratic convergence the root is then within
     !! the rounding of the hardware kind (usually one such evaluation). x the root, slope
     !! f'(x) (the form's), curvature |f''/2f'| measured between the iterates (0 if not).
     pure subroutine hardware_phase(model, prob, lo, f_lo, hi, f_hi, x, slope, curvature, &
@@ -1730,12 +1731,17 @@ contains
                 x_new = xk - fk/dk
                 if (.not. (x_new > min(a, b) .and. x_new < max(a, b))) x_new = falsi()
             end if
-            if (rough .and. abs(x_new - xk) <= 1.0e-7_xp*max(abs(xk), floor)) then
-                ! the rough root: on to the hardware-precision rules
+            if (rough .and. abs(x_new - xk) <= 1.0e-5_xp*max(abs(xk), floor)) then
+                ! the rough root (the next iterate within about 1e-10): on to the
+                ! hardware-precision rules
                 rough = .false.
                 call first_bracket(lo, f_lo, hi, f_hi, a, fa, b, fb)
             else if (.not. rough .and. &
-                     abs(x_new - xk) <= 1.0e-12_xp*max(abs(xk), floor)) then
+                     (abs(x_new - xk) <= 1.0e-12_xp*max(abs(xk), floor) .or. &
+                      (curvature > 0.0_qp .and. real(curvature, xp)*(x_new - xk)**2 <= &
+                       1.0e-20_xp*max(abs(xk), floor)))) then
+                ! the step's own error (|f''/2f'| step^2, twice that measured) below
+                ! 1e-20 of the unknown: the root within the rounding of the hardware kind
                 exit
             end if
             x_prev = xk
