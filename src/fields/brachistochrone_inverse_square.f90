@@ -253,59 +253,67 @@ contains
         values = upper*sums%value()
     end function whole_half_arch
 
-    !> cos(2 lambda_s) at the zeros of q in the lambda plane (double precision):
-    !! w = 2 (z_s - R)/(1 - R) - 1 with z_s = (-(1-R) + i sqrt((1-R)(3+R)))/2.
-    pure function singular_cosine(big_r) result(w)
-        real(qp), intent(in) :: big_r
-        complex(real64) :: w
-        real(real64) :: r, omr
-        r = real(big_r, real64)
-        omr = 1.0_real64 - r
-        w = 2.0_real64*(cmplx(-omr, sqrt(omr*(3.0_real64 + r)), real64)/2.0_real64 - r) &
-            /omr - 1.0_real64
-    end function singular_cosine
-
     !> Gauss nodes needed on the panel v in [0, upper] for `digits` digits of Theta.
     !!
-    !! The Theta integrand is analytic except at the zeros of q, where
-    !! cos(2 lambda) = w (`singular_cosine`), and at the poles v = +-i of the half-angle
-    !! substitution. In v = tan(lambda/2) the zeros of q sit at +-t, +-1/t with
-    !! t = tan(acos(w)/4) (w -> -w for the variable from A). An n-point Gauss rule then
-    !! errs by about rho^(-2n), rho the Bernstein ellipse through the nearest of them
-    !! (mapped to [-1, 1]). Double precision is ample for choosing n; the test suite checks
-    !! the result against the references.
+    !! The Theta integrand is analytic except at the zeros of q, where cos(2 lambda) = w,
+    !! w = -2/(1-R) + i sqrt((3+R)/(1-R)) (or -w for the variable from A), and at the
+    !! poles v = +-i of the half-angle substitution. In v = tan(lambda/2) the zeros of q
+    !! sit at +-t, +-1/t with t = tan(acos(w)/4), written without trigonometry as
+    !! t = sin(theta/2)/(1 + cos(theta/2)), theta = acos(w), where sin(theta/2) =
+    !! sqrt((1-w)/2) and cos(theta/2) = sqrt((1+w)/2) (principal roots: 0 <= Re theta
+    !! <= pi). An n-point Gauss rule then errs by about rho^(-2n), rho the Bernstein
+    !! ellipse through the nearest of them (mapped to [-1, 1]): for a point zeta that
+    !! is rho = a + sqrt(a^2 - 1), a = (|zeta| + |zeta - upper|)/upper the semi-axis of
+    !! the ellipse with foci 0 and upper through zeta (of +-t the one with Re >= 0 is
+    !! nearer). Double precision is ample for choosing n; the test suite checks the
+    !! result against the references.
     pure function nodes_needed(big_r, upper, from_apse, digits) result(n)
         real(qp), intent(in) :: big_r, upper, digits
         logical, intent(in) :: from_apse
         integer :: n
-        real(real64) :: rho_min
-        complex(real64) :: w, t, candidates(5)
-        integer :: k
+        real(real64) :: r, one_minus_r, u, axis, rho_min, w_re, w_im, sin_re, sin_im
+        real(real64) :: cos_re, cos_im, denominator, t_re, t_im, t2
         n = min_nodes
         if (big_r >= 1.0_qp .or. upper <= 0.0_qp) return
-        w = singular_cosine(big_r)
-        if (.not. from_apse) w = -w
-        t = tan(acos(w)/4.0_real64)
-        candidates = [t, -t, 1.0_real64/t, -1.0_real64/t, (0.0_real64, 1.0_real64)]
-        rho_min = huge(1.0_real64)
-        do k = 1, size(candidates)
-            rho_min = min(rho_min, bernstein(2.0_real64*candidates(k)/real(upper, real64) &
-                                             - 1.0_real64))
-        end do
+        r = real(big_r, real64)
+        one_minus_r = 1.0_real64 - r
+        w_re = merge(-2.0_real64, 2.0_real64, from_apse)/one_minus_r
+        w_im = merge(1.0_real64, -1.0_real64, from_apse)*sqrt((3.0_real64 + r)/one_minus_r)
+        call half_root(1.0_real64 - w_re, -w_im, sin_re, sin_im)
+        call half_root(1.0_real64 + w_re, w_im, cos_re, cos_im)
+        cos_re = 1.0_real64 + cos_re
+        denominator = cos_re*cos_re + cos_im*cos_im
+        t_re = abs(sin_re*cos_re + sin_im*cos_im)/denominator
+        t_im = (sin_im*cos_re - sin_re*cos_im)/denominator
+        t2 = t_re*t_re + t_im*t_im
+        u = real(upper, real64)
+        ! the nearest of t (Re >= 0), 1/t = conj(t)/|t|^2 and i
+        axis = min(sqrt(t2) + sqrt((t_re - u)**2 + t_im*t_im), &
+                   (1.0_real64 + sqrt((t_re - u*t2)**2 + t_im*t_im)/sqrt(t2))/sqrt(t2), &
+                   1.0_real64 + sqrt(1.0_real64 + u*u))/u
+        rho_min = axis + sqrt((axis - 1.0_real64)*(axis + 1.0_real64))
         if (rho_min <= 1.0_real64 + 1.0e-6_real64) then
             n = max_nodes
         else
             n = ceiling(real(digits, real64)*log(10.0_real64)/(2.0_real64*log(rho_min))) + 2
             n = min(max_nodes, max(min_nodes, n + mod(n, 2)))
         end if
-    contains
-        pure real(real64) function bernstein(x)
-            complex(real64), intent(in) :: x
-            complex(real64) :: root
-            root = sqrt(x*x - 1.0_real64)
-            bernstein = max(abs(x + root), abs(x - root))
-        end function bernstein
     end function nodes_needed
+
+    !> sqrt((x + i y)/2), principal branch, in real arithmetic (x + i y /= 0).
+    pure subroutine half_root(x, y, re, im)
+        real(real64), intent(in) :: x, y
+        real(real64), intent(out) :: re, im
+        real(real64) :: modulus
+        modulus = sqrt(x*x + y*y)
+        if (x >= 0.0_real64) then
+            re = sqrt(0.25_real64*(modulus + x))
+            im = 0.25_real64*y/re
+        else
+            im = sign(sqrt(0.25_real64*(modulus - x)), y)
+            re = 0.25_real64*y/im
+        end if
+    end subroutine half_root
 
     !> The kernel: angle (and optionally arclength, time, d(angle)/dR) at radius r on the
     !! first (`second = .false.`) or second half-arch of the brachistochrone with apse R.
@@ -527,8 +535,6 @@ contains
         real(qp) :: tolerance
         whole = 0.0_qp
         slope = 0.0_qp
-        ! the tables' values are about 1: an absolute tolerance a tenth of the level's
-        tolerance = 0.1_qp*10.0_qp**(-level_digits(level))
         ! (the T correction's slope is not needed: see two_point's Hamilton-Jacobi step)
         if (level == level_fine .or. level == level_final) then
             call model%whole(1)%evaluate(big_r, whole(1), slope(1))
@@ -537,6 +543,8 @@ contains
                 call model%whole(3)%evaluate(big_r, whole(3))
             end if
         else
+            ! the tables' values are about 1: an absolute tolerance a tenth of the level's
+            tolerance = 0.1_qp*10.0_qp**(-level_digits(level))
             call model%whole(1)%evaluate(big_r, whole(1), slope(1), tolerance)
             if (want_length_time) then
                 call model%whole(2)%evaluate(big_r, whole(2), slope(2), tolerance)
