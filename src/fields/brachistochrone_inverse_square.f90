@@ -34,7 +34,7 @@ module brachistochrone_inverse_square
     use brachistochrone_kinds, only: qp, pi, eps_qp, xp
     use brachistochrone_status, only: status_ok, argument_status
     use brachistochrone_closed_forms, only: radial_time
-    use brachistochrone_fast_math, only: inverse_sqrt
+    use brachistochrone_fast_math, only: inverse_sqrt, hardware_real
     use brachistochrone_chebyshev, only: chebyshev_table, chebyshev_points, chebyshev_fit, &
                                          chebyshev_table_xp, hardware_copy
     use brachistochrone_summation, only: compensated_sum
@@ -578,7 +578,7 @@ contains
         real(qp), intent(out) :: sums(5)
         real(qp) :: v, v2, jacobian, c, s, c2, z, q, theta_term, lengths, inverse
         real(qp) :: s_big_q, inverse_d, length_term, two_z_plus
-        real(xp) :: slopes(2)
+        real(xp) :: slopes(2), one_minus_big_r_xp
         logical :: quad_slopes
         integer :: k
 
@@ -589,6 +589,7 @@ contains
         length_term = 0.0_qp
         quad_slopes = want_derivative .and. .not. hardware_slopes
         if (upper <= 0.0_qp) return
+        one_minus_big_r_xp = hardware_real(one_minus_big_r)
         associate (rule => model%gauss(j))
         do k = 1, rule%n
             v = upper*rule%offset(k)
@@ -627,10 +628,10 @@ contains
                 end if
             end if
             if (want_derivative .and. hardware_slopes) then
-                call add_slopes_xp(real(z, xp), real(s, xp), real(inverse, xp), &
-                                   real(theta_term, xp), real(one_minus_big_r, xp), &
-                                   want_length_time, real(length_term, xp), &
-                                   real(s_big_q, xp), real(inverse_d, xp), slopes)
+                call add_slopes_xp(hardware_real(z), hardware_real(s), hardware_real(inverse), &
+                                   hardware_real(theta_term), one_minus_big_r_xp, &
+                                   want_length_time, hardware_real(length_term), &
+                                   hardware_real(s_big_q), hardware_real(inverse_d), slopes)
             end if
         end do
         end associate
