@@ -33,7 +33,7 @@
 module brachistochrone_inverse_square
     use brachistochrone_kinds, only: qp, pi, eps_qp, xp
     use brachistochrone_status, only: status_ok, argument_status
-    use brachistochrone_closed_forms, only: radial_time
+    use brachistochrone_closed_forms, only: radial_time_of_roots
     use brachistochrone_fast_math, only: inverse_sqrt, hardware_real
     use brachistochrone_chebyshev, only: chebyshev_table, chebyshev_points, chebyshev_fit, &
                                          chebyshev_table_xp, hardware_copy
@@ -440,6 +440,7 @@ contains
         real(qp) :: one_minus_r, one_minus_big_r, cos_l, sin_l, z_l, q_l, length_ratio
         real(qp) :: part(5), whole(3), whole_slope(3), correction_scale, digits
         real(qp) :: upper_apse, upper_start, whole_factor, length_integral, time_integral
+        real(qp) :: root_big_r, root_one_minus_r, root_one_minus_big_r, root_q_l
         integer :: rule_apse, rule_start
 
         digits = level_digits(level)
@@ -447,6 +448,16 @@ contains
         one_minus_big_r = one_minus_r + d
         cos_l = sqrt(big_r*one_minus_r/(r*one_minus_big_r))
         sin_l = sqrt(d/(r*one_minus_big_r))
+        ! square roots shared by the boundary term, the T factors and the radial times
+        root_big_r = 0.0_qp
+        root_one_minus_r = 0.0_qp
+        root_one_minus_big_r = 0.0_qp
+        root_q_l = 0.0_qp
+        if (want_derivative .or. want_length_time) then
+            root_big_r = sqrt(big_r)
+            root_one_minus_r = sqrt(one_minus_r)
+        end if
+        if (want_length_time) root_one_minus_big_r = sqrt(one_minus_big_r)
 
         ! One Gauss panel, from the apse (lambda in [0, L]) or from A ([L, pi/2]), and on
         ! the second half-arch the whole-half-arch tables: F = whole_factor * whole + part.
@@ -463,18 +474,21 @@ contains
             rule_apse = rule_index(big_r, upper_apse, .true., digits, want_length_time)
             if (rule_apse <= rule_start) then
                 call sweep(model, rule_apse, big_r, one_minus_big_r, upper_apse, .true., &
-                           want_derivative, want_length_time, level == level_final, part)
+                           want_derivative, want_length_time, level == level_final, &
+                           root_one_minus_big_r, part)
                 whole_factor = 1.0_qp
             else
                 call sweep(model, rule_start, big_r, one_minus_big_r, upper_start, .false., &
-                           want_derivative, want_length_time, level == level_final, part)
+                           want_derivative, want_length_time, level == level_final, &
+                           root_one_minus_big_r, part)
                 whole_factor = 2.0_qp
                 part = -part
             end if
             values%boundary_sign = -1.0_qp
         else
             call sweep(model, rule_start, big_r, one_minus_big_r, upper_start, .false., &
-                       want_derivative, want_length_time, level == level_final, part)
+                       want_derivative, want_length_time, level == level_final, &
+                           root_one_minus_big_r, part)
             whole_factor = 0.0_qp
             whole = 0.0_qp
             whole_slope = 0.0_qp
@@ -492,28 +506,32 @@ contains
         if (want_derivative) then
             z_l = big_r/r
             q_l = z_l*z_l + one_minus_big_r*(1.0_qp + z_l)
-            values%boundary = sqrt(big_r)*one_minus_r*sqrt(one_minus_r) &
-                              /(r*one_minus_big_r*sqrt(q_l))
+            root_q_l = sqrt(q_l)
+            values%boundary = root_big_r*one_minus_r*root_one_minus_r &
+                              /(r*one_minus_big_r*root_q_l)
         end if
 
         if (want_length_time) then
-            correction_scale = big_r*sqrt(big_r)/sqrt(2.0_qp)
+            correction_scale = big_r*root_big_r/sqrt(2.0_qp)
             ! the S and T corrections: I = whole_factor * whole + part as for the angle
             length_integral = whole_factor*one_minus_big_r*whole(2) + part(3)
-            time_integral = whole_factor*sqrt(one_minus_big_r)*whole(3) + part(4)
+            time_integral = whole_factor*root_one_minus_big_r*whole(3) + part(4)
             if (second) then
                 values%arclength = (one_minus_big_r + d) + big_r*length_integral
-                values%time = 2.0_qp*radial_time(big_r, one_minus_big_r) - radial_time(r) &
+                values%time = 2.0_qp*radial_time_of_roots(big_r, one_minus_big_r, &
+                                                          root_big_r, root_one_minus_big_r) &
+                              - radial_time_of_roots(r, one_minus_r, sqrt(r), root_one_minus_r) &
                               + correction_scale*time_integral
             else
                 values%arclength = one_minus_r + big_r*length_integral
-                values%time = radial_time(r) + correction_scale*time_integral
+                values%time = radial_time_of_roots(r, one_minus_r, sqrt(r), root_one_minus_r) &
+                              + correction_scale*time_integral
             end if
             if (want_derivative) then
                 ! dS/dR: S = (1 - r) + R I on the first half-arch, (1 + r - 2R) + R I on
                 ! the second; the moving limit adds R G(L) |L'(R)|, G the S integrand,
                 ! G(L)/Theta integrand(L) = cos L/(1 + sin L Q(L))
-                length_ratio = cos_l/(1.0_qp + sin_l*sqrt(q_l))
+                length_ratio = cos_l/(1.0_qp + sin_l*root_q_l)
                 values%arclength_boundary = big_r*length_ratio*values%boundary
                 values%arclength_dr_smooth = merge(-2.0_qp, 0.0_qp, second) &
                     + length_integral + big_r*(whole_factor*(one_minus_big_r*whole_slope(2) &
@@ -569,12 +587,14 @@ contains
     !! v = tau from the apse or v = eta from the start, both with
     !! d lambda = 2 dv/(1 + v^2). The last entry is filled only with both flags set.
     pure subroutine sweep(model, j, big_r, one_minus_big_r, upper, from_apse, &
-                          want_derivative, want_length_time, hardware_slopes, sums)
+                          want_derivative, want_length_time, hardware_slopes, &
+                          root_one_minus_big_r, sums)
         type(inverse_square_model), intent(in) :: model
         integer, intent(in) :: j  !! the rule: model%gauss(j), from `rule_index`
         real(qp), intent(in) :: big_r, one_minus_big_r, upper
         logical, intent(in) :: from_apse, want_derivative, want_length_time
         logical, intent(in) :: hardware_slopes !! the d/dR sums in `xp` (level_final)
+        real(qp), intent(in) :: root_one_minus_big_r !! sqrt(1 - R) (with want_length_time)
         real(qp), intent(out) :: sums(5)
         real(qp) :: v, v2, jacobian, c, s, c2, z, q, theta_term, lengths, inverse
         real(qp) :: s_big_q, inverse_d, length_term, two_z_plus
@@ -642,7 +662,7 @@ contains
         sums(2) = sums(2)*0.5_qp*upper
         sums(5) = -sums(3)*upper - 0.5_qp*one_minus_big_r*sums(5)*upper
         sums(3) = sums(3)*upper*one_minus_big_r
-        sums(4) = sums(4)*upper*sqrt(one_minus_big_r)
+        if (want_length_time) sums(4) = sums(4)*upper*root_one_minus_big_r
     end subroutine sweep
 
     !> The d/dR integrands of `sweep` at one node, added in hardware precision.
