@@ -21,7 +21,7 @@
 !! - `solve_endpoint_secant`: the paper's secant method from R0, R1 with its stopping
 !!   rule |R_n - R_(n-1)| < tol and a step count, which reproduces Table 1.
 module brachistochrone_two_point
-    use brachistochrone_kinds, only: qp, pi, eps_qp
+    use brachistochrone_kinds, only: qp, pi, eps_qp, xp
     use brachistochrone_status, only: status_ok, status_inaccessible, status_outside_domain, &
                                       status_no_convergence
     use brachistochrone_solution, only: endpoint_solution, endpoint_status, region_inside
@@ -490,32 +490,38 @@ contains
     !> First iterate on [0, h]: the root of the cubic Hermite interpolant of F from
     !! F(0) = f0, F'(0) = slope0, F(h) = fh, F'(h) = slope_h, found by Newton's method on
     !! the cubic kept inside the bracket (F(0), F(h) have opposite signs); regula falsi
-    !! if that fails. Exact for rho = 1, where F(u) = pi u^2 - psi + O(u^4).
+    !! if that fails. Exact for rho = 1, where F(u) = pi u^2 - psi + O(u^4). Only a
+    !! start to 1e-12: in hardware precision where that has quad's exponent range.
     pure function hermite_start(f0, slope0, h, fh, slope_h) result(x)
         real(qp), intent(in) :: f0, slope0, h, fh, slope_h
         real(qp) :: x
-        real(qp) :: c2, c3, delta, delta_slope, lo, hi, p, dp, step
+        integer, parameter :: wk = merge(xp, qp, range(1.0_xp) >= range(1.0_qp))
+        real(wk) :: c2, c3, delta, delta_slope, lo, hi, p, dp, step, y, a0, a1, width
         integer :: iteration
-        x = h*f0/(f0 - fh)
-        delta = fh - f0 - slope0*h
-        delta_slope = slope_h - slope0
-        c3 = (delta_slope*h - 2.0_qp*delta)/h**3
-        c2 = (3.0_qp*delta - delta_slope*h)/h**2
-        lo = 0.0_qp
-        hi = h
+        a0 = real(f0, wk)
+        a1 = real(slope0, wk)
+        width = real(h, wk)
+        y = width*a0/(a0 - real(fh, wk))
+        delta = real(fh, wk) - a0 - a1*width
+        delta_slope = real(slope_h, wk) - a1
+        c3 = (delta_slope*width - 2.0_wk*delta)/width**3
+        c2 = (3.0_wk*delta - delta_slope*width)/width**2
+        lo = 0.0_wk
+        hi = width
         do iteration = 1, 60
-            p = f0 + x*(slope0 + x*(c2 + x*c3))
-            if ((p < 0.0_qp) .eqv. (f0 < 0.0_qp)) then
-                lo = x
+            p = a0 + y*(a1 + y*(c2 + y*c3))
+            if ((p < 0.0_wk) .eqv. (a0 < 0.0_wk)) then
+                lo = y
             else
-                hi = x
+                hi = y
             end if
-            dp = slope0 + x*(2.0_qp*c2 + 3.0_qp*x*c3)
+            dp = a1 + y*(2.0_wk*c2 + 3.0_wk*y*c3)
             step = p/dp
-            if (.not. (x - step > lo .and. x - step < hi)) step = x - 0.5_qp*(lo + hi)
-            x = x - step
-            if (abs(step) <= 1.0e-12_qp*h) return
+            if (.not. (y - step > lo .and. y - step < hi)) step = y - 0.5_wk*(lo + hi)
+            y = y - step
+            if (abs(step) <= 1.0e-12_wk*width) exit
         end do
+        x = real(y, qp)
     end function hermite_start
 
     !> Arclength and time at B once R-bar is known.
