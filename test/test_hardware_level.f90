@@ -8,7 +8,7 @@ module test_hardware_level
                                              ieee_is_nan
     use brachistochrone_inverse_square, only: inverse_square_model, new_inverse_square_model, &
         evaluate_arch, arch_values, level_fine, level_hardware, level_final, &
-        hardware_epsilon
+        hardware_epsilon, apse_estimate_error
     use brachistochrone_two_point, only: solve_endpoint
     use brachistochrone_solution, only: endpoint_solution
     use testing, only: check, section
@@ -71,6 +71,7 @@ contains
         call check(solution%has_apse_radius .and. solution%apse_radius > 0.0_qp .and. &
                    solution%apse_radius < 1.0e-150_qp, 'hardware level: psi = 1e-300 solved')
         call conversion_tests()
+        call apse_estimate_tests(model)
     end subroutine run_hardware_level_tests
 
     !> level_final: the values bit for bit those of level_fine, the slopes within their
@@ -162,6 +163,31 @@ contains
         call check(ieee_is_nan(hardware_real(ieee_value(1.0_qp, ieee_quiet_nan))), &
                    'hardware_real(NaN) is NaN')
     end subroutine conversion_tests
+
+    !> apse_angle_estimate (hardware table) against apse_angle (the full table, itself
+    !! checked against the references) from R = 1e-300 to 1 - 1e-30.
+    subroutine apse_estimate_tests(model)
+        type(inverse_square_model), intent(in) :: model
+        real(qp) :: big_r, exact, worst
+        integer :: i, status
+        worst = 0.0_qp
+        do i = 0, 400
+            if (i <= 100) then
+                big_r = 10.0_qp**(-3*i)
+            else if (i <= 300) then
+                big_r = real(i - 100, qp)/201.0_qp
+            else
+                big_r = 1.0_qp - 10.0_qp**(-0.3_qp*real(i - 300, qp))
+            end if
+            call model%apse_angle(big_r, exact, status)
+            if (exact > 0.0_qp) worst = max(worst, &
+                abs(model%apse_angle_estimate(big_r) - exact)/exact)
+        end do
+        call check(worst <= apse_estimate_error, &
+                   'apse_angle_estimate within its documented relative error')
+        call check(worst <= 100.0_qp*hardware_epsilon, &
+                   'apse_angle_estimate within 100 roundings of the hardware kind')
+    end subroutine apse_estimate_tests
 
     !> a and b have the same value and sign (zeros by sign, infinities equal).
     pure logical function same_bits(a, b)

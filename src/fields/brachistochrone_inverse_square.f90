@@ -45,7 +45,7 @@ module brachistochrone_inverse_square
 
     public :: inverse_square_model, new_inverse_square_model
     public :: evaluate_arch, arch_values, level_fine, level_coarse, level_rough, level_digits
-    public :: level_hardware, level_final, hardware_epsilon
+    public :: level_hardware, level_final, hardware_epsilon, apse_estimate_error
 
     !> Rule set selector: full quad precision.
     integer, parameter :: level_fine = 1
@@ -66,6 +66,9 @@ module brachistochrone_inverse_square
     !> Relative rounding of `xp` (the level_hardware evaluations are about 100 times
     !! less accurate).
     real(qp), parameter :: hardware_epsilon = real(epsilon(1.0_xp), qp)
+    !> Bound on the relative error of `apse_angle_estimate` (the table's cut 1e-20 and
+    !! the rounding of its Horner sum, far below this on x87; double is 1000x coarser).
+    real(qp), parameter :: apse_estimate_error = 1.0e4_qp*hardware_epsilon
     !> Below this, R, r - R or 1 - r are too small for level_hardware.
     real(qp), parameter :: hardware_floor = 1.0e-250_qp
 
@@ -111,6 +114,7 @@ module brachistochrone_inverse_square
         procedure :: arclength      !! S(r,R), eq. (56)
         procedure :: travel_time    !! T(r,R), eq. (57)
         procedure :: apse_angle     !! Theta(R,R), eq. (66)
+        procedure :: apse_angle_estimate !! Theta(R,R) in hardware precision
     end type inverse_square_model
 
     !> Angle, arclength and time at radius r of the brachistochrone with apse R, on one
@@ -765,5 +769,18 @@ contains
         call self%whole(1)%evaluate(big_r, scaled)
         value = (1.0_qp - big_r)*scaled
     end subroutine apse_angle
+
+    !> Theta(R,R) from the hardware-precision copy of its table (`whole_xp`, cut at
+    !! 1e-20): relative error below `apse_estimate_error`, at a small fraction of the
+    !! cost of `apse_angle`; for decisions that need the full value only when close.
+    !! Precondition (not checked): 0 < R <= 1.
+    pure function apse_angle_estimate(self, big_r) result(value)
+        class(inverse_square_model), intent(in) :: self
+        real(qp), intent(in) :: big_r  !! apse radius, 0 < R <= 1
+        real(qp) :: value
+        real(xp) :: scaled
+        call self%whole_xp%evaluate(hardware_real(big_r), scaled)
+        value = real(hardware_real(1.0_qp - big_r)*scaled, qp)
+    end function apse_angle_estimate
 
 end module brachistochrone_inverse_square

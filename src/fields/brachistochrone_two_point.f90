@@ -27,7 +27,7 @@ module brachistochrone_two_point
     use brachistochrone_solution, only: endpoint_solution, endpoint_status, region_inside
     use brachistochrone_closed_forms, only: radial_time, kappa_time, inaccessible_angle
     use brachistochrone_inverse_square, only: inverse_square_model, evaluate_arch, arch_values, &
-            level_fine, level_hardware, level_final, hardware_epsilon
+            level_fine, level_hardware, level_final, hardware_epsilon, apse_estimate_error
     use brachistochrone_roots, only: root_function, secant, newton_iteration, newton_begin, &
                                      newton_advance
     use brachistochrone_arches, only: arch_first, arch_second, arch_complete, arch_radial, &
@@ -122,7 +122,13 @@ contains
             solution%has_time = .true.
         else
             done = .false.
-            if (rho < 1.0_qp) call model%apse_angle(rho, apse_angle_rho, status)
+            ! Theta(rho, rho) in hardware precision decides the half-arch (and starts the
+            ! search) unless psi is within 100 times its error; then the full table
+            if (rho < 1.0_qp) then
+                apse_angle_rho = model%apse_angle_estimate(rho)
+                if (abs(psi - apse_angle_rho) <= 100.0_qp*apse_estimate_error*psi) &
+                    call model%apse_angle(rho, apse_angle_rho, status)
+            end if
             if (rho == 1.0_qp) then
                 solution%arch = arch_complete
             else if (psi <= apse_angle_rho) then
