@@ -169,9 +169,11 @@ contains
             ! dR/du = -2u, and u/sqrt(rho - R) = 1
             slope = -2.0_qp*x*smooth - 2.0_qp*boundary
         else
-            ! dUpsilon/dR is infinite at the apse (R = rho)
+            ! dUpsilon/dR is infinite at the apse (R = rho); no square root for the
+            ! error bounds of final_step (boundary 0)
             if (d > 0.0_qp) then
-                slope = smooth + boundary/sqrt(d)
+                slope = smooth
+                if (boundary /= 0.0_qp) slope = smooth + boundary/sqrt(d)
             else
                 slope = sign(huge(1.0_qp), boundary)
             end if
