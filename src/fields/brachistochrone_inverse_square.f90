@@ -357,10 +357,10 @@ contains
         real(xp) :: upper_apse, upper_start, part(2), whole, whole_slope, whole_factor
         integer :: rule_apse, rule_start
 
-        rr = real(r, xp)
-        br = real(big_r, xp)
-        dd = real(d, xp)
-        one_minus_r = real(1.0_qp - r, xp)
+        rr = hardware_real(r)
+        br = hardware_real(big_r)
+        dd = hardware_real(d)
+        one_minus_r = hardware_real(1.0_qp - r)
         one_minus_big_r = one_minus_r + dd
         cos_l = sqrt(br*one_minus_r/(rr*one_minus_big_r))
         sin_l = sqrt(dd/(rr*one_minus_big_r))
