@@ -45,7 +45,7 @@ module brachistochrone_inverse_square
 
     public :: inverse_square_model, new_inverse_square_model
     public :: evaluate_arch, arch_values, level_fine, level_coarse, level_rough, level_digits
-    public :: level_hardware, level_final, hardware_epsilon, apse_estimate_error
+    public :: level_hardware, level_final, hardware_epsilon
 
     !> Rule set selector: full quad precision.
     integer, parameter :: level_fine = 1
@@ -66,6 +66,7 @@ module brachistochrone_inverse_square
     !> Relative rounding of `xp` (the level_hardware evaluations are about 100 times
     !! less accurate).
     real(qp), parameter :: hardware_epsilon = real(epsilon(1.0_xp), qp)
+    public :: apse_estimate_error
     !> Bound on the relative error of `apse_angle_estimate` (the table's cut 1e-20 and
     !! the rounding of its Horner sum, far below this on x87; double is 1000x coarser).
     real(qp), parameter :: apse_estimate_error = 1.0e4_qp*hardware_epsilon
