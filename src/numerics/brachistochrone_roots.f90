@@ -6,6 +6,8 @@
 !!   stops when the predicted error of the last iterate is below the tolerance: with
 !!   quadratic convergence the error after a step dx_k is about |dx_k|^2 |dx_k| /
 !!   |dx_{k-1}|^2, which saves the confirming evaluation a plain |dx| test needs.
+!!   The same iteration driven by the caller (`newton_begin`, then `newton_advance` with
+!!   each f, f'), for a function that cannot be a root_function without copying data.
 !! - `bracketed_secant`: regula falsi with the Anderson-Bjorck correction, for functions
 !!   without a derivative: superlinear, and never leaves the bracket.
 !! - `secant`: the paper's secant method (Tee 1998, sec. 5.1) with its stopping rule
