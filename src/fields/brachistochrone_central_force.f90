@@ -68,7 +68,7 @@ module brachistochrone_central_force
                                       status_no_convergence, argument_status, &
                                       status_parameter_out_of_range
     use brachistochrone_quad_math, only: log1p
-    use brachistochrone_fast_math, only: inverse_sqrt
+    use brachistochrone_fast_math, only: inverse_sqrt, hardware_real
     use brachistochrone_fast_exp, only: fast_exp
     use brachistochrone_quadrature, only: gauss_legendre_rule, gauss_legendre
     use brachistochrone_speed_laws, only: speed_law
@@ -921,10 +921,10 @@ contains
                 if (present(slopes)) then
                     ! g q'/(2 q (1 - q)) and e^lambda q'/(2 (1 - q)^(3/2)) = the same
                     ! times sqrt(q)/rx (weighted)
-                    g_xp = real(g(1), xp)*(0.5_xp*log_slope/real(omq, xp))
+                    g_xp = hardware_real(g(1))*(0.5_xp*log_slope/hardware_real(omq))
                     ! compensated sums: the error bound of `arch_values` counts on it
                     call add_compensated(part_xp, carry, &
-                                         [g_xp, g_xp*(real(root_q, xp)/real(rx, xp))])
+                                         [g_xp, g_xp*(hardware_real(root_q)/hardware_real(rx))])
                 end if
                 ! the node nearest the next panel
                 if (k == merge(1, model%gauss(j)%n, pan%kind >= kind_start .and. &
