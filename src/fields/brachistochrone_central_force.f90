@@ -35,7 +35,8 @@
 !! (Lambda in [0.02, 11]) as piecewise Chebyshev series in z = log Lambda (equal pieces
 !! in z are graded toward R = 1, where the integrals are not analytic), each piece
 !! checked at build time against the quadrature between its points and used only if it
-!! agrees (`build_whole_tables`). A full evaluation then integrates only the panels
+!! agrees (`build_whole_tables`; the slopes as their logarithms: a steep law's fall like
+!! R^((n+1)/2) across a piece). A full evaluation then integrates only the panels
 !! between the endpoint and the nearer end (`table_sums`): the second half-arch is
 !! W + int_0^lambda_r or 2W - int_lambda_r^Lambda, the first int_lambda_r^Lambda or
 !! W - int_0^lambda_r (if that loses at most a bit). Beyond them, Lambda up to 80 (R down
