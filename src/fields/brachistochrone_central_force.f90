@@ -52,7 +52,7 @@
 !! safeguarded Newton steps on Theta and its analytic slope d Theta/d Lambda (the
 !! integrand's derivative at fixed lambda, g q'/(2 q (1 - q)) with q' = d q/d Lambda
 !! from the law, summed on the same nodes, plus the jump of the weights times g at the
-!! endpoint), first on 17-digit rules with double-precision transcendentals, then on
+!! endpoint), first on 12-digit rules with double-precision transcendentals, then on
 !! 20-digit rules, to within the rounding of the hardware kind. Then one full-precision
 !! evaluation of Theta, S and T with their slopes in hardware precision (`final_step`):
 !! a Newton step of relative size about 1e-18, certified when its curvature and slope
@@ -89,8 +89,10 @@ module brachistochrone_central_force
     integer, parameter :: min_nodes = 4, max_nodes = 80
     !> Digits aimed at by the full and the double-precision rules.
     real(qp), parameter :: fine_digits = 35.0_qp, coarse_digits = 17.0_qp
-    !> Digits aimed at by the hardware-precision rules of the early phase.
-    real(qp), parameter :: hardware_digits = 20.0_qp
+    !> Digits aimed at by the hardware-precision rules of the early phase, and by its
+    !! rough evaluations (which end at a step below 1e-5: 12 digits place the next
+    !! iterate within about 1e-10)
+    real(qp), parameter :: hardware_digits = 20.0_qp, rough_digits = 12.0_qp
     !> A panel whose bound is below this share of the running sum is skipped.
     real(qp), parameter :: negligible = 1.0e-40_qp
     !> Panel kinds: lambda = b s^2 (from the apse), lambda, delta, delta = c s^2 (from
@@ -1448,7 +1450,7 @@ contains
     pure subroutine theta_xp(model, a, rough, theta, slope, shift)
         type(central_force_model), intent(in) :: model
         type(arch_setup), intent(in) :: a
-        logical, intent(in) :: rough   !! 17-digit rules, transcendentals in double
+        logical, intent(in) :: rough   !! 12-digit rules, transcendentals in double
         real(xp), intent(out) :: theta, slope, shift
         type(arch_setup) :: below, above
         type(panel) :: panels_below(max_panels), panels_above(max_panels)
@@ -1515,7 +1517,7 @@ contains
                                    given_count)
         type(central_force_model), intent(in) :: model
         type(arch_setup), intent(in) :: a
-        logical, intent(in) :: rough   !! 17-digit rules, transcendentals in double
+        logical, intent(in) :: rough   !! 12-digit rules, transcendentals in double
         real(xp), intent(in) :: shift
         real(xp), intent(out) :: theta, slope
         !> `arch_panels(model, a, given, given_count)` where the caller has them
@@ -1543,7 +1545,7 @@ contains
                 if (share < 1.0e-24_xp) cycle
             end if
             pan%log_rho = bernstein_log(model, a%big_lambda, pan)
-            j = rule_for(pan%log_rho, merge(coarse_digits, hardware_digits, rough) + &
+            j = rule_for(pan%log_rho, merge(rough_digits, hardware_digits, rough) + &
                          real(min(0.0_xp, log10(max(share, 1.0e-30_xp))), qp), &
                          panel_growth(pan, 2.0_qp*pi/model%sigma_apse))
             scale = real(pan%scale, xp)
@@ -1670,7 +1672,7 @@ contains
     !> The early phase in hardware precision: Newton steps on the analytic slope, kept in
     !! the bracket [lo, hi] (f of opposite signs at its ends; regula falsi with the
     !! Anderson-Bjorck correction where a Newton step would leave it). First `rough`
-    !! evaluations (17-digit rules, transcendentals in double precision) until a step is
+    !! evaluations (12-digit rules, transcendentals in double precision) until a step is
     !! below 1e-5 of the unknown (the next iterate then within about 1e-10), then
     !! hardware-precision ones (20-digit rules)
     !! until a step is below 1e-12, or its own error by the measured curvature below 1e-20
