@@ -1490,7 +1490,8 @@ contains
                 call panel_theta_xp(model, above, rough, shift, part, part_slope, &
                                     panels_above, n_above)
             end if
-            ! (the rough evaluations, which need about 7 digits, lose up to 10 bits)
+            ! (the rough evaluations, on 12-digit rules for a root to about 1e-10, lose up
+            ! to 10 bits)
             if (a%weight_below == 0.0_qp .and. use_below .and. .not. ((part <= &
                 0.5_xp*whole(1) .and. a%delta_r >= 0.5_qp*a%big_lambda) .or. &
                 (rough .and. part <= 0.999_xp*whole(1)))) then
