@@ -35,7 +35,8 @@
 !! (Lambda in [0.02, 11]) as piecewise Chebyshev series in z = log Lambda (equal pieces
 !! in z are graded toward R = 1, where the integrals are not analytic), each piece
 !! checked at build time against the quadrature between its points and used only if it
-!! agrees (`build_whole_tables`). A full evaluation then integrates only the panels
+!! agrees (`build_whole_tables`; the slopes as their logarithms: a steep law's fall like
+!! R^((n+1)/2) across a piece). A full evaluation then integrates only the panels
 !! between the endpoint and the nearer end (`table_sums`): the second half-arch is
 !! W + int_0^lambda_r or 2W - int_lambda_r^Lambda, the first int_lambda_r^Lambda or
 !! W - int_0^lambda_r (if that loses at most a bit). Beyond them, Lambda up to 80 (R down
@@ -51,7 +52,7 @@
 !! safeguarded Newton steps on Theta and its analytic slope d Theta/d Lambda (the
 !! integrand's derivative at fixed lambda, g q'/(2 q (1 - q)) with q' = d q/d Lambda
 !! from the law, summed on the same nodes, plus the jump of the weights times g at the
-!! endpoint), first on 17-digit rules with double-precision transcendentals, then on
+!! endpoint), first on 12-digit rules with double-precision transcendentals, then on
 !! 20-digit rules, to within the rounding of the hardware kind. Then one full-precision
 !! evaluation of Theta, S and T with their slopes in hardware precision (`final_step`):
 !! a Newton step of relative size about 1e-18, certified when its curvature and slope
@@ -68,7 +69,7 @@ module brachistochrone_central_force
                                       status_no_convergence, argument_status, &
                                       status_parameter_out_of_range
     use brachistochrone_quad_math, only: log1p
-    use brachistochrone_fast_math, only: inverse_sqrt
+    use brachistochrone_fast_math, only: inverse_sqrt, hardware_real
     use brachistochrone_fast_exp, only: fast_exp
     use brachistochrone_quadrature, only: gauss_legendre_rule, gauss_legendre
     use brachistochrone_speed_laws, only: speed_law
@@ -88,8 +89,10 @@ module brachistochrone_central_force
     integer, parameter :: min_nodes = 4, max_nodes = 80
     !> Digits aimed at by the full and the double-precision rules.
     real(qp), parameter :: fine_digits = 35.0_qp, coarse_digits = 17.0_qp
-    !> Digits aimed at by the hardware-precision rules of the early phase.
-    real(qp), parameter :: hardware_digits = 20.0_qp
+    !> Digits aimed at by the hardware-precision rules of the early phase, and by its
+    !! rough evaluations (which end at a step below 1e-5: 12 digits place the next
+    !! iterate within about 1e-10)
+    real(qp), parameter :: hardware_digits = 20.0_qp, rough_digits = 12.0_qp
     !> A panel whose bound is below this share of the running sum is skipped.
     real(qp), parameter :: negligible = 1.0e-40_qp
     !> Panel kinds: lambda = b s^2 (from the apse), lambda, delta, delta = c s^2 (from
@@ -142,9 +145,9 @@ module brachistochrone_central_force
         real(xp), allocatable :: whole_xp(:, :, :)
         !> Theta, S and T tables: the powers of t from whole_split(piece, m) on, whose
         !! sum of sizes is below 2^-60 of the value's, in hardware precision
-        !! (`whole_value`)
+        !! (`whole_value`); the slopes' (logarithms): below 2^-10
         real(xp), allocatable :: whole_tail_xp(:, :, :)
-        integer :: whole_split(table_pieces, 3) = table_points
+        integer :: whole_split(table_pieces, 5) = table_points
     contains
         procedure :: half_arch => general_half_arch    !! theta, s, t at r (eqs. 27-41)
         procedure :: apse_angle => general_apse_angle  !! Theta(R,R)
@@ -281,7 +284,7 @@ contains
         end do
         model%whole_xp = reshape(real([model%whole(1)%power, model%whole(4)%power], xp), &
                                  [table_points, table_pieces, 2])
-        call split_whole_tables(model, values(:, :, 1:3))
+        call split_whole_tables(model, values)
         width = (upper - lower)/real(table_pieces, qp)
         do piece = 1, table_pieces
             model%whole_ok(piece) = positive
@@ -373,18 +376,21 @@ contains
     !! which on the sum of the coefficients' sizes is below 2^-60 of the value's least
     !! size (half the least of the tabulated values): Horner's rule in hardware precision
     !! there (error below ~70 eps(xp) 2^-60 < eps/4 of the value, t's rounding included).
+    !! For the slopes' logarithms (m = 4, 5; wanted to about eps(xp)/10 absolute) from
+    !! where that sum is below 2^-10 (error below ~70 eps(xp) 2^-10).
     subroutine split_whole_tables(model, values)
         type(central_force_model), intent(inout) :: model
         real(qp), intent(in) :: values(:, :, :)  !! the tabulated values (point, piece, m)
         real(qp) :: least, tail
         integer :: piece, m, j, used
-        allocate (model%whole_tail_xp(0:table_points - 1, table_pieces, 3))
+        allocate (model%whole_tail_xp(0:table_points - 1, table_pieces, 5))
         model%whole_tail_xp = 0.0_xp
-        do m = 1, 3
+        do m = 1, 5
             do piece = 1, table_pieces
                 ! (no associate: a section's name would start at 1)
                 used = model%whole(m)%used(piece)
                 least = 0.5_qp*minval(abs(values(:, piece, m)))
+                if (m > 3) least = 2.0_qp**50
                 model%whole_split(piece, m) = used
                 tail = 0.0_qp
                 do j = used - 1, 1, -1
@@ -398,8 +404,8 @@ contains
         end do
     end subroutine split_whole_tables
 
-    !> Table m at z: the powers of t from `whole_split` on in hardware precision (Theta,
-    !! S, T), the rest (and the slopes' tables) as `evaluate`.
+    !> Table m at z: the powers of t from `whole_split` on in hardware precision, the
+    !! rest in quad precision; the slopes (m = 4, 5) from their logarithms.
     pure subroutine whole_value(model, m, z, value)
         type(central_force_model), intent(in) :: model
         integer, intent(in) :: m
@@ -408,15 +414,6 @@ contains
         real(qp) :: width, position, t
         real(xp) :: t_xp, high, low
         integer :: piece, j, split, used
-        if (m > 3) then
-            ! the slopes' tables hold their logarithms: exp in hardware precision, the
-            ! logarithm's part below the hardware kind's rounding taken as a factor
-            call model%whole(m)%evaluate(z, value)
-            high = real(value, xp)
-            low = real(value - real(high, qp), xp)
-            value = real(exp(high)*(1.0_xp + low), qp)
-            return
-        end if
         associate (table => model%whole(m))
         width = (table%upper - table%lower)/real(table%pieces, qp)
         position = (z - table%lower)/width
@@ -434,6 +431,13 @@ contains
             value = value*t + table%power(j, piece)
         end do
         end associate
+        if (m > 3) then
+            ! the slopes' tables hold their logarithms: exp in hardware precision, the
+            ! logarithm's part below the hardware kind's rounding taken as a factor
+            high = real(value, xp)
+            low = real(value - real(high, qp), xp)
+            value = real(exp(high)*(1.0_xp + low), qp)
+        end if
     end subroutine whole_value
 
     !> Tabulate the whole-half-arch integrals beyond the tables (Lambda from table_high
@@ -920,10 +924,10 @@ contains
                 if (present(slopes)) then
                     ! g q'/(2 q (1 - q)) and e^lambda q'/(2 (1 - q)^(3/2)) = the same
                     ! times sqrt(q)/rx (weighted)
-                    g_xp = real(g(1), xp)*(0.5_xp*log_slope/real(omq, xp))
+                    g_xp = hardware_real(g(1))*(0.5_xp*log_slope/hardware_real(omq))
                     ! compensated sums: the error bound of `arch_values` counts on it
                     call add_compensated(part_xp, carry, &
-                                         [g_xp, g_xp*(real(root_q, xp)/real(rx, xp))])
+                                         [g_xp, g_xp*(hardware_real(root_q)/hardware_real(rx))])
                 end if
                 ! the node nearest the next panel
                 if (k == merge(1, model%gauss(j)%n, pan%kind >= kind_start .and. &
@@ -1446,7 +1450,7 @@ contains
     pure subroutine theta_xp(model, a, rough, theta, slope, shift)
         type(central_force_model), intent(in) :: model
         type(arch_setup), intent(in) :: a
-        logical, intent(in) :: rough   !! 17-digit rules, transcendentals in double
+        logical, intent(in) :: rough   !! 12-digit rules, transcendentals in double
         real(xp), intent(out) :: theta, slope, shift
         type(arch_setup) :: below, above
         type(panel) :: panels_below(max_panels), panels_above(max_panels)
@@ -1486,7 +1490,8 @@ contains
                 call panel_theta_xp(model, above, rough, shift, part, part_slope, &
                                     panels_above, n_above)
             end if
-            ! (the rough evaluations, which need about 7 digits, lose up to 10 bits)
+            ! (the rough evaluations, on 12-digit rules for a root to about 1e-10, lose up
+            ! to 10 bits)
             if (a%weight_below == 0.0_qp .and. use_below .and. .not. ((part <= &
                 0.5_xp*whole(1) .and. a%delta_r >= 0.5_qp*a%big_lambda) .or. &
                 (rough .and. part <= 0.999_xp*whole(1)))) then
@@ -1513,7 +1518,7 @@ contains
                                    given_count)
         type(central_force_model), intent(in) :: model
         type(arch_setup), intent(in) :: a
-        logical, intent(in) :: rough   !! 17-digit rules, transcendentals in double
+        logical, intent(in) :: rough   !! 12-digit rules, transcendentals in double
         real(xp), intent(in) :: shift
         real(xp), intent(out) :: theta, slope
         !> `arch_panels(model, a, given, given_count)` where the caller has them
@@ -1541,7 +1546,7 @@ contains
                 if (share < 1.0e-24_xp) cycle
             end if
             pan%log_rho = bernstein_log(model, a%big_lambda, pan)
-            j = rule_for(pan%log_rho, merge(coarse_digits, hardware_digits, rough) + &
+            j = rule_for(pan%log_rho, merge(rough_digits, hardware_digits, rough) + &
                          real(min(0.0_xp, log10(max(share, 1.0e-30_xp))), qp), &
                          panel_growth(pan, 2.0_qp*pi/model%sigma_apse))
             scale = real(pan%scale, xp)
@@ -1668,20 +1673,24 @@ contains
     !> The early phase in hardware precision: Newton steps on the analytic slope, kept in
     !! the bracket [lo, hi] (f of opposite signs at its ends; regula falsi with the
     !! Anderson-Bjorck correction where a Newton step would leave it). First `rough`
-    !! evaluations (17-digit rules, transcendentals in double precision) until a step is
-    !! below 1e-7 of the unknown (the next iterate then within about 1e-14), then
+    !! evaluations (12-digit rules, transcendentals in double precision) until a step is
+    !! below 1e-5 of the unknown (the next iterate then within about 1e-10), then
     !! hardware-precision ones (20-digit rules)
-    !! until a step is below 1e-12: by the quadratic convergence the root is then within
+    !! until a step is below 1e-12, or its own error by the measured curvature below 1e-20
+    !! of the unknown: by the quadratic convergence the root is then within
     !! the rounding of the hardware kind (usually one such evaluation). x the root, slope
     !! f'(x) (the form's), curvature |f''/2f'| measured between the iterates (0 if not).
     pure subroutine hardware_phase(model, prob, lo, f_lo, hi, f_hi, x, slope, curvature, &
-                                   steps)
+                                   steps, slope_hi)
         type(central_force_model), intent(in) :: model
         type(endpoint_problem), intent(in) :: prob
         real(qp), intent(in) :: lo, hi
         real(real64), intent(in) :: f_lo, f_hi
         real(qp), intent(out) :: x, slope, curvature
         integer, intent(inout) :: steps
+        !> f'(hi) for the unknown u (0: unknown): the first iterate from the quadratic
+        !! through f(lo), f(hi), f'(hi) rather than regula falsi
+        real(real64), intent(in), optional :: slope_hi
         real(xp) :: a, b, fa, fb, xk, fk, dk, x_new, x_prev, d_prev, floor, noise
         integer :: iteration
         logical :: rough
@@ -1692,6 +1701,9 @@ contains
         d_prev = 0.0_xp
         rough = .true.
         xk = falsi()
+        if (present(slope_hi) .and. prob%use_u .and. prob%form == 0) then
+            if (slope_hi /= 0.0_real64) xk = hermite(real(slope_hi, xp))
+        end if
         ! rho next to 1 (second half-arch): Upsilon - Theta(rho,rho) ~ c u^2 but for the
         ! smallest u (falsi would start far below the root; f of opposite signs at a = 0
         ! and b)
@@ -1723,12 +1735,17 @@ contains
                 x_new = xk - fk/dk
                 if (.not. (x_new > min(a, b) .and. x_new < max(a, b))) x_new = falsi()
             end if
-            if (rough .and. abs(x_new - xk) <= 1.0e-7_xp*max(abs(xk), floor)) then
-                ! the rough root: on to the hardware-precision rules
+            if (rough .and. abs(x_new - xk) <= 1.0e-5_xp*max(abs(xk), floor)) then
+                ! the rough root (the next iterate within about 1e-10): on to the
+                ! hardware-precision rules
                 rough = .false.
                 call first_bracket(lo, f_lo, hi, f_hi, a, fa, b, fb)
             else if (.not. rough .and. &
-                     abs(x_new - xk) <= 1.0e-12_xp*max(abs(xk), floor)) then
+                     (abs(x_new - xk) <= 1.0e-12_xp*max(abs(xk), floor) .or. &
+                      (curvature > 0.0_qp .and. real(curvature, xp)*(x_new - xk)**2 <= &
+                       1.0e-20_xp*max(abs(xk), floor)))) then
+                ! the step's own error (|f''/2f'| step^2, twice that measured) below
+                ! 1e-20 of the unknown: the root within the rounding of the hardware kind
                 exit
             end if
             x_prev = xk
@@ -1743,6 +1760,25 @@ contains
             falsi = b - fb*(b - a)/(fb - fa)
             if (.not. (falsi > min(a, b) .and. falsi < max(a, b))) falsi = 0.5_xp*(a + b)
         end function falsi
+
+        !> The root in (a, b) of f(b) + f'(b) t + c t^2 (t = x - b) through f(a); falsi
+        !! if there is none.
+        pure real(xp) function hermite(d)
+            real(xp), intent(in) :: d
+            real(xp) :: c, disc, q, t(2)
+            hermite = falsi()
+            c = (fa - fb + d*(b - a))/(b - a)**2
+            disc = d*d - 4.0_xp*c*fb
+            if (.not. disc >= 0.0_xp) return
+            q = -0.5_xp*(d + sign(sqrt(disc), d))
+            if (q == 0.0_xp) return
+            t = [fb/q, merge(q/c, huge(1.0_xp), c /= 0.0_xp)]
+            if (b + t(1) > min(a, b) .and. b + t(1) < max(a, b)) then
+                hermite = b + t(1)
+            else if (b + t(2) > min(a, b) .and. b + t(2) < max(a, b)) then
+                hermite = b + t(2)
+            end if
+        end function hermite
     end subroutine hardware_phase
 
     !> The rounding level of the early phase's residual f: Upsilon to about 1e-15
@@ -2034,7 +2070,7 @@ contains
         type(endpoint_solution) :: solution
         type(endpoint_problem) :: prob
         real(qp) :: limit, apse_angle_rho, half, x, lo, hi, slope_q, curvature
-        real(real64) :: f_lo, f_hi, slope
+        real(real64) :: f_lo, f_hi, slope, slope_hi
         logical :: below, hardware, done, near
 
         solution%rho = rho
@@ -2063,7 +2099,7 @@ contains
         end if
         half = 0.5_qp*rho
         call open_bracket(self, prob, apse_angle_rho, half, lo, hi, f_lo, f_hi, &
-                          solution%steps, below)
+                          solution%steps, below, slope_hi)
         if (below) then
             ! R-bar is below the binary128 range (the logarithmic law next to psi = pi):
             ! R-bar underflows to 0, and s, t equal their limits R -> 0 to far more
@@ -2087,7 +2123,7 @@ contains
             slope = real(slope_q, real64)
         else if (hardware) then
             call hardware_phase(self, prob, lo, f_lo, hi, f_hi, x, slope_q, curvature, &
-                                solution%steps)
+                                solution%steps, slope_hi)
             slope = real(slope_q, real64)
         else
             call double_phase(self, prob, lo, f_lo, hi, f_hi, x, slope, solution%steps)
@@ -2227,7 +2263,7 @@ contains
     !! bracket: u = sqrt(rho - R) on [0, sqrt(rho/2)], or y = log R on [y_lo, log(rho/2)]
     !! with y_lo found by stepping down; `below` when R-bar is below the binary128 range.
     pure subroutine open_bracket(self, prob, apse_angle_rho, half, lo, hi, f_lo, f_hi, &
-                                 steps, below)
+                                 steps, below, slope_hi)
         type(central_force_model), intent(in) :: self
         type(endpoint_problem), intent(inout) :: prob !! gets its unknown (use_u, form)
         real(qp), intent(in) :: apse_angle_rho, half
@@ -2235,12 +2271,28 @@ contains
         real(real64), intent(out) :: f_lo, f_hi       !! residuals at its ends
         integer, intent(out) :: steps                 !! evaluations made
         logical, intent(out) :: below                 !! R-bar underflows
-        real(real64) :: f_half, theta_half, scaled, shift
+        !> the residual's slope d f/du at hi (the unknown u, laws with hardware terms;
+        !! else 0)
+        real(real64), intent(out) :: slope_hi
+        real(real64) :: f_half, theta_half, scaled, shift, upsilon_slope
+        real(xp) :: theta_xp_half, slope_xp, shift_xp
         integer :: probe
         below = .false.
         prob%use_u = .true.
-        call theta64(self, setup_at64(self, prob, sqrt(prob%rho - half)), scaled, shift)
-        theta_half = scaled*exp(-shift)
+        upsilon_slope = 0.0_real64
+        slope_hi = 0.0_real64
+        if (self%law%has_terms_xp()) then
+            ! as a rough early evaluation (with the tables)
+            call theta_xp(self, setup_at64(self, prob, sqrt(prob%rho - half)), .true., &
+                          theta_xp_half, slope_xp, shift_xp)
+            theta_half = real(theta_xp_half*exp(-shift_xp), real64)
+            ! d Upsilon/du = d Upsilon/d Lambda 2u/R at u = sqrt(rho - half), R = half
+            upsilon_slope = real(slope_xp*exp(-shift_xp), real64)* &
+                            real(2.0_qp*sqrt(prob%rho - half)/half, real64)
+        else
+            call theta64(self, setup_at64(self, prob, sqrt(prob%rho - half)), scaled, shift)
+            theta_half = scaled*exp(-shift)
+        end if
         f_half = theta_half - real(prob%psi, real64)
         steps = 1
         if ((f_half >= 0.0_real64) .neqv. prob%second) then
@@ -2248,11 +2300,12 @@ contains
             prob%use_u = .false.
             prob%form = merge(2, 1, prob%second)
             hi = log(half)
-            f_hi = residual64(self, prob, hi)
+            ! (Upsilon at R = rho/2 as above: the sign the branch was chosen by)
+            f_hi = form_of(real(theta_half, qp))
             lo = hi
             do probe = 1, 40
                 lo = max(lowest_log_r, hi - 4.0_qp*2.0_qp**probe)
-                f_lo = residual64(self, prob, lo)
+                f_lo = bracket_residual(lo)
                 steps = steps + 1
                 if (f_lo < 0.0_real64 .or. lo == lowest_log_r) exit
             end do
@@ -2268,8 +2321,29 @@ contains
             hi = sqrt(prob%rho - half)
             f_lo = form_of(apse_angle_rho)
             f_hi = form_of(real(theta_half, qp))
+            select case (prob%form)
+            case (1)
+                slope_hi = upsilon_slope/theta_half
+            case (2)
+                slope_hi = -upsilon_slope/(real(prob%limit, real64) - theta_half)
+            case default
+                slope_hi = upsilon_slope
+            end select
         end if
     contains
+        !> The residual at y = log R: a rough early evaluation (with the tables) for laws
+        !! with hardware terms, else `residual64`.
+        pure real(real64) function bracket_residual(y)
+            real(qp), intent(in) :: y
+            real(xp) :: f, slope
+            if (self%law%has_terms_xp()) then
+                call residual_xp(self, prob, real(y, xp), .true., f, slope)
+                bracket_residual = real(f, real64)
+            else
+                bracket_residual = residual64(self, prob, y)
+            end if
+        end function bracket_residual
+
         !> Upsilon - psi in the problem's form.
         pure real(real64) function form_of(upsilon)
             real(qp), intent(in) :: upsilon
