@@ -35,7 +35,8 @@
 !! (Lambda in [0.02, 11]) as piecewise Chebyshev series in z = log Lambda (equal pieces
 !! in z are graded toward R = 1, where the integrals are not analytic), each piece
 !! checked at build time against the quadrature between its points and used only if it
-!! agrees (`build_whole_tables`). A full evaluation then integrates only the panels
+!! agrees (`build_whole_tables`; the slopes as their logarithms: a steep law's fall like
+!! R^((n+1)/2) across a piece). A full evaluation then integrates only the panels
 !! between the endpoint and the nearer end (`table_sums`): the second half-arch is
 !! W + int_0^lambda_r or 2W - int_lambda_r^Lambda, the first int_lambda_r^Lambda or
 !! W - int_0^lambda_r (if that loses at most a bit). Beyond them, Lambda up to 80 (R down
@@ -51,7 +52,7 @@
 !! safeguarded Newton steps on Theta and its analytic slope d Theta/d Lambda (the
 !! integrand's derivative at fixed lambda, g q'/(2 q (1 - q)) with q' = d q/d Lambda
 !! from the law, summed on the same nodes, plus the jump of the weights times g at the
-!! endpoint), first on 17-digit rules with double-precision transcendentals, then on
+!! endpoint), first on 12-digit rules with double-precision transcendentals, then on
 !! 20-digit rules, to within the rounding of the hardware kind. Then one full-precision
 !! evaluation of Theta, S and T with their slopes in hardware precision (`final_step`):
 !! a Newton step of relative size about 1e-18, certified when its curvature and slope
@@ -68,7 +69,7 @@ module brachistochrone_central_force
                                       status_no_convergence, argument_status, &
                                       status_parameter_out_of_range
     use brachistochrone_quad_math, only: log1p
-    use brachistochrone_fast_math, only: inverse_sqrt
+    use brachistochrone_fast_math, only: inverse_sqrt, hardware_real
     use brachistochrone_fast_exp, only: fast_exp
     use brachistochrone_quadrature, only: gauss_legendre_rule, gauss_legendre
     use brachistochrone_speed_laws, only: speed_law
@@ -88,8 +89,10 @@ module brachistochrone_central_force
     integer, parameter :: min_nodes = 4, max_nodes = 80
     !> Digits aimed at by the full and the double-precision rules.
     real(qp), parameter :: fine_digits = 35.0_qp, coarse_digits = 17.0_qp
-    !> Digits aimed at by the hardware-precision rules of the early phase.
-    real(qp), parameter :: hardware_digits = 20.0_qp
+    !> Digits aimed at by the hardware-precision rules of the early phase, and by its
+    !! rough evaluations (which end at a step below 1e-5: 12 digits place the next
+    !! iterate within about 1e-10)
+    real(qp), parameter :: hardware_digits = 20.0_qp, rough_digits = 12.0_qp
     !> A panel whose bound is below this share of the running sum is skipped.
     real(qp), parameter :: negligible = 1.0e-40_qp
     !> Panel kinds: lambda = b s^2 (from the apse), lambda, delta, delta = c s^2 (from
@@ -921,10 +924,10 @@ contains
                 if (present(slopes)) then
                     ! g q'/(2 q (1 - q)) and e^lambda q'/(2 (1 - q)^(3/2)) = the same
                     ! times sqrt(q)/rx (weighted)
-                    g_xp = real(g(1), xp)*(0.5_xp*log_slope/real(omq, xp))
+                    g_xp = hardware_real(g(1))*(0.5_xp*log_slope/hardware_real(omq))
                     ! compensated sums: the error bound of `arch_values` counts on it
                     call add_compensated(part_xp, carry, &
-                                         [g_xp, g_xp*(real(root_q, xp)/real(rx, xp))])
+                                         [g_xp, g_xp*(hardware_real(root_q)/hardware_real(rx))])
                 end if
                 ! the node nearest the next panel
                 if (k == merge(1, model%gauss(j)%n, pan%kind >= kind_start .and. &
@@ -1447,7 +1450,7 @@ contains
     pure subroutine theta_xp(model, a, rough, theta, slope, shift)
         type(central_force_model), intent(in) :: model
         type(arch_setup), intent(in) :: a
-        logical, intent(in) :: rough   !! 17-digit rules, transcendentals in double
+        logical, intent(in) :: rough   !! 12-digit rules, transcendentals in double
         real(xp), intent(out) :: theta, slope, shift
         type(arch_setup) :: below, above
         type(panel) :: panels_below(max_panels), panels_above(max_panels)
@@ -1487,7 +1490,8 @@ contains
                 call panel_theta_xp(model, above, rough, shift, part, part_slope, &
                                     panels_above, n_above)
             end if
-            ! (the rough evaluations, which need about 7 digits, lose up to 10 bits)
+            ! (the rough evaluations, on 12-digit rules for a root to about 1e-10, lose up
+            ! to 10 bits)
             if (a%weight_below == 0.0_qp .and. use_below .and. .not. ((part <= &
                 0.5_xp*whole(1) .and. a%delta_r >= 0.5_qp*a%big_lambda) .or. &
                 (rough .and. part <= 0.999_xp*whole(1)))) then
@@ -1514,7 +1518,7 @@ contains
                                    given_count)
         type(central_force_model), intent(in) :: model
         type(arch_setup), intent(in) :: a
-        logical, intent(in) :: rough   !! 17-digit rules, transcendentals in double
+        logical, intent(in) :: rough   !! 12-digit rules, transcendentals in double
         real(xp), intent(in) :: shift
         real(xp), intent(out) :: theta, slope
         !> `arch_panels(model, a, given, given_count)` where the caller has them
@@ -1542,7 +1546,7 @@ contains
                 if (share < 1.0e-24_xp) cycle
             end if
             pan%log_rho = bernstein_log(model, a%big_lambda, pan)
-            j = rule_for(pan%log_rho, merge(coarse_digits, hardware_digits, rough) + &
+            j = rule_for(pan%log_rho, merge(rough_digits, hardware_digits, rough) + &
                          real(min(0.0_xp, log10(max(share, 1.0e-30_xp))), qp), &
                          panel_growth(pan, 2.0_qp*pi/model%sigma_apse))
             scale = real(pan%scale, xp)
@@ -1669,10 +1673,11 @@ contains
     !> The early phase in hardware precision: Newton steps on the analytic slope, kept in
     !! the bracket [lo, hi] (f of opposite signs at its ends; regula falsi with the
     !! Anderson-Bjorck correction where a Newton step would leave it). First `rough`
-    !! evaluations (17-digit rules, transcendentals in double precision) until a step is
-    !! below 1e-7 of the unknown (the next iterate then within about 1e-14), then
+    !! evaluations (12-digit rules, transcendentals in double precision) until a step is
+    !! below 1e-5 of the unknown (the next iterate then within about 1e-10), then
     !! hardware-precision ones (20-digit rules)
-    !! until a step is below 1e-12: by the quadratic convergence the root is then within
+    !! until a step is below 1e-12, or its own error by the measured curvature below 1e-20
+    !! of the unknown: by the quadratic convergence the root is then within
     !! the rounding of the hardware kind (usually one such evaluation). x the root, slope
     !! f'(x) (the form's), curvature |f''/2f'| measured between the iterates (0 if not).
     pure subroutine hardware_phase(model, prob, lo, f_lo, hi, f_hi, x, slope, curvature, &
@@ -1730,12 +1735,17 @@ contains
                 x_new = xk - fk/dk
                 if (.not. (x_new > min(a, b) .and. x_new < max(a, b))) x_new = falsi()
             end if
-            if (rough .and. abs(x_new - xk) <= 1.0e-7_xp*max(abs(xk), floor)) then
-                ! the rough root: on to the hardware-precision rules
+            if (rough .and. abs(x_new - xk) <= 1.0e-5_xp*max(abs(xk), floor)) then
+                ! the rough root (the next iterate within about 1e-10): on to the
+                ! hardware-precision rules
                 rough = .false.
                 call first_bracket(lo, f_lo, hi, f_hi, a, fa, b, fb)
             else if (.not. rough .and. &
-                     abs(x_new - xk) <= 1.0e-12_xp*max(abs(xk), floor)) then
+                     (abs(x_new - xk) <= 1.0e-12_xp*max(abs(xk), floor) .or. &
+                      (curvature > 0.0_qp .and. real(curvature, xp)*(x_new - xk)**2 <= &
+                       1.0e-20_xp*max(abs(xk), floor)))) then
+                ! the step's own error (|f''/2f'| step^2, twice that measured) below
+                ! 1e-20 of the unknown: the root within the rounding of the hardware kind
                 exit
             end if
             x_prev = xk

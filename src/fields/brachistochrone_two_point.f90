@@ -21,14 +21,15 @@
 !! - `solve_endpoint_secant`: the paper's secant method from R0, R1 with its stopping
 !!   rule |R_n - R_(n-1)| < tol and a step count, which reproduces Table 1.
 module brachistochrone_two_point
-    use brachistochrone_kinds, only: qp, pi, eps_qp
+    use brachistochrone_kinds, only: qp, pi, eps_qp, xp
     use brachistochrone_status, only: status_ok, status_inaccessible, status_outside_domain, &
                                       status_no_convergence
     use brachistochrone_solution, only: endpoint_solution, endpoint_status, region_inside
     use brachistochrone_closed_forms, only: radial_time, kappa_time, inaccessible_angle
     use brachistochrone_inverse_square, only: inverse_square_model, evaluate_arch, arch_values, &
-            level_fine, level_hardware, level_final, hardware_epsilon
-    use brachistochrone_roots, only: root_function, newton_bracketed, secant
+            level_fine, level_hardware, level_final, hardware_epsilon, apse_estimate_error
+    use brachistochrone_roots, only: root_function, secant, newton_iteration, newton_begin, &
+                                     newton_advance
     use brachistochrone_arches, only: arch_first, arch_second, arch_complete, arch_radial, &
                                       arch_inaccessible
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
@@ -53,7 +54,6 @@ module brachistochrone_two_point
     !> Unknowns of the default solver.
     integer, parameter :: unknown_u = 1, unknown_r = 2, unknown_log_r = 3
 
-    !> Upsilon(R) - psi in one of the unknowns, for the root finders.
     !> The bracket of the root in the solver's unknown: its ends, the signs of Upsilon -
     !! psi there, a start, the curvature measured so far, and Upsilon - psi at rho/2.
     type :: root_bracket
@@ -65,17 +65,25 @@ module brachistochrone_two_point
         real(qp) :: f_half = 0.0_qp               !! Upsilon - psi at R = rho/2
     end type root_bracket
 
-    type, extends(root_function) :: upsilon_function
-        type(inverse_square_model) :: model
+    !> The equation of one endpoint, without the model (which the default solver passes
+    !! along instead of copying it: its rules and tables are allocatable).
+    type :: upsilon_problem
         integer :: level = level_fine
         logical :: second = .false.
         integer :: unknown = unknown_r
         real(qp) :: rho = 0.0_qp
         real(qp) :: psi = 0.0_qp
     contains
-        procedure :: evaluate => upsilon_evaluate
         procedure :: radius_of
         procedure :: slope_in_unknown
+    end type upsilon_problem
+
+    !> The equation with a copy of the model, as a root_function (the secant method).
+    type, extends(root_function) :: upsilon_function
+        type(upsilon_problem) :: problem
+        type(inverse_square_model) :: model
+    contains
+        procedure :: evaluate => upsilon_evaluate
     end type upsilon_function
 
 contains
@@ -114,7 +122,13 @@ contains
             solution%has_time = .true.
         else
             done = .false.
-            if (rho < 1.0_qp) call model%apse_angle(rho, apse_angle_rho, status)
+            ! Theta(rho, rho) in hardware precision decides the half-arch (and starts the
+            ! search) unless psi is within 100 times its error; then the full table
+            if (rho < 1.0_qp) then
+                apse_angle_rho = model%apse_angle_estimate(rho)
+                if (abs(psi - apse_angle_rho) <= 100.0_qp*apse_estimate_error*psi) &
+                    call model%apse_angle(rho, apse_angle_rho, status)
+            end if
             if (rho == 1.0_qp) then
                 solution%arch = arch_complete
             else if (psi <= apse_angle_rho) then
@@ -127,7 +141,7 @@ contains
 
     !> R and r - R at the unknown x; `inside` is false outside 0 < R < 1, R <= rho.
     pure subroutine radius_of(self, x, big_r, d, inside)
-        class(upsilon_function), intent(in) :: self
+        class(upsilon_problem), intent(in) :: self
         real(qp), intent(in) :: x
         real(qp), intent(out) :: big_r, d
         logical, intent(out) :: inside
@@ -148,16 +162,18 @@ contains
     !> d/dx, in the unknown x, of a quantity whose R-derivative is
     !! smooth + boundary/sqrt(rho - R) (`boundary` signed). Finite at the apse for u.
     pure function slope_in_unknown(self, x, big_r, d, smooth, boundary) result(slope)
-        class(upsilon_function), intent(in) :: self
+        class(upsilon_problem), intent(in) :: self
         real(qp), intent(in) :: x, big_r, d, smooth, boundary
         real(qp) :: slope
         if (self%unknown == unknown_u) then
             ! dR/du = -2u, and u/sqrt(rho - R) = 1
             slope = -2.0_qp*x*smooth - 2.0_qp*boundary
         else
-            ! dUpsilon/dR is infinite at the apse (R = rho)
+            ! dUpsilon/dR is infinite at the apse (R = rho); no square root for the
+            ! error bounds of final_step (boundary 0)
             if (d > 0.0_qp) then
-                slope = smooth + boundary/sqrt(d)
+                slope = smooth
+                if (boundary /= 0.0_qp) slope = smooth + boundary/sqrt(d)
             else
                 slope = sign(huge(1.0_qp), boundary)
             end if
@@ -165,10 +181,20 @@ contains
         end if
     end function slope_in_unknown
 
-    !> Upsilon - psi and its derivative in the chosen unknown (log(Upsilon/psi) for
-    !! the unknown log R).
+    !> `upsilon_at` for the root finders.
     pure subroutine upsilon_evaluate(self, x, f, df, status)
         class(upsilon_function), intent(in) :: self
+        real(qp), intent(in) :: x
+        real(qp), intent(out) :: f, df
+        integer, intent(out) :: status
+        call upsilon_at(self%problem, self%model, x, f, df, status)
+    end subroutine upsilon_evaluate
+
+    !> Upsilon - psi and its derivative in the chosen unknown (log(Upsilon/psi) for
+    !! the unknown log R). status: status_ok or status_outside_domain.
+    pure subroutine upsilon_at(self, model, x, f, df, status)
+        type(upsilon_problem), intent(in) :: self
+        type(inverse_square_model), intent(in) :: model
         real(qp), intent(in) :: x
         real(qp), intent(out) :: f, df
         integer, intent(out) :: status
@@ -184,7 +210,7 @@ contains
             return
         end if
         status = status_ok
-        values = evaluate_arch(self%model, self%level, self%second, self%rho, big_r, d, &
+        values = evaluate_arch(model, self%level, self%second, self%rho, big_r, d, &
                                           .true., .false.)
         df = self%slope_in_unknown(x, big_r, d, values%angle_dr_smooth, &
                                    values%boundary_sign*values%boundary)
@@ -194,7 +220,32 @@ contains
         else
             f = values%angle - self%psi
         end if
-    end subroutine upsilon_evaluate
+    end subroutine upsilon_at
+
+    !> `newton_bracketed` on Upsilon - psi (same arguments, the model passed along).
+    pure subroutine newton_upsilon(fun, model, lo, f_lo, hi, f_hi, x0, rel_tol, abs_tol, x, &
+                                   steps, status, curvature, accuracy)
+        type(upsilon_problem), intent(in) :: fun
+        type(inverse_square_model), intent(in) :: model
+        real(qp), intent(in) :: lo, f_lo, hi, f_hi, x0, rel_tol, abs_tol
+        real(qp), intent(out) :: x
+        integer, intent(out) :: steps, status
+        real(qp), intent(inout) :: curvature
+        real(qp), intent(in), optional :: accuracy
+        type(newton_iteration) :: run
+        real(qp) :: f, df
+        integer :: evaluation_status
+        call newton_begin(run, lo, f_lo, hi, f_hi, x0, rel_tol, abs_tol, max_steps, &
+                          curvature, accuracy)
+        do while (.not. run%done)
+            call upsilon_at(fun, model, run%x, f, df, evaluation_status)
+            call newton_advance(run, f, df, evaluation_status)
+        end do
+        x = run%x
+        steps = run%steps
+        status = run%status
+        curvature = run%curvature
+    end subroutine newton_upsilon
 
     !> Solve the two-point problem for B = (rho, psi) to full quad precision, without
     !! initial estimates. Never fails on an accessible endpoint 0 < rho <= 1,
@@ -204,7 +255,7 @@ contains
         real(qp), intent(in) :: rho                     !! endpoint radius
         real(qp), intent(in) :: psi                     !! endpoint angle
         type(endpoint_solution) :: solution
-        type(upsilon_function) :: fun
+        type(upsilon_problem) :: fun
         type(root_bracket) :: b
         real(qp) :: apse_angle_rho, x, big_r, d
         integer :: steps, status
@@ -212,18 +263,18 @@ contains
 
         call classify(model, rho, psi, solution, apse_angle_rho, done)
         if (done) return
-        fun = upsilon_function(model=model, level=level_fine, &
-                               second=solution%arch /= arch_first, rho=rho, psi=psi)
+        fun = upsilon_problem(level=level_fine, second=solution%arch /= arch_first, &
+                              rho=rho, psi=psi)
         if (psi == apse_angle_rho) then
             ! B is the apse itself
             call finish(model, solution, fun%second, rho, 0.0_qp)
             return
         end if
-        call open_bracket(fun, apse_angle_rho, b, solution%steps)
+        call open_bracket(fun, model, apse_angle_rho, b, solution%steps)
         if (fun%unknown == unknown_log_r) then
-            call log_phase(fun, b, solution%steps, status)
+            call log_phase(fun, model, b, solution%steps, status)
         else
-            call hardware_phase(fun, b, solution%steps, status)
+            call hardware_phase(fun, model, b, solution%steps, status)
         end if
         if (status /= status_ok) then
             solution%status = status
@@ -231,11 +282,11 @@ contains
         end if
         ! full-precision phase: usually one step, certified by the measured curvature
         fun%level = level_fine
-        call final_step(fun, b%lo, b%hi, b%x0, b%curvature, solution, done)
+        call final_step(fun, model, b%lo, b%hi, b%x0, b%curvature, solution, done)
         if (done) return
         ! otherwise iterate on, from the Newton step final_step took when in the bracket
-        call newton_bracketed(fun, b%lo, b%f_lo, b%hi, b%f_hi, b%x0, 4.0_qp*eps_qp, &
-                              tiny(1.0_qp), max_steps, x, steps, status, b%curvature)
+        call newton_upsilon(fun, model, b%lo, b%f_lo, b%hi, b%f_hi, b%x0, 4.0_qp*eps_qp, &
+                            tiny(1.0_qp), x, steps, status, b%curvature)
         solution%steps = solution%steps + steps
         if (status /= status_ok) then
             solution%status = status
@@ -249,8 +300,9 @@ contains
     !! the sign is in doubt) says which half of (0, rho] holds the root. Near the apse the
     !! unknown is u = sqrt(rho - R), below rho/2 it is R (second half-arch) or log R
     !! (first half-arch). One evaluation, counted in `steps`.
-    pure subroutine open_bracket(fun, apse_angle_rho, b, steps)
-        type(upsilon_function), intent(inout) :: fun !! sets its unknown
+    pure subroutine open_bracket(fun, model, apse_angle_rho, b, steps)
+        type(upsilon_problem), intent(inout) :: fun  !! sets its unknown
+        type(inverse_square_model), intent(in) :: model !! the evaluator
         real(qp), intent(in) :: apse_angle_rho       !! Theta(rho, rho)
         type(root_bracket), intent(out) :: b         !! bracket, end signs, start
         integer, intent(out) :: steps                !! evaluations made
@@ -260,10 +312,10 @@ contains
         rho = fun%rho
         psi = fun%psi
         b%half = 0.5_qp*rho
-        values = evaluate_arch(fun%model, level_hardware, fun%second, rho, b%half, &
+        values = evaluate_arch(model, level_hardware, fun%second, rho, b%half, &
                                rho - b%half, .true., .false.)
         if (abs(values%angle - psi) < 1.0e-6_qp*psi) then
-            values = evaluate_arch(fun%model, level_fine, fun%second, rho, b%half, &
+            values = evaluate_arch(model, level_fine, fun%second, rho, b%half, &
                                    rho - b%half, .true., .false.)
         end if
         b%f_half = values%angle - psi
@@ -287,7 +339,7 @@ contains
             fun%unknown = unknown_r
             b%hi = b%half
             b%f_lo = inaccessible_angle - psi
-            slope_lo = 2.0_qp*fun%model%apse_slope_at_zero
+            slope_lo = 2.0_qp*model%apse_slope_at_zero
             slope = values%angle_dr_smooth &
                     + values%boundary_sign*values%boundary/sqrt(rho - b%half)
             b%x0 = hermite_start(b%f_lo, slope_lo, b%hi, b%f_hi, slope)
@@ -303,8 +355,9 @@ contains
     !! end of the bracket found by stepping down), then the bracket and start in R for
     !! the full-precision phase. status: status_ok, status_no_convergence when no lower
     !! end is found, or an evaluation's status.
-    pure subroutine log_phase(fun, b, steps, status)
-        type(upsilon_function), intent(inout) :: fun !! unknown log R, then R
+    pure subroutine log_phase(fun, model, b, steps, status)
+        type(upsilon_problem), intent(inout) :: fun  !! unknown log R, then R
+        type(inverse_square_model), intent(in) :: model !! the evaluator
         type(root_bracket), intent(inout) :: b       !! the bracket, in log R then in R
         integer, intent(inout) :: steps              !! evaluations made
         integer, intent(out) :: status               !! the phase's status
@@ -313,7 +366,7 @@ contains
         fun%level = level_hardware
         log_lo = b%x0 - 2.0_qp
         do probe = 1, max_probes
-            call fun%evaluate(log_lo, f_lo, f_end, status)
+            call upsilon_at(fun, model, log_lo, f_lo, f_end, status)
             steps = steps + 1
             if (status == status_ok .and. f_lo < 0.0_qp) exit
             log_lo = log_lo - 4.0_qp
@@ -323,9 +376,8 @@ contains
             status = status_no_convergence
             return
         end if
-        call newton_bracketed(fun, log_lo, f_lo, b%hi, 1.0_qp, b%x0, hardware_tolerance, &
-                              0.0_qp, max_steps, x, used, status, b%curvature, &
-                              hardware_accuracy)
+        call newton_upsilon(fun, model, log_lo, f_lo, b%hi, 1.0_qp, b%x0, hardware_tolerance, &
+                            0.0_qp, x, used, status, b%curvature, hardware_accuracy)
         steps = steps + used
         call accept_phase(status, b%curvature)
         if (status /= status_ok) return
@@ -343,8 +395,9 @@ contains
     !> Newton on the hardware rules to about 1e-17, which also measures the curvature of
     !! Upsilon - psi: the full-precision phase then usually needs one step. status:
     !! status_ok or an evaluation's status.
-    pure subroutine hardware_phase(fun, b, steps, status)
-        type(upsilon_function), intent(inout) :: fun !! the function
+    pure subroutine hardware_phase(fun, model, b, steps, status)
+        type(upsilon_problem), intent(inout) :: fun  !! the function
+        type(inverse_square_model), intent(in) :: model !! the evaluator
         type(root_bracket), intent(inout) :: b       !! bracket; x0 becomes the root
         integer, intent(inout) :: steps              !! evaluations made
         integer, intent(out) :: status               !! the phase's status
@@ -352,9 +405,8 @@ contains
         integer :: used
         x = b%x0
         fun%level = level_hardware
-        call newton_bracketed(fun, b%lo, b%f_lo, b%hi, b%f_hi, x, hardware_tolerance, &
-                              0.0_qp, max_steps, b%x0, used, status, b%curvature, &
-                              hardware_accuracy)
+        call newton_upsilon(fun, model, b%lo, b%f_lo, b%hi, b%f_hi, x, hardware_tolerance, &
+                            0.0_qp, b%x0, used, status, b%curvature, hardware_accuracy)
         steps = steps + used
         call accept_phase(status, b%curvature)
     end subroutine hardware_phase
@@ -388,8 +440,9 @@ contains
     !!   K(R(x0 + dx/2)) (psi - Upsilon(x0)), exact to O(dx^3).
     !! Otherwise `done` is false and x0 becomes the Newton step's point if that is in
     !! the bracket, for the caller to iterate on.
-    pure subroutine final_step(fun, lo, hi, x0, curvature, solution, done)
-        type(upsilon_function), intent(in) :: fun
+    pure subroutine final_step(fun, model, lo, hi, x0, curvature, solution, done)
+        type(upsilon_problem), intent(in) :: fun
+        type(inverse_square_model), intent(in) :: model
         real(qp), intent(in) :: lo, hi, curvature
         real(qp), intent(inout) :: x0
         type(endpoint_solution), intent(inout) :: solution
@@ -404,7 +457,7 @@ contains
         call fun%radius_of(start, big_r, d, inside)
         if (.not. inside) return
         ! full rules; the slopes (used only for a step below 1e-17) in hardware precision
-        values = evaluate_arch(fun%model, level_final, fun%second, fun%rho, big_r, d, &
+        values = evaluate_arch(model, level_final, fun%second, fun%rho, big_r, d, &
                                .true., .true.)
         solution%steps = solution%steps + 1
         f = values%angle - fun%psi
@@ -445,32 +498,38 @@ contains
     !> First iterate on [0, h]: the root of the cubic Hermite interpolant of F from
     !! F(0) = f0, F'(0) = slope0, F(h) = fh, F'(h) = slope_h, found by Newton's method on
     !! the cubic kept inside the bracket (F(0), F(h) have opposite signs); regula falsi
-    !! if that fails. Exact for rho = 1, where F(u) = pi u^2 - psi + O(u^4).
+    !! if that fails. Exact for rho = 1, where F(u) = pi u^2 - psi + O(u^4). Only a
+    !! start to 1e-12: in hardware precision where that has quad's exponent range.
     pure function hermite_start(f0, slope0, h, fh, slope_h) result(x)
         real(qp), intent(in) :: f0, slope0, h, fh, slope_h
         real(qp) :: x
-        real(qp) :: c2, c3, delta, delta_slope, lo, hi, p, dp, step
+        integer, parameter :: wk = merge(xp, qp, range(1.0_xp) >= range(1.0_qp))
+        real(wk) :: c2, c3, delta, delta_slope, lo, hi, p, dp, step, y, a0, a1, width
         integer :: iteration
-        x = h*f0/(f0 - fh)
-        delta = fh - f0 - slope0*h
-        delta_slope = slope_h - slope0
-        c3 = (delta_slope*h - 2.0_qp*delta)/h**3
-        c2 = (3.0_qp*delta - delta_slope*h)/h**2
-        lo = 0.0_qp
-        hi = h
+        a0 = real(f0, wk)
+        a1 = real(slope0, wk)
+        width = real(h, wk)
+        y = width*a0/(a0 - real(fh, wk))
+        delta = real(fh, wk) - a0 - a1*width
+        delta_slope = real(slope_h, wk) - a1
+        c3 = (delta_slope*width - 2.0_wk*delta)/width**3
+        c2 = (3.0_wk*delta - delta_slope*width)/width**2
+        lo = 0.0_wk
+        hi = width
         do iteration = 1, 60
-            p = f0 + x*(slope0 + x*(c2 + x*c3))
-            if ((p < 0.0_qp) .eqv. (f0 < 0.0_qp)) then
-                lo = x
+            p = a0 + y*(a1 + y*(c2 + y*c3))
+            if ((p < 0.0_wk) .eqv. (a0 < 0.0_wk)) then
+                lo = y
             else
-                hi = x
+                hi = y
             end if
-            dp = slope0 + x*(2.0_qp*c2 + 3.0_qp*x*c3)
+            dp = a1 + y*(2.0_wk*c2 + 3.0_wk*y*c3)
             step = p/dp
-            if (.not. (x - step > lo .and. x - step < hi)) step = x - 0.5_qp*(lo + hi)
-            x = x - step
-            if (abs(step) <= 1.0e-12_qp*h) return
+            if (.not. (y - step > lo .and. y - step < hi)) step = y - 0.5_wk*(lo + hi)
+            y = y - step
+            if (abs(step) <= 1.0e-12_wk*width) exit
         end do
+        x = real(y, qp)
     end function hermite_start
 
     !> Arclength and time at B once R-bar is known.
@@ -510,16 +569,16 @@ contains
 
         call classify(model, rho, psi, solution, apse_angle_rho, done)
         if (done) return
-        fun = upsilon_function(model=model, level=level_fine, &
-                               second=solution%arch /= arch_first, rho=rho, psi=psi)
-        fun%unknown = unknown_r
+        fun = upsilon_function(problem=upsilon_problem(level=level_fine, &
+                               second=solution%arch /= arch_first, unknown=unknown_r, &
+                               rho=rho, psi=psi), model=model)
         call secant(fun, r0, r1, tol, 0.0_qp, rho, max_steps, x, steps, status)
         solution%steps = steps
         if (status /= status_ok) then
             solution%status = status
             return
         end if
-        call finish(model, solution, fun%second, x, rho - x)
+        call finish(model, solution, fun%problem%second, x, rho - x)
     end function solve_endpoint_secant
 
 end module brachistochrone_two_point

@@ -7,13 +7,19 @@
 !! by one Newton step r <- r (3 - q r^2)/2, which squares the error (~4e-39, below the
 !! rounding of binary128) using multiplications only. Where no native kind wider than
 !! double exists the seed is double precision and a second step is taken.
+!!
+!! The conversion of binary128 to x87 extended (`hardware_real`, also used for the seed)
+!! is libgcc's __trunctfxf2 in software, as costly as a binary128 addition; both
+!! formats have the same 15-bit exponent, so for normal numbers it is a rounding of
+!! the significand to 64 bits (to nearest, ties to even) done here on the bits, the
+!! same result at about two thirds of the cost.
 module brachistochrone_fast_math
-    use brachistochrone_kinds, only: qp
-    use, intrinsic :: iso_fortran_env, only: real64
+    use brachistochrone_kinds, only: qp, xp
+    use, intrinsic :: iso_fortran_env, only: real64, int64
     implicit none
     private
 
-    public :: inverse_sqrt
+    public :: inverse_sqrt, hardware_real
 
     !> Widest hardware real kind below quad (x87 extended where available).
     integer, parameter :: seed_kind_candidate = selected_real_kind(18, 4931)
@@ -25,6 +31,16 @@ module brachistochrone_fast_math
     !> Inputs inside this range get the hardware seed; others use 1/sqrt(x).
     real(qp), parameter :: seed_low = 1.0e-300_qp, seed_high = 1.0e300_qp
 
+    !> Bits of 1.5 in `qp` and `xp` (two little-endian 64-bit words): the conversion on
+    !! the bits is used only where they are binary128 and x87 extended.
+    integer(int64), parameter :: quad_bits(2) = transfer(1.5_qp, [0_int64, 0_int64])
+    integer(int64), parameter :: extended_bits(2) = transfer(1.5_xp, [0_int64, 0_int64])
+    logical, parameter :: x87_layout = xp /= real64 .and. digits(1.0_xp) == 64 .and. &
+        storage_size(1.0_xp) == 128 .and. quad_bits(1) == 0_int64 .and. &
+        quad_bits(2) == ishft(int(z'3FFF8', int64), 44) .and. &
+        extended_bits(1) == ishft(3_int64, 62) .and. &
+        iand(extended_bits(2), int(z'FFFF', int64)) == int(z'3FFF', int64)
+
 contains
 
     !> 1/sqrt(x) for x > 0, within 2 ulp.
@@ -33,7 +49,11 @@ contains
         real(qp) :: r
         integer :: step
         if (x > seed_low .and. x < seed_high) then
-            r = real(1.0_seed_kind/sqrt(real(x, seed_kind)), qp)
+            if (seed_kind == xp) then
+                r = real(1.0_seed_kind/sqrt(real(hardware_real(x), seed_kind)), qp)
+            else
+                r = real(1.0_seed_kind/sqrt(real(x, seed_kind)), qp)
+            end if
             do step = 1, newton_steps
                 r = r*(1.5_qp - 0.5_qp*x*(r*r))
             end do
@@ -41,5 +61,37 @@ contains
             r = 1.0_qp/sqrt(x)
         end if
     end function inverse_sqrt
+
+    !> real(x, xp), the same bits, faster for normal x where `xp` is x87 extended.
+    elemental function hardware_real(x) result(y)
+        real(qp), intent(in) :: x !! any value
+        real(xp) :: y
+        integer(int64), parameter :: low48 = ishft(1_int64, 48) - 1, &
+                                     low49 = ishft(1_int64, 49) - 1, &
+                                     half = ishft(1_int64, 48), top = ishft(1_int64, 63)
+        integer(int64) :: bits(2), significand, rest, sign_exponent
+        if (.not. x87_layout) then
+            y = real(x, xp)
+            return
+        end if
+        bits = transfer(x, bits)
+        sign_exponent = ishft(bits(2), -48)
+        ! zero, subnormal, infinite or NaN: the library's conversion
+        if (iand(sign_exponent + 1_int64, int(z'7FFF', int64)) <= 1_int64) then
+            y = real(x, xp)
+            return
+        end if
+        ! the 64-bit significand with its explicit leading bit, and the 49 bits dropped
+        significand = ior(top, ior(ishft(iand(bits(2), low48), 15), ishft(bits(1), -49)))
+        rest = iand(bits(1), low49)
+        if (rest > half .or. (rest == half .and. btest(significand, 0))) then
+            significand = significand + 1_int64
+            if (significand == 0_int64) then ! carried out: the next binade (or infinity)
+                significand = top
+                sign_exponent = sign_exponent + 1_int64
+            end if
+        end if
+        y = transfer([significand, sign_exponent], y)
+    end function hardware_real
 
 end module brachistochrone_fast_math

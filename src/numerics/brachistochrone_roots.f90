@@ -6,6 +6,8 @@
 !!   stops when the predicted error of the last iterate is below the tolerance: with
 !!   quadratic convergence the error after a step dx_k is about |dx_k|^2 |dx_k| /
 !!   |dx_{k-1}|^2, which saves the confirming evaluation a plain |dx| test needs.
+!!   The same iteration driven by the caller (`newton_begin`, then `newton_advance` with
+!!   each f, f'), for a function that cannot be a root_function without copying data.
 !! - `bracketed_secant`: regula falsi with the Anderson-Bjorck correction, for functions
 !!   without a derivative: superlinear, and never leaves the bracket.
 !! - `secant`: the paper's secant method (Tee 1998, sec. 5.1) with its stopping rule
@@ -19,13 +21,32 @@ module brachistochrone_roots
     private
 
     public :: root_function, newton_bracketed, bracketed_secant, secant, &
-              anderson_bjorck_update
+              anderson_bjorck_update, newton_iteration, newton_begin, newton_advance
 
     !> A scalar function f(x) with derivative; extend it to carry the problem's data.
     type, abstract :: root_function
     contains
         procedure(evaluate_interface), deferred :: evaluate
     end type root_function
+
+    !> A `newton_bracketed` run driven by its caller (`newton_begin`, `newton_advance`).
+    type :: newton_iteration
+        real(qp) :: x = 0.0_qp        !! the point to evaluate next; when done, the root
+        integer :: steps = 0          !! evaluations made
+        integer :: status = status_no_convergence !! when done: the run's status
+        logical :: done = .false.     !! the run has ended
+        real(qp) :: curvature = 0.0_qp !! the curvature bound (newton_bracketed's)
+        real(qp) :: a = 0.0_qp, b = 0.0_qp           !! the bracket
+        real(qp) :: rel_tol = 0.0_qp, abs_tol = 0.0_qp !! the tolerances
+        real(qp) :: noise = 0.0_qp    !! accuracy of the evaluations
+        real(qp) :: known_k = 0.0_qp  !! the curvature usable for stopping
+        real(qp) :: dx_previous = huge(1.0_qp) !! the last step
+        real(qp) :: x_previous = 0.0_qp, df_previous = 0.0_qp !! the last point and f'
+        integer :: max_steps = 0      !! limit on evaluations
+        logical :: increasing = .true.       !! f increases across the bracket
+        logical :: previous_newton = .false. !! the last step was Newton's
+        logical :: measure = .false.  !! the curvature is measured (present in the call)
+    end type newton_iteration
 
     abstract interface
         !> f(x) and f'(x); status /= 0 where f is undefined at x.
@@ -43,7 +64,8 @@ contains
     !> Safeguarded Newton iteration for f(x) = 0 on a bracket.
     !!
     !! Needs f(lo) and f(hi) of opposite signs (or one of them zero); only their signs are
-    !! used. Converged when the predicted error is <= rel_tol*|x| + abs_tol.
+    !! used. Converged when the predicted error is <= rel_tol*|x| + abs_tol. (The loop
+    !! over `newton_begin` and `newton_advance`, for a caller that evaluates f itself.)
     pure subroutine newton_bracketed(fun, lo, f_lo, hi, f_hi, x0, rel_tol, abs_tol, &
                                      max_steps, x, steps, status, curvature, accuracy)
         class(root_function), intent(in) :: fun !! the function
@@ -66,91 +88,116 @@ contains
         !> Relative accuracy of the evaluations of f, in units of x (default rel_tol):
         !! K is measured only from steps 1000 times larger.
         real(qp), intent(in), optional :: accuracy
-        real(qp) :: a, b, fx, dfx, dx, dx_previous, x_new, tolerance, predicted, known_k
-        real(qp) :: noise, x_previous, df_previous
-        logical :: increasing, newton_step, previous_newton
-
-        steps = 0
-        a = lo
-        b = hi
-        increasing = f_lo < 0.0_qp .or. f_hi > 0.0_qp
-        x = min(max(x0, a), b)
-        if (.not. ieee_is_finite(x)) x = 0.5_qp*(a + b)
-        dx_previous = huge(1.0_qp)
-        previous_newton = .false.
-        known_k = 0.0_qp
-        if (present(curvature)) known_k = max(curvature, 0.0_qp)
-        noise = rel_tol
-        if (present(accuracy)) noise = accuracy
-        status = status_no_convergence
-        do while (steps < max_steps)
-            call fun%evaluate(x, fx, dfx, status)
-            steps = steps + 1
-            if (status /= status_ok) return
-            if (fx == 0.0_qp) return
-            if (present(curvature) .and. steps > 1) then
-                if (abs(dfx - df_previous) > 1.0e3_qp*noise*abs(dfx) .and. &
-                    x /= x_previous) then
-                    curvature = max(curvature, abs(dfx - df_previous) &
-                                               /(2.0_qp*abs(dfx)*abs(x - x_previous)))
-                    known_k = curvature
-                end if
-            end if
-            x_previous = x
-            df_previous = dfx
-            ! shrink the bracket
-            if ((fx < 0.0_qp) .eqv. increasing) then
-                a = x
-            else
-                b = x
-            end if
-            x_new = x - fx/dfx
-            tolerance = rel_tol*abs(x) + abs_tol
-            ! a Newton correction below the tolerance ends the iteration, even where
-            ! rounding puts x_new on the bracket end just moved to x
-            if (ieee_is_finite(x_new) .and. abs(x_new - x) <= tolerance) then
-                x = x_new
-                status = status_ok
-                return
-            end if
-            ! otherwise bisect when the Newton step leaves the bracket
-            newton_step = ieee_is_finite(x_new) .and. x_new > a .and. x_new < b
-            if (.not. newton_step) x_new = 0.5_qp*(a + b)
-            dx = x_new - x
-            x = x_new
-            tolerance = rel_tol*abs(x) + abs_tol
-            if (b - a <= tolerance) then
-                status = status_ok
-                return
-            end if
-            ! two Newton steps in a row converging quadratically: the error of x is
-            ! about |dx|^3/|dx_previous|^2, so the confirming evaluation can be skipped
-            if (newton_step .and. previous_newton .and. &
-                abs(dx) <= 1.0e-4_qp*abs(dx_previous)) then
-                predicted = abs(dx)*(abs(dx)/abs(dx_previous))**2
-                if (predicted <= tolerance) then
-                    status = status_ok
-                    return
-                end if
-            end if
-            ! with the curvature known from an earlier run: error about K dx^2 (x4 margin)
-            if (newton_step .and. known_k > 0.0_qp) then
-                if (4.0_qp*known_k*dx*dx <= tolerance) then
-                    status = status_ok
-                    return
-                end if
-            end if
-            ! measure K = |dx|/|dx_previous|^2 while the steps are far above the noise
-            if (present(curvature) .and. newton_step .and. previous_newton .and. &
-                abs(dx) > 1.0e3_qp*noise*abs(x)) then
-                curvature = max(curvature, abs(dx)/dx_previous**2)
-                known_k = curvature
-            end if
-            dx_previous = dx
-            previous_newton = newton_step
-            status = status_no_convergence
+        type(newton_iteration) :: run
+        real(qp) :: fx, dfx
+        integer :: evaluation_status
+        call newton_begin(run, lo, f_lo, hi, f_hi, x0, rel_tol, abs_tol, max_steps, &
+                          curvature, accuracy)
+        do while (.not. run%done)
+            call fun%evaluate(run%x, fx, dfx, evaluation_status)
+            call newton_advance(run, fx, dfx, evaluation_status)
         end do
+        x = run%x
+        steps = run%steps
+        status = run%status
+        if (present(curvature)) curvature = run%curvature
     end subroutine newton_bracketed
+
+    !> Start a `newton_bracketed` run driven by the caller: then, while .not. run%done,
+    !! evaluate f and f' at run%x and pass them to `newton_advance`. The arguments are
+    !! newton_bracketed's (curvature: its value in).
+    pure subroutine newton_begin(run, lo, f_lo, hi, f_hi, x0, rel_tol, abs_tol, max_steps, &
+                                 curvature, accuracy)
+        type(newton_iteration), intent(out) :: run !! the run, at its first iterate
+        real(qp), intent(in) :: lo, hi, f_lo, f_hi, x0, rel_tol, abs_tol
+        integer, intent(in) :: max_steps
+        real(qp), intent(in), optional :: curvature, accuracy
+        run%a = lo
+        run%b = hi
+        run%increasing = f_lo < 0.0_qp .or. f_hi > 0.0_qp
+        run%x = min(max(x0, run%a), run%b)
+        if (.not. ieee_is_finite(run%x)) run%x = 0.5_qp*(run%a + run%b)
+        run%rel_tol = rel_tol
+        run%abs_tol = abs_tol
+        run%max_steps = max_steps
+        run%measure = present(curvature)
+        if (present(curvature)) then
+            run%curvature = curvature
+            run%known_k = max(curvature, 0.0_qp)
+        end if
+        run%noise = rel_tol
+        if (present(accuracy)) run%noise = accuracy
+        run%done = run%steps >= max_steps
+    end subroutine newton_begin
+
+    !> One step of a `newton_begin` run, from f and f' at run%x (and the status of that
+    !! evaluation): sets run%done, or the next run%x. When done, run%x is the root,
+    !! run%status status_ok, status_no_convergence or the evaluation's failure.
+    pure subroutine newton_advance(run, fx, dfx, evaluation_status)
+        type(newton_iteration), intent(inout) :: run !! the run
+        real(qp), intent(in) :: fx, dfx              !! f, f' at run%x
+        integer, intent(in) :: evaluation_status     !! status of that evaluation
+        real(qp) :: x, dx, x_new, tolerance, predicted
+        logical :: newton_step
+        run%steps = run%steps + 1
+        run%status = evaluation_status
+        run%done = .true.
+        if (evaluation_status /= status_ok) return
+        if (fx == 0.0_qp) return
+        x = run%x
+        if (run%measure .and. run%steps > 1) then
+            if (abs(dfx - run%df_previous) > 1.0e3_qp*run%noise*abs(dfx) .and. &
+                x /= run%x_previous) then
+                run%curvature = max(run%curvature, abs(dfx - run%df_previous) &
+                                                   /(2.0_qp*abs(dfx)*abs(x - run%x_previous)))
+                run%known_k = run%curvature
+            end if
+        end if
+        run%x_previous = x
+        run%df_previous = dfx
+        ! shrink the bracket
+        if ((fx < 0.0_qp) .eqv. run%increasing) then
+            run%a = x
+        else
+            run%b = x
+        end if
+        x_new = x - fx/dfx
+        tolerance = run%rel_tol*abs(x) + run%abs_tol
+        ! a Newton correction below the tolerance ends the iteration, even where
+        ! rounding puts x_new on the bracket end just moved to x
+        if (ieee_is_finite(x_new) .and. abs(x_new - x) <= tolerance) then
+            run%x = x_new
+            return
+        end if
+        ! otherwise bisect when the Newton step leaves the bracket
+        newton_step = ieee_is_finite(x_new) .and. x_new > run%a .and. x_new < run%b
+        if (.not. newton_step) x_new = 0.5_qp*(run%a + run%b)
+        dx = x_new - x
+        run%x = x_new
+        tolerance = run%rel_tol*abs(x_new) + run%abs_tol
+        if (run%b - run%a <= tolerance) return
+        ! two Newton steps in a row converging quadratically: the error of x is
+        ! about |dx|^3/|dx_previous|^2, so the confirming evaluation can be skipped
+        if (newton_step .and. run%previous_newton .and. &
+            abs(dx) <= 1.0e-4_qp*abs(run%dx_previous)) then
+            predicted = abs(dx)*(abs(dx)/abs(run%dx_previous))**2
+            if (predicted <= tolerance) return
+        end if
+        ! with the curvature known from an earlier run: error about K dx^2 (x4 margin)
+        if (newton_step .and. run%known_k > 0.0_qp) then
+            if (4.0_qp*run%known_k*dx*dx <= tolerance) return
+        end if
+        ! measure K = |dx|/|dx_previous|^2 while the steps are far above the noise
+        if (run%measure .and. newton_step .and. run%previous_newton .and. &
+            abs(dx) > 1.0e3_qp*run%noise*abs(x_new)) then
+            run%curvature = max(run%curvature, abs(dx)/run%dx_previous**2)
+            run%known_k = run%curvature
+        end if
+        run%dx_previous = dx
+        run%previous_newton = newton_step
+        run%status = status_no_convergence
+        run%done = run%steps >= run%max_steps
+    end subroutine newton_advance
 
     !> Root of f on [lo, hi] (f(lo), f(hi) of opposite signs) by regula falsi with the
     !! Anderson-Bjorck correction; f's derivative is not used. Stops when the bracket

@@ -12,7 +12,7 @@ module brachistochrone_closed_forms
 
     public :: fall_to_centre_time, apse_angle_limit, inaccessible_angle
     public :: radial_fall_time, kappa_bound
-    public :: radial_time, kappa_time
+    public :: radial_time, radial_time_of_roots, kappa_time
 
     !> t(0) = pi/sqrt(8), eq. (47): time of radial fall from rest at radius 1 to the centre.
     real(qp), parameter :: fall_to_centre_time = pi/sqrt(8.0_qp)
@@ -39,8 +39,20 @@ contains
         else
             one_minus_r = 1.0_qp - r
         end if
-        t = (atan2(sqrt(one_minus_r), sqrt(r)) + sqrt(r*one_minus_r))/sqrt(2.0_qp)
+        t = radial_time_of_roots(r, one_minus_r, sqrt(r), sqrt(one_minus_r))
     end function radial_time
+
+    !> `radial_time` from square roots the caller has already computed (the same bits):
+    !! t(r) = [atan2(sqrt(1-r), sqrt(r)) + sqrt(r(1-r))]/sqrt(2).
+    elemental function radial_time_of_roots(r, one_minus_r, root_r, root_one_minus_r) &
+        result(t)
+        real(qp), intent(in) :: r                !! radius, 0 <= r <= 1
+        real(qp), intent(in) :: one_minus_r      !! 1 - r
+        real(qp), intent(in) :: root_r           !! sqrt(r)
+        real(qp), intent(in) :: root_one_minus_r !! sqrt(1 - r)
+        real(qp) :: t
+        t = (atan2(root_one_minus_r, root_r) + sqrt(r*one_minus_r))/sqrt(2.0_qp)
+    end function radial_time_of_roots
 
     !> kappa(rho) = 2 t(0) - t(rho), eq. (75): the greatest lower bound of the time from A
     !! to any point at radius rho in the sector of inaccessibility. Precondition
