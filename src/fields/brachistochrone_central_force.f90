@@ -201,6 +201,7 @@ contains
         real(qp) :: sigma(2)
         integer :: j
         allocate (model%law, source=law)
+        call model%law%prepare()
         do j = min_nodes/2, max_nodes/2
             rule = gauss_legendre(2*j)
             model%gauss(j)%n = 2*j

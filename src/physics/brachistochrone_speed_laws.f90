@@ -124,6 +124,9 @@ module brachistochrone_speed_laws
         !> Distances (in lambda from the apse, delta from the start) of the nearest
         !! complex singularities of the integrands in those variables
         procedure :: log_scales => default_log_scales
+        !> Constants the law keeps for its own methods, computed once (the engine calls
+        !! it on its copy of the law; without it the methods compute them each time)
+        procedure :: prepare => no_preparation
         !> Whether the law has the hardware-precision terms below (else the engine
         !! takes its double-precision phase and quad-precision secant steps)
         procedure :: has_terms_xp => default_has_terms_xp
@@ -165,6 +168,8 @@ module brachistochrone_speed_laws
     !> Attractive power law F = 1/r^n, n > 1: v^2 = 2 (x^(1-n) - 1)/(n - 1).
     type, extends(speed_law) :: power_law
         real(qp) :: n = 2.0_qp !! exponent of the force, n > 1
+        !> t0(0) = B(1/a + 1/2, 1/2)/sqrt(2 a), a = n - 1 (`prepare`; 0: not kept)
+        real(qp) :: fall_limit = 0.0_qp
     contains
         procedure :: speed_squared => power_p
         procedure :: divided_difference => power_d
@@ -177,6 +182,7 @@ module brachistochrone_speed_laws
         procedure :: closed_fall => power_closed_fall
         procedure :: conserved => power_conserved
         procedure :: log_scales => power_log_scales
+        procedure :: prepare => power_prepare
         procedure :: valid => power_valid
         procedure :: has_terms_xp => power_has_terms_xp
         procedure :: apse_constants_xp => power_apse_constants_xp
@@ -432,6 +438,30 @@ contains
 
     !> [sigma_apse, sigma_start]: inverse-square values (w(x) = w(R) at x = R e^(2 pi i/3)
     !! for small R; P has no other zero).
+    !> No constants to keep.
+    pure subroutine no_preparation(self)
+        class(speed_law), intent(inout) :: self
+    end subroutine no_preparation
+
+    !> The fall time to the centre, t0(0) = B(p, 1/2)/sqrt(2 a), p = 1/a + 1/2, for
+    !! `power_fall_time` (two gamma functions, about 20 us, per call otherwise); a >= 1/100
+    !! (below it the fall time never needs it).
+    pure subroutine power_prepare(self)
+        class(power_law), intent(inout) :: self
+        real(qp) :: a
+        a = self%n - 1.0_qp
+        self%fall_limit = 0.0_qp
+        if (a >= 0.01_qp) self%fall_limit = fall_beta(a)/sqrt(2.0_qp*a)
+    end subroutine power_prepare
+
+    !> B(p, 1/2) = Gamma(p) sqrt(pi)/Gamma(p + 1/2), p = 1/a + 1/2.
+    pure function fall_beta(a) result(beta)
+        real(qp), intent(in) :: a
+        real(qp) :: beta, p
+        p = 1.0_qp/a + 0.5_qp
+        beta = gamma(p)*sqrt(acos(-1.0_qp))/gamma(p + 0.5_qp)
+    end function fall_beta
+
     pure function default_log_scales(self) result(sigma)
         class(speed_law), intent(in) :: self
         real(qp) :: sigma(2)
@@ -653,8 +683,8 @@ contains
             t = radial_time(exp(-delta_hi), -expm1(-delta_hi)) &
                 - radial_time(exp(-delta_lo), -expm1(-delta_lo))
         else if (found) then
-            t = power_fall_time(a, delta_hi)
-            if (delta_lo > 0.0_qp) t = t - power_fall_time(a, delta_lo)
+            t = power_fall_time(a, delta_hi, self%fall_limit)
+            if (delta_lo > 0.0_qp) t = t - power_fall_time(a, delta_lo, self%fall_limit)
         end if
     end subroutine power_closed_fall
 
@@ -721,9 +751,10 @@ contains
     !! c_k the binomial series of (1 - w^2)^(p-1); below, I = B(p, 1/2) - sum_k d_k
     !! y^(p+k)/(p+k), d_k = (1/2)_k/k!. Both series have ratio at most 1/2 (terms of one
     !! sign after the first few); about 115 terms for 36 digits.
-    pure function power_fall_time(a, delta) result(t)
+    pure function power_fall_time(a, delta, limit) result(t)
         real(qp), intent(in) :: a, delta
-        real(qp) :: t, p, w2, power, c, term, total, y, beta
+        real(qp), intent(in) :: limit  !! t0(0) where known (`power_prepare`), else 0
+        real(qp) :: t, p, w2, power, c, term, total, y
         integer :: k
         if (a < 2.0_qp .and. a*min(delta, 100.0_qp) <= 2.0_qp*log_two) then
             t = mild_fall_time(a, delta)
@@ -754,8 +785,11 @@ contains
                 c = c*half_step(k)
                 power = power*y
             end do
-            beta = gamma(p)*sqrt(acos(-1.0_qp))/gamma(p + 0.5_qp)
-            t = (beta - total)/sqrt(2.0_qp*a)
+            if (limit > 0.0_qp) then
+                t = limit - total/sqrt(2.0_qp*a)
+            else
+                t = (fall_beta(a) - total)/sqrt(2.0_qp*a)
+            end if
         end if
     end function power_fall_time
 
