@@ -1037,13 +1037,18 @@ contains
     end subroutine default_theta_terms_xp
 
     !> exp(-y) and E = 1 - exp(-y) = -expm1(-y), y >= 0, both to full relative precision
-    !! in hardware precision (2 exp(-y/2) sinh(y/2) where exp(-y) is close to 1), or
+    !! in hardware precision (for y < 1/2 E by its Taylor series, nested: y (1 - y/2 (1 -
+    !! y/3 (...))), 18 terms, the last below 2^-70 of E; one exponential's cost), or
     !! `rough`ly, in double precision.
     elemental subroutine exp_and_decay_xp(y, e, one_minus_e, rough)
         real(xp), intent(in) :: y
         real(xp), intent(out) :: e, one_minus_e
         logical, intent(in) :: rough
         real(real64) :: y64, e64
+        integer, parameter :: decay_terms = 18
+        real(xp), parameter :: inverse_xp(2:decay_terms) = &
+            [(1.0_xp/real(k_, xp), k_ = 2, decay_terms)]
+        integer :: k
         if (rough) then
             y64 = real(y, real64)
             if (y64 < 0.5_real64) then
@@ -1056,9 +1061,12 @@ contains
                 one_minus_e = real(1.0_real64 - e64, xp)
             end if
         else if (y < 0.5_xp) then
-            e = exp(-0.5_xp*y)
-            one_minus_e = 2.0_xp*e*sinh(0.5_xp*y)
-            e = e*e
+            one_minus_e = 1.0_xp
+            do k = decay_terms, 2, -1
+                one_minus_e = 1.0_xp - y*one_minus_e*inverse_xp(k)
+            end do
+            one_minus_e = y*one_minus_e
+            e = 1.0_xp - one_minus_e
         else
             e = exp(-y)
             one_minus_e = 1.0_xp - e
