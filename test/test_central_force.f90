@@ -729,19 +729,24 @@ contains
         type(central_force_model) :: closed, quadrature
         type(inverse_square_model) :: fast
         type(endpoint_solution) :: a, b
-        real(qp), parameter :: radii(6) = [0.0_qp, 1.0e-6_qp, 0.3_qp, 0.9_qp, &
-                                           1.0_qp - 1.0e-12_qp, 1.0_qp - 1.0e-30_qp]
-        real(qp), parameter :: exponents(6) = [2.0_qp, 3.0_qp, 1.25_qp, 1.5_qp, 10.0_qp, &
-                                               32.0_qp]
+        real(qp), parameter :: radii(12) = [0.0_qp, 1.0e-6_qp, 0.3_qp, 0.9_qp, &
+                                            1.0_qp - 1.0e-12_qp, 1.0_qp - 1.0e-30_qp, &
+                                            0.05_qp, 3.0e-4_qp, 2.0e-22_qp, 1.0e-65_qp, &
+                                            0.082_qp, 4.5e-5_qp]
+        real(qp), parameter :: exponents(11) = [2.0_qp, 3.0_qp, 1.25_qp, 1.5_qp, 10.0_qp, &
+                                                32.0_qp, 1.1_qp, 1.01_qp, 1.0_qp + 1.0e-6_qp, &
+                                                1.0_qp + 2.0_qp**(-100), 2.5_qp]
         real(qp) :: t(2), worst
         integer :: law, i, j, status
         call section('central force: closed-form fall times against the quadrature')
         worst = 99.0_qp
-        do law = 1, 8
+        do law = 1, 8 + size(exponents) - 6
             select case (law)
-            case (1:6)
-                closed = new_central_force_model(power_law(n=exponents(law)))
-                quadrature = new_central_force_model(quadrature_power_law(n=exponents(law)))
+            case (1:6, 9:)
+                j = merge(law, law - 2, law <= 6)
+                closed = new_central_force_model(power_law(n=exponents(j)), tables=.false.)
+                quadrature = new_central_force_model(quadrature_power_law(n=exponents(j)), &
+                                                     tables=.false.)
             case (8)
                 closed = new_central_force_model(harmonic_law())
                 quadrature = new_central_force_model(quadrature_harmonic_law())
@@ -755,8 +760,8 @@ contains
                 worst = min(worst, digits_of_agreement(t(1), t(2)))
             end do
         end do
-        write (output_unit, '(a,f6.2)') '   n = 2, 3, 1.25, 1.5, 10, 32, logarithmic, ' &
-            //'harmonic, 6 radii: fewest digits ', worst
+        write (output_unit, '(a,f6.2)') '   n = 2, 3, 1.25, 1.5, 10, 32, 1.1, 1.01, 1 + 1e-6, ' &
+            //'1 + 2^-100, 2.5, logarithmic, harmonic, 12 radii: fewest digits ', worst
         call check(worst >= 32.5_qp, 'closed-form fall times = quadrature to >= 32.5 digits')
         closed = new_central_force_model(power_law(n=2.0_qp))
         fast = new_inverse_square_model()

@@ -27,7 +27,7 @@
 !! the running sum needs, and panels below 1e-40 of it are skipped. Transcendentals:
 !! one or two fast exp/expm1 per node (`brachistochrone_fast_exp`; one for n = 2, 3),
 !! square roots by a hardware seed and a Newton step. The fall time t0 is in closed form
-!! for power laws with n >= 1.25 and the logarithmic law (`speed_law%closed_fall`), a
+!! for power laws and the logarithmic law (`speed_law%closed_fall`), a
 !! quadrature of x/v otherwise (`fall_piece`).
 !!
 !! Whole-half-arch tables (as on the fast path): the integrals over [0, Lambda] with
@@ -200,6 +200,7 @@ contains
         real(qp) :: sigma(2)
         integer :: j
         allocate (model%law, source=law)
+        call model%law%prepare()
         do j = min_nodes/2, max_nodes/2
             rule = gauss_legendre(2*j)
             model%gauss(j)%n = 2*j

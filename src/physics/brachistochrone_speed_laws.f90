@@ -53,6 +53,54 @@ module brachistochrone_speed_laws
         [((real(k_, qp) + 0.5_qp)/real(k_ + 1, qp), k_ = 0, max_series_terms)]
     real(qp), parameter :: log_two = log(2.0_qp)
 
+    !> sqrt(z/sinh z) = sum_m sinh_root(m) z^(2m) (radius pi), for the fall time of the
+    !! power laws n < 3 where (n - 1) delta <= 2 log 2 (`mild_fall_time`); 40 digits from
+    !! mpmath (taylor(lambda z: sqrt(z/sinh(z)), 0, 80) at 70 digits).
+    integer, parameter :: mild_terms = 40
+    !> 1/(j + 1/2) for the incomplete gamma functions' recurrence and series
+    real(qp), parameter :: inverse_half(0:2*mild_terms + max_series_terms) = &
+        [(1.0_qp/(real(k_, qp) + 0.5_qp), k_ = 0, 2*mild_terms + max_series_terms)]
+    real(qp), parameter :: sinh_root(0:mild_terms) = [ &
+        1.0e0_qp, -8.333333333333333333333333333333333333333e-2_qp, 6.25e-3_qp, &
+        -5.042989417989417989417989417989417989418e-4_qp, &
+        4.343722442680776014109347442680776014109e-5_qp, &
+        -3.896385732323232323232323232323232323232e-6_qp, &
+        3.5833354634507908317432126955936479746e-7_qp, &
+        -3.349747072060577902729578214587032929185e-8_qp, &
+        3.167585434316114761035785000926613127049e-9_qp, &
+        -3.021036851737096156278742947805201253256e-10_qp, &
+        2.900415787669253041460419685680819465987e-11_qp, &
+        -2.799396748375269290000330833169690392468e-12_qp, &
+        2.713639320017203700482007716326339699919e-13_qp, &
+        -2.640047892184152890324073200737982690296e-14_qp, &
+        2.576345276111417982816729253880419663641e-15_qp, &
+        -2.520813255420055633867949277570450368858e-16_qp, &
+        2.472127507451747074250283620694908877938e-17_qp, &
+        -2.429248639502351558272628537939467695867e-18_qp, &
+        2.391348018764929546325534307879697167263e-19_qp, &
+        -2.357755946411740481256440405565376374944e-20_qp, &
+        2.327924615768231866669533139979789887871e-21_qp, &
+        -2.301401107906203587724045173661755178386e-22_qp, &
+        2.27780735734473662400585763213415032165e-23_qp, &
+        -2.256825055267753398663825185279649405166e-24_qp, &
+        2.238184113077813437978847334000099299076e-25_qp, &
+        -2.221653734513266919675727836676171554971e-26_qp, &
+        2.207035426746869403222671127252579043125e-27_qp, &
+        -2.194157471766908839292169391163766390714e-28_qp, &
+        2.182870510763488759130553249729622318812e-29_qp, &
+        -2.17304398619209826110578575113569440814e-30_qp, &
+        2.164563251472097105081419736584696185448e-31_qp, &
+        -2.157327205261501897742819338394024057059e-32_qp, &
+        2.151246341485599259846516438070392896562e-33_qp, &
+        -2.146241131533082548150734421018861075117e-34_qp, &
+        2.142240673835419615714246699036617377132e-35_qp, &
+        -2.139181560193522561415686926967345147643e-36_qp, &
+        2.137006918961645339412778460236613907037e-37_qp, &
+        -2.135665603431259287116514242103730989369e-38_qp, &
+        2.135111500116744217678797448991474082368e-39_qp, &
+        -2.13530293659428030211367519475879566002e-40_qp, &
+        2.136202172425637372263518718226106429429e-41_qp]
+
     !> A speed law: v^2 and its divided difference. Attractive laws here: v > 0 for
     !! 0 < r < 1, v(1) = 0.
     type, abstract :: speed_law
@@ -76,6 +124,9 @@ module brachistochrone_speed_laws
         !> Distances (in lambda from the apse, delta from the start) of the nearest
         !! complex singularities of the integrands in those variables
         procedure :: log_scales => default_log_scales
+        !> Constants the law keeps for its own methods, computed once (the engine calls
+        !! it on its copy of the law; without it the methods compute them each time)
+        procedure :: prepare => no_preparation
         !> Whether the law has the hardware-precision terms below (else the engine
         !! takes its double-precision phase and quad-precision secant steps)
         procedure :: has_terms_xp => default_has_terms_xp
@@ -117,6 +168,8 @@ module brachistochrone_speed_laws
     !> Attractive power law F = 1/r^n, n > 1: v^2 = 2 (x^(1-n) - 1)/(n - 1).
     type, extends(speed_law) :: power_law
         real(qp) :: n = 2.0_qp !! exponent of the force, n > 1
+        !> t0(0) = B(1/a + 1/2, 1/2)/sqrt(2 a), a = n - 1 (`prepare`; 0: not kept)
+        real(qp) :: fall_limit = 0.0_qp
     contains
         procedure :: speed_squared => power_p
         procedure :: divided_difference => power_d
@@ -129,6 +182,7 @@ module brachistochrone_speed_laws
         procedure :: closed_fall => power_closed_fall
         procedure :: conserved => power_conserved
         procedure :: log_scales => power_log_scales
+        procedure :: prepare => power_prepare
         procedure :: valid => power_valid
         procedure :: has_terms_xp => power_has_terms_xp
         procedure :: apse_constants_xp => power_apse_constants_xp
@@ -384,6 +438,30 @@ contains
 
     !> [sigma_apse, sigma_start]: inverse-square values (w(x) = w(R) at x = R e^(2 pi i/3)
     !! for small R; P has no other zero).
+    !> No constants to keep.
+    pure subroutine no_preparation(self)
+        class(speed_law), intent(inout) :: self
+    end subroutine no_preparation
+
+    !> The fall time to the centre, t0(0) = B(p, 1/2)/sqrt(2 a), p = 1/a + 1/2, for
+    !! `power_fall_time` (two gamma functions, about 20 us, per call otherwise); a >= 1/100
+    !! (below it the fall time never needs it).
+    pure subroutine power_prepare(self)
+        class(power_law), intent(inout) :: self
+        real(qp) :: a
+        a = self%n - 1.0_qp
+        self%fall_limit = 0.0_qp
+        if (a >= 0.01_qp) self%fall_limit = fall_beta(a)/sqrt(2.0_qp*a)
+    end subroutine power_prepare
+
+    !> B(p, 1/2) = Gamma(p) sqrt(pi)/Gamma(p + 1/2), p = 1/a + 1/2.
+    pure function fall_beta(a) result(beta)
+        real(qp), intent(in) :: a
+        real(qp) :: beta, p
+        p = 1.0_qp/a + 0.5_qp
+        beta = gamma(p)*sqrt(acos(-1.0_qp))/gamma(p + 0.5_qp)
+    end function fall_beta
+
     pure function default_log_scales(self) result(sigma)
         class(speed_law), intent(in) :: self
         real(qp) :: sigma(2)
@@ -463,8 +541,9 @@ contains
         end if
     end function power_of
 
-    !> Two expm1 per node (three where a delta < 1/4; one less for n = 1.5, 2, 3, where
-    !! exp(-a lambda) follows from exp(-lambda)): exp(-lambda) = 1 + expm1(-lambda),
+    !> Two expm1 per node (one for n = 1.5, 2, 3, where exp(-a lambda) follows from
+    !! exp(-lambda); where a delta <= 1/4 E(lambda) and E(delta) follow from either and
+    !! E(Lambda)): exp(-lambda) = 1 + expm1(-lambda),
     !! 1 - exp(-2 lambda) = -expm1(-lambda) (2 + expm1(-lambda)), E(lambda) =
     !! -expm1(-a lambda), exp(-a delta) = exp(-a Lambda)/exp(-a lambda).
     pure subroutine power_arch_terms(self, c, lambda, delta, q, one_minus_q, q_over_v, &
@@ -478,7 +557,9 @@ contains
         real(xp), intent(out), optional :: log_slope
         real(qp) :: a, om1, om2, e1, e2, eam1, ea, e_delta, ea_e_delta
         real(xp) :: ratio_xp
+        logical :: known  ! E(delta) already at hand
         a = c(3)
+        known = .false.
         call exp_pair(lambda, delta, c(5), e1, om1, om2, e2)
         if (a == 2.0_qp) then
             ! n = 3: exp(-a lambda) = exp(-2 lambda)
@@ -492,6 +573,20 @@ contains
             ! n = 1.5: exp(-lambda/2) = sqrt(exp(-lambda)), 1 - it = (1 - e1)/(1 + it)
             ea = root(e1)
             eam1 = -om1/(1.0_qp + ea)
+        else if (delta <= c(8) .and. delta < lambda .and. c(4) > 0.0_qp) then
+            ! nearer the start, a delta <= 1/4: E(delta) by expm1 (below) and from it
+            ! exp(-a lambda) = R^a/(1 - E(delta)), E(lambda) = (E(Lambda) - E(delta))/
+            ! (1 - E(delta)) (lambda >= Lambda/2: at most two bits cancel; one
+            ! transcendental for the two)
+            e_delta = decay(a, delta)
+            known = .true.
+            if (lambda > 2.0_qp*c(8)) then
+                ea = c(4)/(1.0_qp - e_delta)
+                eam1 = ea - 1.0_qp
+            else
+                eam1 = (e_delta - c(2))/(1.0_qp - e_delta)
+                ea = 1.0_qp + eam1
+            end if
         else if (lambda > 2.0_qp*c(8)) then
             if (delta < lambda .and. c(4) > 0.0_qp) then
                 ! nearer the start: exp(-a lambda) = R^a exp(a delta), exact arguments
@@ -509,8 +604,13 @@ contains
             ! 1 - e^(-1/4): at most two bits cancel, as in 1 - R^a/exp(-a lambda))
             ea_e_delta = ea - c(4)
             ratio_xp = real(c(4), xp)/real(ea_e_delta, xp)
+        else if (lambda <= delta .and. c(4) > 0.0_qp) then
+            ! nearer the apse, a delta <= 1/4: exp(-a lambda) E(delta) = E(Lambda) -
+            ! E(lambda) (delta >= Lambda/2: at most two bits cancel; no expm1)
+            ea_e_delta = c(2) + eam1
+            ratio_xp = real(c(4), xp)/real(ea_e_delta, xp)
         else
-            e_delta = decay(a, delta)
+            if (.not. known) e_delta = decay(a, delta)
             ea_e_delta = ea*e_delta
             ratio_xp = real(1.0_qp - e_delta, xp)/real(e_delta, xp)
         end if
@@ -566,7 +666,8 @@ contains
     end function power_fall_integrand
 
     !> n = 3: t0(x) = sqrt(1 - x^2); n = 2: the inverse-square fall time (Tee eq. 46);
-    !! 1/4 <= a = n - 1: an incomplete beta function (`power_fall_time`); below: none.
+    !! other n: a series of incomplete gamma functions or an incomplete beta function
+    !! (`power_fall_time`).
     pure subroutine power_closed_fall(self, delta_lo, delta_hi, t, found)
         class(power_law), intent(in) :: self
         real(qp), intent(in) :: delta_lo, delta_hi
@@ -574,7 +675,7 @@ contains
         logical, intent(out) :: found
         real(qp) :: a
         a = self%n - 1.0_qp
-        found = a >= 0.25_qp
+        found = a > 0.0_qp
         t = 0.0_qp
         if (self%n == 3.0_qp) then
             t = sqrt(-expm1(-2.0_qp*delta_hi)) - sqrt(-expm1(-2.0_qp*delta_lo))
@@ -582,21 +683,83 @@ contains
             t = radial_time(exp(-delta_hi), -expm1(-delta_hi)) &
                 - radial_time(exp(-delta_lo), -expm1(-delta_lo))
         else if (found) then
-            t = power_fall_time(a, delta_hi)
-            if (delta_lo > 0.0_qp) t = t - power_fall_time(a, delta_lo)
+            t = power_fall_time(a, delta_hi, self%fall_limit)
+            if (delta_lo > 0.0_qp) t = t - power_fall_time(a, delta_lo, self%fall_limit)
         end if
     end subroutine power_closed_fall
 
-    !> The fall time from 1 to x = exp(-delta) of the power law a = n - 1 >= 1/4:
+    !> The fall time from 1 to x = exp(-delta) of the power law a = n - 1 < 2 where
+    !! a min(delta, 100) <= 2 log 2 (beyond delta = 100 it is t0(100) to within exp(-100)):
+    !! x/v = exp(-b u) sqrt(z/sinh z)/sqrt(2 u), b = 1 + a/4, z = a u/2, so that
+    !! t0 = (2 b)^(-1/2) sum_m C_m (a/(2 b))^(2m) gamma(2m + 1/2, b delta) (C_m:
+    !! `sinh_root`; z <= log 2: the terms fall like (z/pi)^(2m), at most 28 of them).
+    !! The lower incomplete gamma functions: from sqrt(pi) erf(sqrt(x)) upward (x >= 2 and
+    !! 2 m a <= 8, where the recurrence loses less than the terms' fall gains) or from
+    !! Kummer's series at the top downward (sums of positive terms): a few roundings.
+    pure function mild_fall_time(a, delta) result(t)
+        real(qp), intent(in) :: a, delta
+        real(qp) :: t, b, x, w, total, power, sum, term
+        real(qp) :: gam(0:2*mild_terms), p(0:2*mild_terms)
+        real(real64) :: ratio
+        integer :: m, top, j, k
+        b = 1.0_qp + 0.25_qp*a
+        x = b*min(delta, 100.0_qp)
+        w = (0.5_qp*a/b)**2
+        ! terms while 0.2 (z/pi)^(2m) exceeds 1e-37 (z/pi <= log(2)/pi: at most 28)
+        ratio = real(0.5_qp*a*min(delta, 100.0_qp), real64)/acos(-1.0_real64)
+        top = 1
+        if (ratio > 0.0_real64) top = min(mild_terms, max(1, &
+            ceiling(log(5.0e-37_real64)/(2.0_real64*log(ratio)))))
+        ! p(j) = x^(j + 1/2) exp(-x), gam(j) = gamma(j + 1/2, x)
+        p(0) = sqrt(x)*fast_exp(-x)
+        do j = 1, 2*top
+            p(j) = p(j - 1)*x
+        end do
+        if (x >= 2.0_qp .and. real(2*top, qp)*a <= 8.0_qp) then
+            ! (the upward recurrence multiplies gam(0)'s rounding by about Gamma(2m + 1/2),
+            ! the weights by (a/(2 pi b))^(2m): below (2 m a/(2 pi b e))^(2m) < 0.5^(2m))
+            gam(0) = sqrt(acos(-1.0_qp))*erf(sqrt(x))
+            do j = 1, 2*top
+                gam(j) = (real(j, qp) - 0.5_qp)*gam(j - 1) - p(j - 1)
+            end do
+        else
+            sum = 1.0_qp
+            term = 1.0_qp
+            do k = 1, max_series_terms
+                term = term*x*inverse_half(2*top + k)
+                sum = sum + term
+                if (term <= 1.0e-36_qp*sum) exit
+            end do
+            gam(2*top) = p(2*top)*inverse_half(2*top)*sum
+            do j = 2*top - 1, 0, -1
+                gam(j) = (gam(j + 1) + p(j))*inverse_half(j)
+            end do
+        end if
+        total = 0.0_qp
+        power = 1.0_qp
+        do m = 0, top
+            total = total + sinh_root(m)*power*gam(2*m)
+            power = power*w
+        end do
+        t = total/sqrt(2.0_qp*b)
+    end function mild_fall_time
+
+    !> The fall time from 1 to x = exp(-delta) of the power law a = n - 1 (`mild_fall_time`
+    !! where a < 2 and a min(delta, 100) <= 2 log 2; otherwise, where p = 1/a + 1/2 < 73):
     !! t0 = I(y)/sqrt(2 a), I(y) = int_y^1 t^(p-1) (1-t)^(-1/2) dt, y = x^a, p = 1/a + 1/2
     !! (t = y). For y >= 1/2, with 1 - t = w^2, I = 2 sum_k c_k W^(2k+1)/(2k+1), W^2 = 1 - y,
     !! c_k the binomial series of (1 - w^2)^(p-1); below, I = B(p, 1/2) - sum_k d_k
     !! y^(p+k)/(p+k), d_k = (1/2)_k/k!. Both series have ratio at most 1/2 (terms of one
     !! sign after the first few); about 115 terms for 36 digits.
-    pure function power_fall_time(a, delta) result(t)
+    pure function power_fall_time(a, delta, limit) result(t)
         real(qp), intent(in) :: a, delta
-        real(qp) :: t, p, w2, power, c, term, total, y, beta
+        real(qp), intent(in) :: limit  !! t0(0) where known (`power_prepare`), else 0
+        real(qp) :: t, p, w2, power, c, term, total, y
         integer :: k
+        if (a < 2.0_qp .and. a*min(delta, 100.0_qp) <= 2.0_qp*log_two) then
+            t = mild_fall_time(a, delta)
+            return
+        end if
         p = 1.0_qp/a + 0.5_qp
         total = 0.0_qp
         if (a*delta <= log_two) then
@@ -622,8 +785,11 @@ contains
                 c = c*half_step(k)
                 power = power*y
             end do
-            beta = gamma(p)*sqrt(acos(-1.0_qp))/gamma(p + 0.5_qp)
-            t = (beta - total)/sqrt(2.0_qp*a)
+            if (limit > 0.0_qp) then
+                t = limit - total/sqrt(2.0_qp*a)
+            else
+                t = (fall_beta(a) - total)/sqrt(2.0_qp*a)
+            end if
         end if
     end function power_fall_time
 
@@ -871,13 +1037,18 @@ contains
     end subroutine default_theta_terms_xp
 
     !> exp(-y) and E = 1 - exp(-y) = -expm1(-y), y >= 0, both to full relative precision
-    !! in hardware precision (2 exp(-y/2) sinh(y/2) where exp(-y) is close to 1), or
+    !! in hardware precision (for y < 1/2 E by its Taylor series, nested: y (1 - y/2 (1 -
+    !! y/3 (...))), 18 terms, the last below 2^-70 of E; one exponential's cost), or
     !! `rough`ly, in double precision.
     elemental subroutine exp_and_decay_xp(y, e, one_minus_e, rough)
         real(xp), intent(in) :: y
         real(xp), intent(out) :: e, one_minus_e
         logical, intent(in) :: rough
         real(real64) :: y64, e64
+        integer, parameter :: decay_terms = 18
+        real(xp), parameter :: inverse_xp(2:decay_terms) = &
+            [(1.0_xp/real(k_, xp), k_ = 2, decay_terms)]
+        integer :: k
         if (rough) then
             y64 = real(y, real64)
             if (y64 < 0.5_real64) then
@@ -890,9 +1061,12 @@ contains
                 one_minus_e = real(1.0_real64 - e64, xp)
             end if
         else if (y < 0.5_xp) then
-            e = exp(-0.5_xp*y)
-            one_minus_e = 2.0_xp*e*sinh(0.5_xp*y)
-            e = e*e
+            one_minus_e = 1.0_xp
+            do k = decay_terms, 2, -1
+                one_minus_e = 1.0_xp - y*one_minus_e*inverse_xp(k)
+            end do
+            one_minus_e = y*one_minus_e
+            e = 1.0_xp - one_minus_e
         else
             e = exp(-y)
             one_minus_e = 1.0_xp - e
@@ -932,6 +1106,8 @@ contains
         logical, intent(in) :: rough
         real(xp), intent(out) :: g, one_minus_q, log_slope
         real(xp) :: e2, om2, ea, e_lambda, ead, e_delta
+        logical :: known  ! E(delta) at hand
+        known = .false.
         if (c(3) == 1.0_xp) then
             ! n = 2: exp(-2 lambda) and its decay from exp(-lambda)'s
             call exp_and_decay_xp(lambda, ea, e_lambda, rough)
@@ -943,11 +1119,32 @@ contains
                 ! n = 3: exp(-a lambda) = exp(-2 lambda)
                 ea = e2
                 e_lambda = om2
+            else if (c(3) == 0.5_xp) then
+                ! n = 1.5: exp(-lambda/2) = exp(-2 lambda)^(1/4), 1 - exp(-2 lambda) =
+                ! (1 - it) (1 + it) (1 + it^2)
+                ea = sqrt(sqrt(e2))
+                e_lambda = om2/((1.0_xp + ea)*(1.0_xp + ea*ea))
+            else if (c(3)*delta <= 0.25_xp .and. delta < lambda .and. &
+                     c(3)*lambda <= 0.5_xp) then
+                ! nearer the start: E(lambda) = (E(Lambda) - E(delta))/(1 - E(delta)) (as
+                ! `power_arch_terms`: at most two bits cancel; one exponential for both)
+                call exp_and_decay_xp(c(3)*delta, ead, e_delta, rough)
+                known = .true.
+                e_lambda = (c(2) - e_delta)/ead
+                ea = 1.0_xp - e_lambda
             else
                 call exp_and_decay_xp(c(3)*lambda, ea, e_lambda, rough)
             end if
         end if
-        call exp_and_decay_xp(c(3)*delta, ead, e_delta, rough)
+        if (.not. known) then
+            if (c(3)*delta <= 0.25_xp .and. lambda <= delta) then
+                ! nearer the apse: exp(-a lambda) E(delta) = E(Lambda) - E(lambda)
+                e_delta = (c(2) - e_lambda)/ea
+                ead = 1.0_xp - e_delta
+            else
+                call exp_and_decay_xp(c(3)*delta, ead, e_delta, rough)
+            end if
+        end if
         one_minus_q = om2 + e2*e_lambda/c(2)
         g = sqrt(e_delta/(one_minus_q*c(2)))*scaled_exp(shift - 0.5_xp*(c(3) + 2.0_xp)*lambda, &
                                                          rough)
