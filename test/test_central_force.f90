@@ -404,12 +404,43 @@ contains
         call check(worst_solve >= 32.5_qp, 'two-point R (+1.5), s, t with tables = all panels')
     end subroutine whole_tables
 
-    !> The far tables (Lambda from 11 to 80, R-bar from 1.7e-5 down to 2e-35) of the
-    !! logarithmic law against all panels: theta, s, t on both half-arches at apse radii
-    !! 1e-4 .. 1e-34, and R, s, t of the two-point problem next to the sector's edge
-    !! (psi/pi = 0.95 .. 0.993: R-bar about 1e-5 .. 1e-31; R-bar's conditioning there,
-    !! d log R/d log psi of 10^2.5 .. 10^4, measured and credited).
+    !> The far tables (Lambda from 11 to 80, R-bar from 1.7e-5 down to 2e-35) against
+    !! all panels, for the logarithmic law and power laws n = 1.5, 3, 32: theta, s, t on
+    !! both half-arches at apse radii 1e-4 .. 1e-34, and R, s, t of the two-point
+    !! problem with R-bar in their range (logarithmic: next to the sector's edge, psi/pi
+    !! = 0.95 .. 0.993, R-bar about 1e-5 .. 1e-31; power laws: rho = 1e-8 .. 1e-30 with
+    !! psi from 1e-20 to 0.999 of the sector), R-bar's conditioning (d log R/d log psi,
+    !! up to 10^4 next to the edge) measured and credited.
     subroutine far_tables()
+        real(qp), parameter :: edge(4) = [0.95_qp, 0.98_qp, 0.99_qp, 0.993_qp]
+        real(qp), parameter :: small(3) = [1.0e-8_qp, 1.0e-20_qp, 1.0e-30_qp], &
+                               part(3) = [1.0e-20_qp, 0.5_qp, 0.999_qp]
+        real(qp) :: rho(16), fraction(16)
+        integer :: i, j
+        call section('central force: far tables against all panels')
+        do i = 1, 4
+            rho(4*i - 3:4*i) = 0.2_qp*real(i, qp) + 0.2_qp
+            fraction(4*i - 3:4*i) = edge
+        end do
+        call far_law(logarithmic_law(), 'logarithmic', rho, fraction, 4)
+        do i = 1, 3
+            do j = 1, 3
+                rho(3*i + j - 3) = small(i)
+                fraction(3*i + j - 3) = part(j)
+            end do
+        end do
+        call far_law(power_law(n=1.5_qp), 'power n = 1.5', rho(1:9), fraction(1:9), 4)
+        call far_law(power_law(n=3.0_qp), 'power n = 3', rho(1:9), fraction(1:9), 4)
+        call far_law(power_law(n=32.0_qp), 'power n = 32', rho(1:9), fraction(1:9), 3)
+    end subroutine far_tables
+
+    !> `far_tables` for one law: half-arches at the radii, the two-point problem at
+    !! (rho, fraction of the sector); at least `pieces` far pieces built and checked.
+    subroutine far_law(law, name, rho, fraction, pieces)
+        class(speed_law), intent(in) :: law
+        character(len=*), intent(in) :: name
+        real(qp), intent(in) :: rho(:), fraction(:)
+        integer, intent(in) :: pieces
         type(central_force_model) :: with, without
         type(endpoint_solution) :: a, b, c
         real(qp) :: big_r, r, x(3), y(3), worst, worst_solve, limit, credit
@@ -417,13 +448,11 @@ contains
                                            1.0e-22_qp, 1.0e-30_qp, 1.0e-34_qp]
         real(qp), parameter :: fractions(7) = [0.0_qp, 1.0e-20_qp, 1.0e-6_qp, 0.1_qp, &
                                                0.5_qp, 0.9_qp, 1.0_qp]
-        real(qp), parameter :: edge(4) = [0.95_qp, 0.98_qp, 0.99_qp, 0.993_qp]
         integer :: i, j, k, m, status
-        call section('central force: far tables (logarithmic law) against all panels')
         worst = 99.0_qp
         worst_solve = 99.0_qp
-        with = new_central_force_model(logarithmic_law())
-        without = new_central_force_model(logarithmic_law(), tables=.false.)
+        with = new_central_force_model(law)
+        without = new_central_force_model(law, tables=.false.)
         do i = 1, size(radii)
             big_r = radii(i)
             do j = 1, size(fractions)
@@ -436,33 +465,33 @@ contains
             end do
         end do
         limit = 2.0_qp*with%law%apse_angle_limit()
-        do i = 1, 4
-            do j = 1, size(edge)
-                a = with%solve(0.2_qp*real(i, qp) + 0.2_qp, edge(j)*limit)
-                b = without%solve(0.2_qp*real(i, qp) + 0.2_qp, edge(j)*limit)
-                c = with%solve(0.2_qp*real(i, qp) + 0.2_qp, edge(j)*limit*(1.0_qp + 1.0e-20_qp))
-                if (a%status /= status_ok .or. b%status /= status_ok .or. &
-                    c%status /= status_ok) then
-                    worst_solve = 0.0_qp
-                else
-                    ! R-bar's conditioning next to the edge: log10 of |d log R/d log psi|
-                    credit = log10(max(1.0_qp, abs(c%apse_radius - a%apse_radius)/ &
-                                                (1.0e-20_qp*a%apse_radius)))
-                    worst_solve = min(worst_solve, credit + &
-                                      digits_of_agreement(a%apse_radius, b%apse_radius), &
-                                      digits_of_agreement(a%arclength, b%arclength), &
-                                      digits_of_agreement(a%time, b%time))
-                end if
-            end do
+        do i = 1, size(rho)
+            a = with%solve(rho(i), fraction(i)*limit)
+            b = without%solve(rho(i), fraction(i)*limit)
+            c = with%solve(rho(i), fraction(i)*limit*(1.0_qp + 1.0e-20_qp))
+            if (a%status /= status_ok .or. b%status /= status_ok .or. &
+                c%status /= status_ok) then
+                worst_solve = 0.0_qp
+            else
+                ! R-bar's conditioning: log10 of |d log R/d log psi|
+                credit = log10(max(1.0_qp, abs(c%apse_radius - a%apse_radius)/ &
+                                            (1.0e-20_qp*a%apse_radius)))
+                worst_solve = min(worst_solve, credit + &
+                                  digits_of_agreement(a%apse_radius, b%apse_radius), &
+                                  digits_of_agreement(a%arclength, b%arclength), &
+                                  digits_of_agreement(a%time, b%time))
+            end if
         end do
-        write (output_unit, '(a,2f7.2)') '   fewest digits of theta, s, t (98 points | '// &
-            'R (credited), s, t on 16 endpoints):', worst, worst_solve
-        call check(all(with%far_ok) .and. .not. any(without%far_ok), &
-                   'far tables built and checked on every piece (logarithmic law)')
-        call check(worst >= 32.5_qp, 'half-arch values with far tables = all panels')
+        write (output_unit, '(3a,i0,a,2f7.2,a,i0,a)') '   ', name, ': fewest digits of '// &
+            'theta, s, t (98 points | R (credited), s, t on ', size(rho), ' endpoints):', &
+            worst, worst_solve, ' (', count(with%far_ok), ' pieces)'
+        call check(count(with%far_ok) >= pieces .and. .not. any(without%far_ok), &
+                   'far tables built and checked ('//name//')')
+        call check(worst >= 32.5_qp, 'half-arch values with far tables = all panels ('// &
+                   name//')')
         call check(worst_solve >= 32.5_qp, 'two-point R (conditioning credited), s, t with '// &
-                   'far tables = all panels')
-    end subroutine far_tables
+                   'far tables = all panels ('//name//')')
+    end subroutine far_law
 
     pure subroutine no_closed_fall_power(self, delta_lo, delta_hi, t, found)
         class(quadrature_power_law), intent(in) :: self

@@ -1,7 +1,8 @@
 !> engine-timing: per-endpoint time of the general engine against the inverse-square fast
 !! path on the same endpoints, in one run, one thread.
 !!
-!!     fpm run --profile release --example engine-timing -- [FIELD [EXPONENT [REPEATS]]]
+!!     fpm run --profile release --example engine-timing -- [FIELD [EXPONENT [REPEATS
+!!         [extreme]]]]
 !!
 !! FIELD is power (default), logarithmic or harmonic; EXPONENT the power law's n (default
 !! 3). The endpoints: a grid rho = 0.05 .. 1, psi in (0, 2 lim Theta) scaled to the
@@ -9,7 +10,11 @@
 !! the median over REPEATS passes (default 3) of the CPU time per endpoint (each pass
 !! solves every endpoint 4 times; CPU time, not wall time, because the machine is shared),
 !! the ratio of the means, the slowest endpoint relative to the median endpoint, and the
-!! CPU time of the model's build (Gauss rules and whole-half-arch tables).
+!! CPU time of the model's build (Gauss rules and whole-half-arch tables). With `extreme`,
+!! then the time of each of 15 extreme endpoints relative to the grid's median endpoint
+!! (`time_extremes`: rho = 1e-30, 1e-6, 1 - 1e-30 with psi = 1e-30, 1/2 and 1 - 1e-6 of
+!! the sector; psi within 1e-10 and 1e-14 of the sector's edge at rho = 1/2 and 1; rho = 1
+!! with psi = 1e-6 and 1e-12), its status and R-bar (issue 11: at most 10x the median).
 program engine_timing
     use, intrinsic :: iso_fortran_env, only: output_unit
     use brachistochrone_kinds, only: qp, pi
@@ -44,6 +49,8 @@ program engine_timing
         call get_command_argument(3, text)
         read (text, *) repeats
     end if
+    text = ''
+    if (command_argument_count() >= 4) call get_command_argument(4, text)
     call cpu_time(start)
     select case (field)
     case ('logarithmic'); general = new_central_force_model(logarithmic_law())
@@ -90,6 +97,48 @@ program engine_timing
     write (output_unit, '(a,f8.2)') 'slowest endpoint / median endpoint = ', &
         maxval(worst)/median(worst)
     write (output_unit, '(a,i0)') 'endpoints not solved = ', failed
-    write (output_unit, '(a,f0.3,a,i0,a)') 'model build, s = ', build, &
-        ' (whole-half-arch tables: ', count(general%whole_ok), ' pieces checked)'
+    write (output_unit, '(a,f0.3,a,i0,a,*(l1))') 'model build, s = ', build, &
+        ' (whole-half-arch tables: ', count(general%whole_ok), ' pieces checked; far: ', &
+        general%far_ok
+    if (text == 'extreme') call time_extremes(general, limit, repeats, median(worst))
+contains
+
+    !> Each extreme endpoint's CPU time (median of `repeats` passes of `inner` solves)
+    !! relative to `grid_median`, with its status and R-bar; the worst ratio last.
+    subroutine time_extremes(model, limit, repeats, grid_median)
+        type(central_force_model), intent(in) :: model
+        real(qp), intent(in) :: limit, grid_median
+        integer, intent(in) :: repeats
+        real(qp) :: rho_x(15), psi_x(15), times(repeats), ratio, worst_ratio
+        type(endpoint_solution) :: sol
+        integer :: e, k, r
+        real :: t0, t1
+        rho_x = [1.0e-30_qp, 1.0e-30_qp, 1.0e-30_qp, 1.0e-6_qp, 1.0e-6_qp, 1.0e-6_qp, &
+                 1.0_qp - 1.0e-30_qp, 1.0_qp - 1.0e-30_qp, 1.0_qp - 1.0e-30_qp, &
+                 0.5_qp, 0.5_qp, 1.0_qp, 1.0_qp, 1.0_qp, 1.0_qp]
+        psi_x = [[1.0e-30_qp, 0.5_qp, 1.0_qp - 1.0e-6_qp, 1.0e-30_qp, 0.5_qp, &
+                  1.0_qp - 1.0e-6_qp, 1.0e-30_qp, 0.5_qp, 1.0_qp - 1.0e-6_qp, &
+                  1.0_qp - 1.0e-10_qp, 1.0_qp - 1.0e-14_qp, 1.0_qp - 1.0e-10_qp, &
+                  1.0_qp - 1.0e-14_qp]*limit, 1.0e-6_qp, 1.0e-12_qp]
+        worst_ratio = 0.0_qp
+        write (output_unit, '(a)') 'extreme endpoints: rho, psi/sector, status, R-bar, '// &
+            'us, time/grid median'
+        do e = 1, size(rho_x)
+            do k = 1, repeats
+                call cpu_time(t0)
+                do r = 1, inner
+                    sol = model%solve(rho_x(e), psi_x(e))
+                end do
+                call cpu_time(t1)
+                times(k) = real(t1 - t0, qp)/inner
+            end do
+            ratio = median(times)/grid_median
+            worst_ratio = max(worst_ratio, ratio)
+            write (output_unit, '(2es11.3,i4,es11.3,f9.1,f8.2)') real(rho_x(e)), &
+                real(psi_x(e)/limit), sol%status, real(sol%apse_radius), &
+                real(median(times))*1.0e6, real(ratio)
+        end do
+        write (output_unit, '(a,f8.2)') 'worst extreme endpoint / grid median = ', &
+            worst_ratio
+    end subroutine time_extremes
 end program engine_timing

@@ -40,9 +40,8 @@
 !! between the endpoint and the nearer end (`table_sums`): the second half-arch is
 !! W + int_0^lambda_r or 2W - int_lambda_r^Lambda, the first int_lambda_r^Lambda or
 !! W - int_0^lambda_r (if that loses at most a bit). Beyond them, Lambda up to 80 (R down
-!! to 2e-35), far tables built and checked the same way (`build_far_tables`; they pass
-!! for the logarithmic law, whose integrals vary like 1/Lambda there). Elsewhere: all
-!! panels.
+!! to 2e-35), far tables built and checked the same way (`build_far_tables`, slopes as
+!! logarithms: they pass for every law). Elsewhere: all panels.
 !!
 !! Two-point problem: the root R-bar of Upsilon(R) = psi, in the unknown u = sqrt(rho - R)
 !! for R in [rho/2, rho] (R-bar and rho - R-bar exact next to the apse) or y = log R
@@ -114,7 +113,7 @@ module brachistochrone_central_force
     !> The far tables beyond them: Lambda in [table_high, far_high] (R from 1.7e-5 down
     !! to about 2e-35), far_pieces equal pieces in z = log Lambda (`build_far_tables`).
     real(qp), parameter :: far_high = 80.0_qp
-    integer, parameter :: far_pieces = 4
+    integer, parameter :: far_pieces = 4, far_points = 33
 
     !> One Gauss-Legendre rule on [0, 1].
     type :: gauss_nodes
@@ -442,34 +441,37 @@ contains
     end subroutine whole_value
 
     !> Tabulate the whole-half-arch integrals beyond the tables (Lambda from table_high
-    !! to far_high: R-bar far below 1e-3, the logarithmic law next to its sector's edge),
-    !! on far_pieces pieces in z = log Lambda, each checked at two points against the
-    !! quadrature to the tolerances of `build_whole_tables` (every Theta, S, T to 8
-    !! roundings of Theta and of what the S and T corrections are added to, the slopes
-    !! to 4 roundings of the hardware kind); unchecked pieces are not used. Not built
-    !! where Theta's slope falls by more than 1e3 from Lambda = table_high to twice that
-    !! (power laws n >= 2, whose pieces there all fail the check; the logarithmic law's
-    !! falls like 1/Lambda^2: all its pieces pass; n = 1.5: two of four).
+    !! to far_high: R-bar far below 1e-3, the logarithmic law next to its sector's edge,
+    !! small rho), on far_pieces pieces in z = log Lambda (far_points Chebyshev points
+    !! each; the slopes as their logarithms, as `build_whole_tables`), each checked at
+    !! two points against the quadrature to the tolerances of `build_whole_tables`
+    !! (every Theta, S, T to 8 roundings of Theta and of what the S and T corrections are
+    !! added to, the slopes to 4 roundings of the hardware kind); unchecked pieces are
+    !! not used. All four pieces pass for n = 1.5 .. 10 and the logarithmic law, three
+    !! for n = 32. About 140 full evaluations: 40-240 ms (n = 32 the most: every panel
+    !! between the apse and the start holds a share of the slopes, which decay like
+    !! R^((n+1)/2) across the half-arch).
     subroutine build_far_tables(model)
         type(central_force_model), intent(inout) :: model
-        real(qp) :: points(table_points, far_pieces), values(table_points, far_pieces, 5)
+        real(qp) :: points(far_points, far_pieces), values(far_points, far_pieces, 5)
         real(qp) :: direct(5), table(5), sizes(5), z, width, lower, upper, big_r
         real(qp), parameter :: slope_noise = real(epsilon(1.0_xp), qp)
         integer :: k, piece, m, side
-        direct = whole_direct(model, table_high)
-        table = whole_direct(model, 2.0_qp*table_high)
-        if (.not. abs(table(4)) >= 1.0e-3_qp*abs(direct(4))) return
         lower = log(table_high)
         upper = log(far_high)
-        points = chebyshev_points(lower, upper, far_pieces, table_points)
+        points = chebyshev_points(lower, upper, far_pieces, far_points)
         do piece = 1, far_pieces
-            do k = 1, table_points
+            do k = 1, far_points
                 values(k, piece, :) = whole_direct(model, exp(points(k, piece)))
             end do
         end do
+        ! the slopes as their logarithms (as `build_whole_tables`)
+        if (.not. all(values(:, :, 4:5) > 0.0_qp)) return
+        values(:, :, 4:5) = log(values(:, :, 4:5))
         do m = 1, 5
             model%far(m) = chebyshev_fit(lower, upper, values(:, :, m), &
-                                         merge(0.5_qp*eps_qp, slope_noise, m <= 3))
+                                         merge(0.1_qp*slope_noise/max(1.0_qp, &
+                                         maxval(abs(values(:, :, m)))), 0.5_qp*eps_qp, m > 3))
         end do
         model%far_xp = [hardware_copy(model%far(1)), hardware_copy(model%far(4))]
         width = (upper - lower)/real(far_pieces, qp)
@@ -479,7 +481,7 @@ contains
                 z = lower + width*(real(piece - 1, qp) + merge(0.3_qp, 0.71_qp, side == 1))
                 direct = whole_direct(model, exp(z))
                 do m = 1, 5
-                    call model%far(m)%evaluate(z, table(m))
+                    call far_value(model, m, z, table(m))
                 end do
                 big_r = exp(-exp(z))
                 sizes = [direct(1), max(direct(2), -expm1_qp(-exp(z))/big_r), &
@@ -519,9 +521,24 @@ contains
         found = far_piece(model, z) > 0
         if (.not. found) return
         do m = 1, wanted
-            call model%far(m)%evaluate(z, values(m))
+            call far_value(model, m, z, values(m))
         end do
     end subroutine far_lookup
+
+    !> Far table m at z; the slopes (m = 4, 5) from their logarithms (as `whole_value`).
+    pure subroutine far_value(model, m, z, value)
+        type(central_force_model), intent(in) :: model
+        integer, intent(in) :: m
+        real(qp), intent(in) :: z
+        real(qp), intent(out) :: value
+        real(xp) :: high, low
+        call model%far(m)%evaluate(z, value)
+        if (m > 3) then
+            high = real(value, xp)
+            low = real(value - real(high, qp), xp)
+            value = real(exp(high)*(1.0_xp + low), qp)
+        end if
+    end subroutine far_value
 
     !> `whole_lookup_xp` beyond the tables (the far tables' hardware copies).
     pure subroutine far_lookup_xp(model, big_lambda, values, found)
@@ -536,6 +553,7 @@ contains
         do m = 1, 2
             call model%far_xp(m)%evaluate(log(big_lambda), values(m))
         end do
+        values(2) = exp(values(2))   ! the slope's table holds its logarithm
     end subroutine far_lookup_xp
 
     !> The apse data for R (with 1 - R exact) and the endpoint r = R + d.
@@ -1734,7 +1752,10 @@ contains
             else
                 call keep_bracket(xk, fk, a, fa, b, fb)
                 x_new = xk - fk/dk
-                if (.not. (x_new > min(a, b) .and. x_new < max(a, b))) x_new = falsi()
+                ! (a Newton step below xk's rounding lands on xk, an end of the bracket:
+                ! the root as close as this precision places it, not a step for falsi)
+                if (.not. (x_new > min(a, b) .and. x_new < max(a, b)) .and. &
+                    x_new /= xk) x_new = falsi()
             end if
             if (rough .and. abs(x_new - xk) <= 1.0e-5_xp*max(abs(xk), floor)) then
                 ! the rough root (the next iterate within about 1e-10): on to the
