@@ -246,6 +246,23 @@ contains
         values(4:5) = real(slopes, qp)
     end function whole_direct
 
+    !> `whole_direct` at Lambda = exp(z) for every point z of a table: values(k, piece, :)
+    !! at points(k, piece), shared among the OpenMP threads (each point is independent
+    !! and `whole_direct` is pure, so the values do not depend on the number of threads).
+    function direct_values(model, points) result(values)
+        type(central_force_model), intent(in) :: model
+        real(qp), intent(in) :: points(:, :)
+        real(qp) :: values(size(points, 1), size(points, 2), 5)
+        integer :: item, k, piece
+        !$omp parallel do schedule(dynamic, 1) default(shared) private(item, k, piece)
+        do item = 1, size(points)
+            k = mod(item - 1, size(points, 1)) + 1
+            piece = (item - 1)/size(points, 1) + 1
+            values(k, piece, :) = whole_direct(model, exp(points(k, piece)))
+        end do
+        !$omp end parallel do
+    end function direct_values
+
     !> Tabulate the whole-half-arch integrals in z = log Lambda (piecewise Chebyshev, as
     !! the fast path's tables in R), and check each piece at two points between its
     !! Chebyshev points against the quadrature: a piece is used only if the values agree
@@ -263,11 +280,7 @@ contains
         lower = log(table_low)
         upper = log(table_high)
         points = chebyshev_points(lower, upper, table_pieces, table_points)
-        do piece = 1, table_pieces
-            do k = 1, table_points
-                values(k, piece, :) = whole_direct(model, exp(points(k, piece)))
-            end do
-        end do
+        values = direct_values(model, points)
         ! the slopes (positive) as their logarithms: for steep laws they fall like
         ! R^((n+1)/2) across a piece, which a polynomial in the slope itself resolves only
         ! relative to the piece's largest value
@@ -460,11 +473,7 @@ contains
         lower = log(table_high)
         upper = log(far_high)
         points = chebyshev_points(lower, upper, far_pieces, far_points)
-        do piece = 1, far_pieces
-            do k = 1, far_points
-                values(k, piece, :) = whole_direct(model, exp(points(k, piece)))
-            end do
-        end do
+        values = direct_values(model, points)
         ! the slopes as their logarithms (as `build_whole_tables`)
         if (.not. all(values(:, :, 4:5) > 0.0_qp)) return
         values(:, :, 4:5) = log(values(:, :, 4:5))
