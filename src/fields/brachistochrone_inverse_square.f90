@@ -21,7 +21,7 @@
 !!
 !! The lambda integrals are taken in trig-free half-angle variables: tau = tan(lambda/2)
 !! on [0, L] (from the apse) and eta = tan((pi/2 - lambda)/2) on [L, pi/2] (from A), so
-!! c and s are rational in the node; one sqrt and two divisions per node.
+!! c and s are rational in the node (`sweep_values`: 23 binary128 operations a node).
 !!
 !! The whole half-arch (lambda in [0, pi/2]: Theta(R,R), eq. 66, and the S and T
 !! corrections) depends on R alone. Divided by 1-R (Theta, S) or sqrt(1-R) (T) these are
@@ -35,7 +35,7 @@ module brachistochrone_inverse_square
     use brachistochrone_kinds, only: qp, pi, eps_qp, xp
     use brachistochrone_status, only: status_ok, argument_status
     use brachistochrone_closed_forms, only: radial_time_of_roots
-    use brachistochrone_fast_math, only: inverse_sqrt, hardware_real
+    use brachistochrone_fast_math, only: hardware_real
     use brachistochrone_chebyshev, only: chebyshev_table, chebyshev_points, chebyshev_fit, &
                                          chebyshev_table_xp, hardware_copy, &
                                          chebyshev_table_from_powers
@@ -620,66 +620,11 @@ contains
         logical, intent(in) :: hardware_slopes !! the d/dR sums in `xp` (level_final)
         real(qp), intent(in) :: root_one_minus_big_r !! sqrt(1 - R) (with want_length_time)
         real(qp), intent(out) :: sums(5)
-        real(qp) :: v, v2, jacobian, c, s, c2, z, q, theta_term, lengths, inverse
-        real(qp) :: s_big_q, inverse_d, length_term, two_z_plus
-        real(xp) :: slopes(2), one_minus_big_r_xp
-        logical :: quad_slopes
-        integer :: k
 
         sums = 0.0_qp
-        slopes = 0.0_xp
-        s_big_q = 0.0_qp
-        inverse_d = 0.0_qp
-        length_term = 0.0_qp
-        quad_slopes = want_derivative .and. .not. hardware_slopes
         if (upper <= 0.0_qp) return
-        one_minus_big_r_xp = hardware_real(one_minus_big_r)
-        associate (rule => model%gauss(j))
-        do k = 1, rule%n
-            v = upper*rule%offset(k)
-            v2 = v*v
-            jacobian = 1.0_qp/(1.0_qp + v2)
-            if (from_apse) then
-                c = (1.0_qp - v2)*jacobian
-                s = (v + v)*jacobian
-            else
-                c = (v + v)*jacobian
-                s = (1.0_qp - v2)*jacobian
-            end if
-            c2 = c*c
-            z = big_r + one_minus_big_r*c2
-            if (quad_slopes) two_z_plus = z + z + one_minus_big_r
-            q = z*(z + one_minus_big_r) + one_minus_big_r
-            inverse = inverse_sqrt(q)
-            theta_term = rule%double_weight(k)*jacobian*c2*inverse
-            sums(1) = sums(1) + theta_term
-            if (quad_slopes) then
-                sums(2) = sums(2) - theta_term*(inverse*inverse)*(z*(z + z) + &
-                          one_minus_big_r*(z + 1.0_qp + two_z_plus*(s*s)))
-            end if
-            if (want_length_time) then
-                s_big_q = s*(q*inverse)
-                inverse_d = 1.0_qp/(1.0_qp + s_big_q)
-                lengths = theta_term*inverse_d
-                length_term = lengths*c
-                sums(3) = sums(3) + length_term
-                sums(4) = sums(4) + lengths
-                if (quad_slopes) then
-                    ! dq/dR = (2z + 1 - R) s^2 - (1 + z); d(1/(QD))/dR = -(1/(QD)) dq/dR
-                    ! (D + sQ)/(2 Q^2 D)
-                    sums(5) = sums(5) + length_term*(two_z_plus*(s*s) - (1.0_qp + z)) &
-                              *(1.0_qp + s_big_q + s_big_q)*(inverse*inverse)*inverse_d
-                end if
-            end if
-            if (want_derivative .and. hardware_slopes) then
-                call add_slopes_xp(hardware_real(z), hardware_real(s), hardware_real(inverse), &
-                                   hardware_real(theta_term), one_minus_big_r_xp, &
-                                   want_length_time, hardware_real(length_term), &
-                                   hardware_real(s_big_q), hardware_real(inverse_d), slopes)
-            end if
-        end do
-        end associate
-        if (hardware_slopes) sums([2, 5]) = real(slopes, qp)
+        call sweep_values(model%gauss(j), big_r, one_minus_big_r, upper, from_apse, &
+                          want_derivative, want_length_time, hardware_slopes, sums)
         ! common factors: Theta 2(1-R) c^2/Q; S 2(1-R) c^3/(QD); T 2 sqrt(1-R) c^2/(QD);
         ! d/dR of the S integrand: -2 c^3/(QD) - (1-R) c^3 q_R (D + sQ)/(Q^3 D^2)
         sums(1) = sums(1)*upper*one_minus_big_r
@@ -689,22 +634,120 @@ contains
         if (want_length_time) sums(4) = sums(4)*upper*root_one_minus_big_r
     end subroutine sweep
 
-    !> The d/dR integrands of `sweep` at one node, added in hardware precision.
-    pure subroutine add_slopes_xp(z, s, inverse, theta_term, one_minus_big_r, &
-                                  want_length_time, length_term, s_big_q, inverse_d, slopes)
-        real(xp), intent(in) :: z, s, inverse, theta_term, one_minus_big_r
-        logical, intent(in) :: want_length_time
-        real(xp), intent(in) :: length_term, s_big_q, inverse_d
+    !> The node loop of `sweep`, in few binary128 operations (divisions cost what
+    !! multiplications do in software):
+    !! c and s as quotients, q = 1 + x (1 + R + x) with x = (1 - R) c^2, and Q = sqrt(q)
+    !! by one Heron step (Q0 + q/Q0)/2 from the `xp` node of `node_xp` (relative error
+    !! a few roundings of `xp`, so the step's error is below 1e-36; a second step where
+    !! `xp` is only double). The values do not depend on how the d/dR sums are taken
+    !! (`node_xp` or `add_slopes_qp`). Raw sums: Theta, d Theta/dR, S, T, d S/dR.
+    pure subroutine sweep_values(rule, big_r, one_minus_big_r, upper, from_apse, &
+                                 want_derivative, want_length_time, hardware_slopes, sums)
+        type(gauss_nodes), intent(in) :: rule
+        real(qp), intent(in) :: big_r, one_minus_big_r, upper
+        logical, intent(in) :: from_apse, want_derivative, want_length_time
+        logical, intent(in) :: hardware_slopes !! the d/dR sums in `xp`, else binary128
+        real(qp), intent(inout) :: sums(5)
+        integer, parameter :: heron_steps = merge(1, 2, digits(1.0_xp) >= 64)
+        real(qp) :: v, v2, d, c, s, c2, x, q, root_q, theta_term, lengths, one_plus_big_r
+        real(xp) :: slopes(2), upper_xp, big_r_xp, one_minus_big_r_xp, root_q_xp
+        integer :: k, step
+        logical :: quad_slopes
+
+        quad_slopes = want_derivative .and. .not. hardware_slopes
+        slopes = 0.0_xp
+        one_plus_big_r = 1.0_qp + big_r
+        upper_xp = hardware_real(upper)
+        big_r_xp = hardware_real(big_r)
+        one_minus_big_r_xp = hardware_real(one_minus_big_r)
+        do k = 1, rule%n
+            call node_xp(upper_xp*rule%offset_xp(k), rule%double_weight_xp(k), big_r_xp, &
+                         one_minus_big_r_xp, from_apse, want_derivative .and. hardware_slopes, &
+                         want_length_time, root_q_xp, slopes)
+            v = upper*rule%offset(k)
+            v2 = v*v
+            d = 1.0_qp + v2
+            if (from_apse) then
+                c = (1.0_qp - v2)/d
+                s = (v + v)/d
+            else
+                c = (v + v)/d
+                s = (1.0_qp - v2)/d
+            end if
+            c2 = c*c
+            x = one_minus_big_r*c2
+            q = 1.0_qp + x*(one_plus_big_r + x)
+            root_q = real(root_q_xp, qp)
+            do step = 1, heron_steps
+                root_q = 0.5_qp*(root_q + q/root_q)
+            end do
+            theta_term = rule%double_weight(k)*c2/(d*root_q)
+            sums(1) = sums(1) + theta_term
+            if (want_length_time) then
+                lengths = theta_term/(1.0_qp + s*root_q)
+                sums(3) = sums(3) + lengths*c
+                sums(4) = sums(4) + lengths
+            end if
+            if (quad_slopes) call add_slopes_qp(big_r, one_minus_big_r, c, s, c2, root_q, &
+                                                theta_term, want_length_time, sums)
+        end do
+        if (want_derivative .and. hardware_slopes) sums([2, 5]) = real(slopes, qp)
+    end subroutine sweep_values
+
+    !> One node of `sweep_values` in hardware precision: sqrt(q) (the seed of the Heron
+    !! step) and, when wanted, the d/dR integrands added to `slopes`, with
+    !! dq/dR = (2z + 1 - R) s^2 - (1 + z) = -2 c^2 z (no cancellation). The slope sums'
+    !! terms each have one sign and a relative error of a few roundings of `xp`.
+    pure subroutine node_xp(v, weight, big_r, one_minus_big_r, from_apse, &
+                            want_derivative, want_length_time, root_q, slopes)
+        real(xp), intent(in) :: v, weight, big_r, one_minus_big_r
+        logical, intent(in) :: from_apse, want_derivative, want_length_time
+        real(xp), intent(out) :: root_q
         real(xp), intent(inout) :: slopes(2)
-        real(xp) :: two_z_plus
-        two_z_plus = z + z + one_minus_big_r
+        real(xp) :: v2, d, c, s, c2, z, inverse, theta_term, s_big_q, inverse_d
+        v2 = v*v
+        d = 1.0_xp + v2
+        if (from_apse) then
+            c = (1.0_xp - v2)/d
+            s = (v + v)/d
+        else
+            c = (v + v)/d
+            s = (1.0_xp - v2)/d
+        end if
+        c2 = c*c
+        z = big_r + one_minus_big_r*c2
+        root_q = sqrt(z*(z + one_minus_big_r) + one_minus_big_r)
+        if (.not. want_derivative) return
+        inverse = 1.0_xp/root_q
+        theta_term = weight*c2*inverse/d
         slopes(1) = slopes(1) - theta_term*(inverse*inverse)*(z*(z + z) + &
-                    one_minus_big_r*(z + 1.0_xp + two_z_plus*(s*s)))
+                    one_minus_big_r*(z + 1.0_xp + (z + z + one_minus_big_r)*(s*s)))
         if (want_length_time) then
-            slopes(2) = slopes(2) + length_term*(two_z_plus*(s*s) - (1.0_xp + z)) &
+            s_big_q = s*root_q
+            inverse_d = 1.0_xp/(1.0_xp + s_big_q)
+            slopes(2) = slopes(2) - theta_term*inverse_d*c*(2.0_xp*c2*z) &
                         *(1.0_xp + s_big_q + s_big_q)*(inverse*inverse)*inverse_d
         end if
-    end subroutine add_slopes_xp
+    end subroutine node_xp
+
+    !> The d/dR integrands of `node_xp` in binary128, added to the raw sums 2 and 5.
+    pure subroutine add_slopes_qp(big_r, one_minus_big_r, c, s, c2, root_q, theta_term, &
+                                  want_length_time, sums)
+        real(qp), intent(in) :: big_r, one_minus_big_r, c, s, c2, root_q, theta_term
+        logical, intent(in) :: want_length_time
+        real(qp), intent(inout) :: sums(5)
+        real(qp) :: z, inverse, s_big_q, inverse_d
+        z = big_r + one_minus_big_r*c2
+        inverse = 1.0_qp/root_q
+        sums(2) = sums(2) - theta_term*(inverse*inverse)*(z*(z + z) + &
+                  one_minus_big_r*(z + 1.0_qp + (z + z + one_minus_big_r)*(s*s)))
+        if (want_length_time) then
+            s_big_q = s*root_q
+            inverse_d = 1.0_qp/(1.0_qp + s_big_q)
+            sums(5) = sums(5) - theta_term*inverse_d*c*(2.0_qp*c2*z) &
+                      *(1.0_qp + s_big_q + s_big_q)*(inverse*inverse)*inverse_d
+        end if
+    end subroutine add_slopes_qp
 
     !> Check 0 < R < 1, R <= r <= 1, all finite.
     pure function check_radii(r, big_r) result(status)
