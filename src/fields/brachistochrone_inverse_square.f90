@@ -114,6 +114,9 @@ module brachistochrone_inverse_square
         type(chebyshev_table) :: whole(3)
         !> Theta(R,R)/(1-R) of `whole` in hardware precision, for level_hardware
         type(chebyshev_table_xp) :: whole_xp
+        !> The Theta and S tables of `whole` in hardware precision with all their terms,
+        !! for the derivatives at level_final
+        type(chebyshev_table_xp) :: whole_slopes_xp(2)
     contains
         procedure :: half_arch      !! Theta, S, T on the first or second half-arch
         procedure :: theta          !! Theta(r,R), eq. (55)
@@ -174,6 +177,10 @@ contains
                                                          whole_used(:, k))
         end do
         model%whole_xp = hardware_copy(model%whole(1), 0.1_qp*10.0_qp**(-hardware_digits))
+        do k = 1, 2
+            model%whole_slopes_xp(k) = hardware_copy(model%whole(k))
+            model%whole_slopes_xp(k)%used = model%whole(k)%used
+        end do
         ! d Theta(R,R)/dR at R = 0 (Theta(R,R) = pi/3 - 0.8095502 R + ...), with
         ! Theta(R,R) = (1 - R) A(R): A'(0) - A(0)
         call model%whole(1)%evaluate(0.0_qp, angle, slope)
@@ -460,6 +467,7 @@ contains
         type(arch_values) :: values
         real(qp) :: one_minus_r, one_minus_big_r, cos_l, sin_l, z_l, q_l, length_ratio
         real(qp) :: part(5), whole(3), whole_slope(3), correction_scale, digits
+        real(qp) :: slope_error(2)
         real(qp) :: upper_apse, upper_start, whole_factor, length_integral, time_integral
         real(qp) :: root_big_r, root_one_minus_r, root_one_minus_big_r, root_q_l
         integer :: rule_apse, rule_start
@@ -490,8 +498,8 @@ contains
         upper_start = cos_l/(1.0_qp + sin_l)
         rule_start = rule_index(big_r, upper_start, .false., digits)
         if (second) then
-            call whole_half_arch_table(model, level, big_r, want_length_time, whole, &
-                                       whole_slope)
+            call whole_half_arch_table(model, level, big_r, want_length_time, &
+                                       want_derivative, whole, whole_slope, slope_error)
             rule_apse = rule_index(big_r, upper_apse, .true., digits)
             if (rule_apse <= rule_start) then
                 call sweep(model, rule_apse, big_r, one_minus_big_r, upper_apse, .true., &
@@ -513,15 +521,19 @@ contains
             whole_factor = 0.0_qp
             whole = 0.0_qp
             whole_slope = 0.0_qp
+            slope_error = 0.0_qp
             values%boundary_sign = 1.0_qp
         end if
         values%angle = whole_factor*one_minus_big_r*whole(1) + part(1)
         values%angle_dr_smooth = whole_factor*(one_minus_big_r*whole_slope(1) - whole(1)) &
                                  + part(2)
         if (level == level_final) then
-            ! sums of terms of one sign, each within a few roundings of xp
-            values%angle_dr_error = 100.0_qp*hardware_epsilon*abs(part(2))
-            values%arclength_dr_error = 100.0_qp*hardware_epsilon*big_r*abs(part(5))
+            ! sums of terms of one sign, each within a few roundings of xp; the tables'
+            ! slopes in xp (`table_slope_xp`)
+            values%angle_dr_error = 100.0_qp*hardware_epsilon*abs(part(2)) &
+                                    + whole_factor*one_minus_big_r*slope_error(1)
+            values%arclength_dr_error = big_r*(100.0_qp*hardware_epsilon*abs(part(5)) &
+                                        + whole_factor*one_minus_big_r*slope_error(2))
         end if
 
         if (want_derivative) then
@@ -562,20 +574,36 @@ contains
     end function arch_with_rules
 
     !> The whole-half-arch integrals at R from the tables, to the level's accuracy:
-    !! whole = [Theta(R,R)/(1-R), S and T corrections without 1-R, sqrt(1-R)] and their
-    !! R-derivatives of the first two (the second only when `want_length_time`).
-    pure subroutine whole_half_arch_table(model, level, big_r, want_length_time, whole, &
-                                          slope)
+    !! whole = [Theta(R,R)/(1-R), S and T corrections without 1-R, sqrt(1-R)] and, with
+    !! `want_slopes`, the R-derivatives of the first two (the second only when
+    !! `want_length_time`). At level_final the derivatives are taken in hardware
+    !! precision (`table_slope_xp`), with bounds on their errors in `slope_error`.
+    pure subroutine whole_half_arch_table(model, level, big_r, want_length_time, &
+                                          want_slopes, whole, slope, slope_error)
         type(inverse_square_model), intent(in) :: model
         integer, intent(in) :: level
         real(qp), intent(in) :: big_r
-        logical, intent(in) :: want_length_time
-        real(qp), intent(out) :: whole(3), slope(3)
+        logical, intent(in) :: want_length_time, want_slopes
+        real(qp), intent(out) :: whole(3), slope(3), slope_error(2)
         real(qp) :: tolerance
+        integer :: k
         whole = 0.0_qp
         slope = 0.0_qp
+        slope_error = 0.0_qp
         ! (the T correction's slope is not needed: see two_point's Hamilton-Jacobi step)
-        if (level == level_fine .or. level == level_final) then
+        if (level == level_final .or. (level == level_fine .and. .not. want_slopes)) then
+            call model%whole(1)%evaluate(big_r, whole(1))
+            if (want_length_time) then
+                call model%whole(2)%evaluate(big_r, whole(2))
+                call model%whole(3)%evaluate(big_r, whole(3))
+            end if
+            if (want_slopes) then
+                do k = 1, merge(2, 1, want_length_time)
+                    call table_slope_xp(model%whole_slopes_xp(k), hardware_real(big_r), &
+                                        slope(k), slope_error(k))
+                end do
+            end if
+        else if (level == level_fine) then
             call model%whole(1)%evaluate(big_r, whole(1), slope(1))
             if (want_length_time) then
                 call model%whole(2)%evaluate(big_r, whole(2), slope(2))
@@ -591,6 +619,39 @@ contains
             end if
         end if
     end subroutine whole_half_arch_table
+
+    !> The derivative p'(x) of a table's hardware copy (all its terms) by Horner in `xp`,
+    !! with a bound on its error: the rounding of the Horner sums and of the coefficients,
+    !! (4n + 2) eps sum_j j |a_j| |t|^(j-1) (n terms), and the rounding of x to `xp`
+    !! (relative eps/2; t = 2 (x - lower)/width - (2 piece - 1) is exact for the tables'
+    !! power-of-two widths), eps |x| sum_j j (j-1) |a_j| |t|^(j-2) (2/width), all times
+    !! 2/width, the chain-rule factor.
+    pure subroutine table_slope_xp(table, x, slope, error)
+        type(chebyshev_table_xp), intent(in) :: table
+        real(xp), intent(in) :: x
+        real(qp), intent(out) :: slope, error
+        real(xp) :: position, t, value, derivative, size_value, size_slope, size_curve
+        integer :: piece, j, n
+        position = (x - table%lower)/table%width
+        piece = min(table%pieces, max(1, int(position) + 1))
+        t = 2.0_xp*(position - real(piece - 1, xp)) - 1.0_xp
+        n = table%used(piece)
+        value = table%power(n - 1, piece)
+        size_value = abs(value)
+        derivative = 0.0_xp
+        size_slope = 0.0_xp
+        size_curve = 0.0_xp
+        do j = n - 2, 0, -1
+            size_curve = size_curve*abs(t) + 2.0_xp*size_slope
+            derivative = derivative*t + value
+            size_slope = size_slope*abs(t) + size_value
+            value = value*t + table%power(j, piece)
+            size_value = size_value*abs(t) + abs(table%power(j, piece))
+        end do
+        slope = real(derivative*(2.0_xp/table%width), qp)
+        error = hardware_epsilon*real((real(4*n + 2, xp)*size_slope &
+                + abs(x)*size_curve*(2.0_xp/table%width))*(2.0_xp/table%width), qp)
+    end subroutine table_slope_xp
 
     !> The Gauss rule (element of model%gauss) for the panel v in [0, upper].
     pure function rule_index(big_r, upper, from_apse, digits) result(j)
