@@ -695,12 +695,13 @@ contains
         if (want_length_time) sums(4) = sums(4)*upper*root_one_minus_big_r
     end subroutine sweep
 
-    !> The node loop of `sweep`, in few binary128 operations (divisions cost what
-    !! multiplications do in software):
+    !> The node loop of `sweep`, in few binary128 operations (in software a division
+    !! costs about one and a half multiplications):
     !! c and s as quotients, q = 1 + x (1 + R + x) with x = (1 - R) c^2, and Q = sqrt(q)
     !! by one Heron step (Q0 + q/Q0)/2 from the `xp` node of `node_xp` (relative error
     !! a few roundings of `xp`, so the step's error is below 1e-36; a second step where
-    !! `xp` is only double). The values do not depend on how the d/dR sums are taken
+    !! `xp` is only double), scaled by powers of two so that no doubling or halving is
+    !! left in the loop. The values do not depend on how the d/dR sums are taken
     !! (`node_xp` or `add_slopes_qp`). Raw sums: Theta, d Theta/dR, S, T, d S/dR.
     pure subroutine sweep_values(rule, big_r, one_minus_big_r, upper, from_apse, &
                                  want_derivative, want_length_time, hardware_slopes, sums)
@@ -710,7 +711,8 @@ contains
         logical, intent(in) :: hardware_slopes !! the d/dR sums in `xp`, else binary128
         real(qp), intent(inout) :: sums(5)
         integer, parameter :: heron_steps = merge(1, 2, digits(1.0_xp) >= 64)
-        real(qp) :: v, v2, d, c, s, c2, x, q, root_q, theta_term, lengths, one_plus_big_r
+        real(qp) :: v, v2, d, c, s, c2, x, q, h, theta_term, lengths, one_plus_big_r
+        real(qp) :: c_scale, s_scale, x_factor, lengths_offset
         real(xp) :: slopes(2), upper_xp, big_r_xp, one_minus_big_r_xp, root_q_xp
         integer :: k, step
         logical :: quad_slopes
@@ -721,6 +723,13 @@ contains
         upper_xp = hardware_real(upper)
         big_r_xp = hardware_real(big_r)
         one_minus_big_r_xp = hardware_real(one_minus_big_r)
+        ! the loop takes c/c_scale, s/s_scale and h = 2 sqrt(q) (the factor 2 of the
+        ! node's 2v and the 1/2 of the Heron step stay out of it: every quantity is an
+        ! exact power of two times the true one, the sums are rescaled at the end)
+        c_scale = merge(1.0_qp, 2.0_qp, from_apse)
+        s_scale = 3.0_qp - c_scale
+        x_factor = one_minus_big_r*(c_scale*c_scale)
+        lengths_offset = 2.0_qp/s_scale
         do k = 1, rule%n
             call node_xp(upper_xp*rule%offset_xp(k), rule%double_weight_xp(k), big_r_xp, &
                          one_minus_big_r_xp, from_apse, want_derivative .and. hardware_slopes, &
@@ -730,28 +739,34 @@ contains
             d = 1.0_qp + v2
             if (from_apse) then
                 c = (1.0_qp - v2)/d
-                s = (v + v)/d
+                s = v/d
             else
-                c = (v + v)/d
+                c = v/d
                 s = (1.0_qp - v2)/d
             end if
             c2 = c*c
-            x = one_minus_big_r*c2
+            x = x_factor*c2
             q = 1.0_qp + x*(one_plus_big_r + x)
-            root_q = real(root_q_xp, qp)
-            do step = 1, heron_steps
-                root_q = 0.5_qp*(root_q + q/root_q)
+            h = real(root_q_xp, qp)
+            do step = 2, heron_steps
+                h = 0.5_qp*(h + q/h)
             end do
-            theta_term = rule%double_weight(k)*c2/(d*root_q)
+            h = h + q/h
+            theta_term = rule%double_weight(k)*c2/(d*h)
             sums(1) = sums(1) + theta_term
             if (want_length_time) then
-                lengths = theta_term/(1.0_qp + s*root_q)
+                lengths = theta_term/(lengths_offset + s*h)
                 sums(3) = sums(3) + lengths*c
                 sums(4) = sums(4) + lengths
             end if
-            if (quad_slopes) call add_slopes_qp(big_r, one_minus_big_r, c, s, c2, root_q, &
-                                                theta_term, want_length_time, sums)
+            if (quad_slopes) call add_slopes_qp(big_r, one_minus_big_r, c_scale*c, &
+                s_scale*s, (c_scale*c_scale)*c2, 0.5_qp*h, &
+                (2.0_qp*c_scale*c_scale)*theta_term, want_length_time, sums)
         end do
+        ! theta_term is Theta's term/(2 c_scale^2), lengths T's s_scale/(4 c_scale^2)
+        sums(1) = sums(1)*(2.0_qp*c_scale*c_scale)
+        sums(3) = sums(3)*(4.0_qp*c_scale**3/s_scale)
+        sums(4) = sums(4)*(4.0_qp*c_scale*c_scale/s_scale)
         if (want_derivative .and. hardware_slopes) sums([2, 5]) = real(slopes, qp)
     end subroutine sweep_values
 
