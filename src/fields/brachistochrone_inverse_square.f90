@@ -765,7 +765,7 @@ contains
         end do
         ! theta_term is Theta's term/(2 c_scale^2), lengths T's s_scale/(4 c_scale^2)
         sums(1) = sums(1)*(2.0_qp*c_scale*c_scale)
-        sums(3) = sums(3)*(4.0_qp*c_scale**3/s_scale)
+        sums(3) = sums(3)*(4.0_qp*c_scale*c_scale*c_scale/s_scale)
         sums(4) = sums(4)*(4.0_qp*c_scale*c_scale/s_scale)
         if (want_derivative .and. hardware_slopes) sums([2, 5]) = real(slopes, qp)
     end subroutine sweep_values
@@ -780,22 +780,22 @@ contains
         logical, intent(in) :: from_apse, want_derivative, want_length_time
         real(xp), intent(out) :: root_q
         real(xp), intent(inout) :: slopes(2)
-        real(xp) :: v2, d, c, s, c2, z, inverse, theta_term, s_big_q, inverse_d
+        real(xp) :: v2, jacobian, c, s, c2, z, inverse, theta_term, s_big_q, inverse_d
         v2 = v*v
-        d = 1.0_xp + v2
+        jacobian = 1.0_xp/(1.0_xp + v2)
         if (from_apse) then
-            c = (1.0_xp - v2)/d
-            s = (v + v)/d
+            c = (1.0_xp - v2)*jacobian
+            s = (v + v)*jacobian
         else
-            c = (v + v)/d
-            s = (1.0_xp - v2)/d
+            c = (v + v)*jacobian
+            s = (1.0_xp - v2)*jacobian
         end if
         c2 = c*c
         z = big_r + one_minus_big_r*c2
         root_q = sqrt(z*(z + one_minus_big_r) + one_minus_big_r)
         if (.not. want_derivative) return
         inverse = 1.0_xp/root_q
-        theta_term = weight*c2*inverse/d
+        theta_term = weight*c2*inverse*jacobian
         slopes(1) = slopes(1) - theta_term*(inverse*inverse)*(z*(z + z) + &
                     one_minus_big_r*(z + 1.0_xp + (z + z + one_minus_big_r)*(s*s)))
         if (want_length_time) then
