@@ -34,7 +34,7 @@
 module brachistochrone_inverse_square
     use brachistochrone_kinds, only: qp, pi, eps_qp, xp
     use brachistochrone_status, only: status_ok, argument_status
-    use brachistochrone_closed_forms, only: radial_time_of_roots
+    use brachistochrone_closed_forms, only: radial_time_of_roots, second_arch_radial_time
     use brachistochrone_fast_math, only: hardware_real
     use brachistochrone_chebyshev, only: chebyshev_table, chebyshev_points, chebyshev_fit, &
                                          chebyshev_table_xp, hardware_copy, &
@@ -551,9 +551,8 @@ contains
             time_integral = whole_factor*root_one_minus_big_r*whole(3) + part(4)
             if (second) then
                 values%arclength = (one_minus_big_r + d) + big_r*length_integral
-                values%time = 2.0_qp*radial_time_of_roots(big_r, one_minus_big_r, &
-                                                          root_big_r, root_one_minus_big_r) &
-                              - radial_time_of_roots(r, one_minus_r, sqrt(r), root_one_minus_r) &
+                values%time = second_arch_radial_time(big_r, one_minus_big_r, r, one_minus_r, &
+                                                     sqrt(r), root_one_minus_r) &
                               + correction_scale*time_integral
             else
                 values%arclength = one_minus_r + big_r*length_integral
