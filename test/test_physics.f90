@@ -9,6 +9,7 @@ module test_physics
                                       status_not_finite, status_invalid_argument, &
                                       status_outside_domain
     use brachistochrone_closed_forms, only: radial_time, kappa_time, fall_to_centre_time, &
+                            second_arch_radial_time, &
                             apse_angle_limit, inaccessible_angle, radial_fall_time
     use brachistochrone_quadrature, only: univariate_integrand, gauss_legendre, integrate_adaptive
     use brachistochrone_chebyshev, only: chebyshev_table
@@ -181,8 +182,8 @@ contains
 
     subroutine closed_form_tests()
         type(fall_integrand) :: fall
-        real(qp) :: r, value, error, t
-        integer :: k, status
+        real(qp) :: r, value, error, t, fall_times(10)
+        integer :: k, j, status
         call section('physics: radial fall t(r) (46) and kappa(rho) (75)')
         call check_close(radial_time(0.0_qp), pi/sqrt(8.0_qp), 4.0_qp, 't(0) = pi/sqrt(8)')
         ! (47) prints 1.1107207345385916: a misprint in the 12th digit (docs/ERRATA.md)
@@ -201,7 +202,23 @@ contains
             call check_close(radial_time(r), value, 16.0_qp, 't(r) = integral (46)')
             call check_close(kappa_time(r), 2.0_qp*pi/sqrt(8.0_qp) - value, 16.0_qp, &
                              'kappa(rho) = 2 t(0) - t(rho)')
+            fall_times(k) = value
         end do
+        fall_times(10) = 0.0_qp
+        ! the second half-arch's radial part 2 t(R) - t(r), one arctangent, against the
+        ! integrals (R = j/10 <= r = k/10, r = 1 included)
+        do k = 1, 10
+            r = real(k, qp)/10.0_qp
+            do j = 1, k
+                t = second_arch_radial_time(real(j, qp)/10.0_qp, 1.0_qp - real(j, qp)/10.0_qp, &
+                                            r, 1.0_qp - r, sqrt(r), sqrt(1.0_qp - r))
+                call check_close(t, 2.0_qp*fall_times(j) - fall_times(k), 16.0_qp, &
+                                 '2 t(R) - t(r) = integrals (46)')
+            end do
+        end do
+        call check_close(second_arch_radial_time(1.0e-30_qp, 1.0_qp - 1.0e-30_qp, 1.0_qp, &
+                                                 0.0_qp, 1.0_qp, 0.0_qp), &
+                         2.0_qp*radial_time(1.0e-30_qp), 4.0_qp, '2 t(1e-30) - t(1)')
         call radial_fall_time(1.5_qp, t, status)
         call check(status == status_invalid_argument .and. t == 0.0_qp, &
                    'checked t(r) rejects r > 1')

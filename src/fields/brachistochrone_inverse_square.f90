@@ -21,7 +21,7 @@
 !!
 !! The lambda integrals are taken in trig-free half-angle variables: tau = tan(lambda/2)
 !! on [0, L] (from the apse) and eta = tan((pi/2 - lambda)/2) on [L, pi/2] (from A), so
-!! c and s are rational in the node; one sqrt and two divisions per node.
+!! c and s are rational in the node (`sweep_values`: 23 binary128 operations a node).
 !!
 !! The whole half-arch (lambda in [0, pi/2]: Theta(R,R), eq. 66, and the S and T
 !! corrections) depends on R alone. Divided by 1-R (Theta, S) or sqrt(1-R) (T) these are
@@ -34,8 +34,8 @@
 module brachistochrone_inverse_square
     use brachistochrone_kinds, only: qp, pi, eps_qp, xp
     use brachistochrone_status, only: status_ok, argument_status
-    use brachistochrone_closed_forms, only: radial_time_of_roots
-    use brachistochrone_fast_math, only: inverse_sqrt, hardware_real
+    use brachistochrone_closed_forms, only: radial_time_of_roots, second_arch_radial_time
+    use brachistochrone_fast_math, only: hardware_real
     use brachistochrone_chebyshev, only: chebyshev_table, chebyshev_points, chebyshev_fit, &
                                          chebyshev_table_xp, hardware_copy, &
                                          chebyshev_table_from_powers
@@ -114,6 +114,9 @@ module brachistochrone_inverse_square
         type(chebyshev_table) :: whole(3)
         !> Theta(R,R)/(1-R) of `whole` in hardware precision, for level_hardware
         type(chebyshev_table_xp) :: whole_xp
+        !> The Theta and S tables of `whole` in hardware precision with all their terms,
+        !! for the derivatives at level_final
+        type(chebyshev_table_xp) :: whole_slopes_xp(2)
     contains
         procedure :: half_arch      !! Theta, S, T on the first or second half-arch
         procedure :: theta          !! Theta(r,R), eq. (55)
@@ -174,6 +177,10 @@ contains
                                                          whole_used(:, k))
         end do
         model%whole_xp = hardware_copy(model%whole(1), 0.1_qp*10.0_qp**(-hardware_digits))
+        do k = 1, 2
+            model%whole_slopes_xp(k) = hardware_copy(model%whole(k))
+            model%whole_slopes_xp(k)%used = model%whole(k)%used
+        end do
         ! d Theta(R,R)/dR at R = 0 (Theta(R,R) = pi/3 - 0.8095502 R + ...), with
         ! Theta(R,R) = (1 - R) A(R): A'(0) - A(0)
         call model%whole(1)%evaluate(0.0_qp, angle, slope)
@@ -460,6 +467,7 @@ contains
         type(arch_values) :: values
         real(qp) :: one_minus_r, one_minus_big_r, cos_l, sin_l, z_l, q_l, length_ratio
         real(qp) :: part(5), whole(3), whole_slope(3), correction_scale, digits
+        real(qp) :: slope_error(2)
         real(qp) :: upper_apse, upper_start, whole_factor, length_integral, time_integral
         real(qp) :: root_big_r, root_one_minus_r, root_one_minus_big_r, root_q_l
         integer :: rule_apse, rule_start
@@ -490,8 +498,8 @@ contains
         upper_start = cos_l/(1.0_qp + sin_l)
         rule_start = rule_index(big_r, upper_start, .false., digits)
         if (second) then
-            call whole_half_arch_table(model, level, big_r, want_length_time, whole, &
-                                       whole_slope)
+            call whole_half_arch_table(model, level, big_r, want_length_time, &
+                                       want_derivative, whole, whole_slope, slope_error)
             rule_apse = rule_index(big_r, upper_apse, .true., digits)
             if (rule_apse <= rule_start) then
                 call sweep(model, rule_apse, big_r, one_minus_big_r, upper_apse, .true., &
@@ -513,15 +521,19 @@ contains
             whole_factor = 0.0_qp
             whole = 0.0_qp
             whole_slope = 0.0_qp
+            slope_error = 0.0_qp
             values%boundary_sign = 1.0_qp
         end if
         values%angle = whole_factor*one_minus_big_r*whole(1) + part(1)
         values%angle_dr_smooth = whole_factor*(one_minus_big_r*whole_slope(1) - whole(1)) &
                                  + part(2)
         if (level == level_final) then
-            ! sums of terms of one sign, each within a few roundings of xp
-            values%angle_dr_error = 100.0_qp*hardware_epsilon*abs(part(2))
-            values%arclength_dr_error = 100.0_qp*hardware_epsilon*big_r*abs(part(5))
+            ! sums of terms of one sign, each within a few roundings of xp; the tables'
+            ! slopes in xp (`table_slope_xp`)
+            values%angle_dr_error = 100.0_qp*hardware_epsilon*abs(part(2)) &
+                                    + whole_factor*one_minus_big_r*slope_error(1)
+            values%arclength_dr_error = big_r*(100.0_qp*hardware_epsilon*abs(part(5)) &
+                                        + whole_factor*one_minus_big_r*slope_error(2))
         end if
 
         if (want_derivative) then
@@ -539,9 +551,8 @@ contains
             time_integral = whole_factor*root_one_minus_big_r*whole(3) + part(4)
             if (second) then
                 values%arclength = (one_minus_big_r + d) + big_r*length_integral
-                values%time = 2.0_qp*radial_time_of_roots(big_r, one_minus_big_r, &
-                                                          root_big_r, root_one_minus_big_r) &
-                              - radial_time_of_roots(r, one_minus_r, sqrt(r), root_one_minus_r) &
+                values%time = second_arch_radial_time(big_r, one_minus_big_r, r, one_minus_r, &
+                                                     sqrt(r), root_one_minus_r) &
                               + correction_scale*time_integral
             else
                 values%arclength = one_minus_r + big_r*length_integral
@@ -562,20 +573,36 @@ contains
     end function arch_with_rules
 
     !> The whole-half-arch integrals at R from the tables, to the level's accuracy:
-    !! whole = [Theta(R,R)/(1-R), S and T corrections without 1-R, sqrt(1-R)] and their
-    !! R-derivatives of the first two (the second only when `want_length_time`).
-    pure subroutine whole_half_arch_table(model, level, big_r, want_length_time, whole, &
-                                          slope)
+    !! whole = [Theta(R,R)/(1-R), S and T corrections without 1-R, sqrt(1-R)] and, with
+    !! `want_slopes`, the R-derivatives of the first two (the second only when
+    !! `want_length_time`). At level_final the derivatives are taken in hardware
+    !! precision (`table_slope_xp`), with bounds on their errors in `slope_error`.
+    pure subroutine whole_half_arch_table(model, level, big_r, want_length_time, &
+                                          want_slopes, whole, slope, slope_error)
         type(inverse_square_model), intent(in) :: model
         integer, intent(in) :: level
         real(qp), intent(in) :: big_r
-        logical, intent(in) :: want_length_time
-        real(qp), intent(out) :: whole(3), slope(3)
+        logical, intent(in) :: want_length_time, want_slopes
+        real(qp), intent(out) :: whole(3), slope(3), slope_error(2)
         real(qp) :: tolerance
+        integer :: k
         whole = 0.0_qp
         slope = 0.0_qp
+        slope_error = 0.0_qp
         ! (the T correction's slope is not needed: see two_point's Hamilton-Jacobi step)
-        if (level == level_fine .or. level == level_final) then
+        if (level == level_final .or. (level == level_fine .and. .not. want_slopes)) then
+            call model%whole(1)%evaluate(big_r, whole(1))
+            if (want_length_time) then
+                call model%whole(2)%evaluate(big_r, whole(2))
+                call model%whole(3)%evaluate(big_r, whole(3))
+            end if
+            if (want_slopes) then
+                do k = 1, merge(2, 1, want_length_time)
+                    call table_slope_xp(model%whole_slopes_xp(k), hardware_real(big_r), &
+                                        slope(k), slope_error(k))
+                end do
+            end if
+        else if (level == level_fine) then
             call model%whole(1)%evaluate(big_r, whole(1), slope(1))
             if (want_length_time) then
                 call model%whole(2)%evaluate(big_r, whole(2), slope(2))
@@ -591,6 +618,39 @@ contains
             end if
         end if
     end subroutine whole_half_arch_table
+
+    !> The derivative p'(x) of a table's hardware copy (all its terms) by Horner in `xp`,
+    !! with a bound on its error: the rounding of the Horner sums and of the coefficients,
+    !! (4n + 2) eps sum_j j |a_j| |t|^(j-1) (n terms), and the rounding of x to `xp`
+    !! (relative eps/2; t = 2 (x - lower)/width - (2 piece - 1) is exact for the tables'
+    !! power-of-two widths), eps |x| sum_j j (j-1) |a_j| |t|^(j-2) (2/width), all times
+    !! 2/width, the chain-rule factor.
+    pure subroutine table_slope_xp(table, x, slope, error)
+        type(chebyshev_table_xp), intent(in) :: table
+        real(xp), intent(in) :: x
+        real(qp), intent(out) :: slope, error
+        real(xp) :: position, t, value, derivative, size_value, size_slope, size_curve
+        integer :: piece, j, n
+        position = (x - table%lower)/table%width
+        piece = min(table%pieces, max(1, int(position) + 1))
+        t = 2.0_xp*(position - real(piece - 1, xp)) - 1.0_xp
+        n = table%used(piece)
+        value = table%power(n - 1, piece)
+        size_value = abs(value)
+        derivative = 0.0_xp
+        size_slope = 0.0_xp
+        size_curve = 0.0_xp
+        do j = n - 2, 0, -1
+            size_curve = size_curve*abs(t) + 2.0_xp*size_slope
+            derivative = derivative*t + value
+            size_slope = size_slope*abs(t) + size_value
+            value = value*t + table%power(j, piece)
+            size_value = size_value*abs(t) + abs(table%power(j, piece))
+        end do
+        slope = real(derivative*(2.0_xp/table%width), qp)
+        error = hardware_epsilon*real((real(4*n + 2, xp)*size_slope &
+                + abs(x)*size_curve*(2.0_xp/table%width))*(2.0_xp/table%width), qp)
+    end subroutine table_slope_xp
 
     !> The Gauss rule (element of model%gauss) for the panel v in [0, upper].
     pure function rule_index(big_r, upper, from_apse, digits) result(j)
@@ -620,66 +680,11 @@ contains
         logical, intent(in) :: hardware_slopes !! the d/dR sums in `xp` (level_final)
         real(qp), intent(in) :: root_one_minus_big_r !! sqrt(1 - R) (with want_length_time)
         real(qp), intent(out) :: sums(5)
-        real(qp) :: v, v2, jacobian, c, s, c2, z, q, theta_term, lengths, inverse
-        real(qp) :: s_big_q, inverse_d, length_term, two_z_plus
-        real(xp) :: slopes(2), one_minus_big_r_xp
-        logical :: quad_slopes
-        integer :: k
 
         sums = 0.0_qp
-        slopes = 0.0_xp
-        s_big_q = 0.0_qp
-        inverse_d = 0.0_qp
-        length_term = 0.0_qp
-        quad_slopes = want_derivative .and. .not. hardware_slopes
         if (upper <= 0.0_qp) return
-        one_minus_big_r_xp = hardware_real(one_minus_big_r)
-        associate (rule => model%gauss(j))
-        do k = 1, rule%n
-            v = upper*rule%offset(k)
-            v2 = v*v
-            jacobian = 1.0_qp/(1.0_qp + v2)
-            if (from_apse) then
-                c = (1.0_qp - v2)*jacobian
-                s = (v + v)*jacobian
-            else
-                c = (v + v)*jacobian
-                s = (1.0_qp - v2)*jacobian
-            end if
-            c2 = c*c
-            z = big_r + one_minus_big_r*c2
-            if (quad_slopes) two_z_plus = z + z + one_minus_big_r
-            q = z*(z + one_minus_big_r) + one_minus_big_r
-            inverse = inverse_sqrt(q)
-            theta_term = rule%double_weight(k)*jacobian*c2*inverse
-            sums(1) = sums(1) + theta_term
-            if (quad_slopes) then
-                sums(2) = sums(2) - theta_term*(inverse*inverse)*(z*(z + z) + &
-                          one_minus_big_r*(z + 1.0_qp + two_z_plus*(s*s)))
-            end if
-            if (want_length_time) then
-                s_big_q = s*(q*inverse)
-                inverse_d = 1.0_qp/(1.0_qp + s_big_q)
-                lengths = theta_term*inverse_d
-                length_term = lengths*c
-                sums(3) = sums(3) + length_term
-                sums(4) = sums(4) + lengths
-                if (quad_slopes) then
-                    ! dq/dR = (2z + 1 - R) s^2 - (1 + z); d(1/(QD))/dR = -(1/(QD)) dq/dR
-                    ! (D + sQ)/(2 Q^2 D)
-                    sums(5) = sums(5) + length_term*(two_z_plus*(s*s) - (1.0_qp + z)) &
-                              *(1.0_qp + s_big_q + s_big_q)*(inverse*inverse)*inverse_d
-                end if
-            end if
-            if (want_derivative .and. hardware_slopes) then
-                call add_slopes_xp(hardware_real(z), hardware_real(s), hardware_real(inverse), &
-                                   hardware_real(theta_term), one_minus_big_r_xp, &
-                                   want_length_time, hardware_real(length_term), &
-                                   hardware_real(s_big_q), hardware_real(inverse_d), slopes)
-            end if
-        end do
-        end associate
-        if (hardware_slopes) sums([2, 5]) = real(slopes, qp)
+        call sweep_values(model%gauss(j), big_r, one_minus_big_r, upper, from_apse, &
+                          want_derivative, want_length_time, hardware_slopes, sums)
         ! common factors: Theta 2(1-R) c^2/Q; S 2(1-R) c^3/(QD); T 2 sqrt(1-R) c^2/(QD);
         ! d/dR of the S integrand: -2 c^3/(QD) - (1-R) c^3 q_R (D + sQ)/(Q^3 D^2)
         sums(1) = sums(1)*upper*one_minus_big_r
@@ -689,22 +694,135 @@ contains
         if (want_length_time) sums(4) = sums(4)*upper*root_one_minus_big_r
     end subroutine sweep
 
-    !> The d/dR integrands of `sweep` at one node, added in hardware precision.
-    pure subroutine add_slopes_xp(z, s, inverse, theta_term, one_minus_big_r, &
-                                  want_length_time, length_term, s_big_q, inverse_d, slopes)
-        real(xp), intent(in) :: z, s, inverse, theta_term, one_minus_big_r
-        logical, intent(in) :: want_length_time
-        real(xp), intent(in) :: length_term, s_big_q, inverse_d
+    !> The node loop of `sweep`, in few binary128 operations (in software a division
+    !! costs about one and a half multiplications):
+    !! c and s as quotients, q = 1 + x (1 + R + x) with x = (1 - R) c^2, and Q = sqrt(q)
+    !! by one Heron step (Q0 + q/Q0)/2 from the `xp` node of `node_xp` (relative error
+    !! a few roundings of `xp`, so the step's error is below 1e-36; a second step where
+    !! `xp` is only double), scaled by powers of two so that no doubling or halving is
+    !! left in the loop. The values do not depend on how the d/dR sums are taken
+    !! (`node_xp` or `add_slopes_qp`). Raw sums: Theta, d Theta/dR, S, T, d S/dR.
+    pure subroutine sweep_values(rule, big_r, one_minus_big_r, upper, from_apse, &
+                                 want_derivative, want_length_time, hardware_slopes, sums)
+        type(gauss_nodes), intent(in) :: rule
+        real(qp), intent(in) :: big_r, one_minus_big_r, upper
+        logical, intent(in) :: from_apse, want_derivative, want_length_time
+        logical, intent(in) :: hardware_slopes !! the d/dR sums in `xp`, else binary128
+        real(qp), intent(inout) :: sums(5)
+        integer, parameter :: heron_steps = merge(1, 2, digits(1.0_xp) >= 64)
+        real(qp) :: v, v2, d, c, s, c2, x, q, h, theta_term, lengths, one_plus_big_r
+        real(qp) :: c_scale, s_scale, x_factor, lengths_offset
+        real(xp) :: slopes(2), upper_xp, big_r_xp, one_minus_big_r_xp, root_q_xp
+        integer :: k, step
+        logical :: quad_slopes
+
+        quad_slopes = want_derivative .and. .not. hardware_slopes
+        slopes = 0.0_xp
+        one_plus_big_r = 1.0_qp + big_r
+        upper_xp = hardware_real(upper)
+        big_r_xp = hardware_real(big_r)
+        one_minus_big_r_xp = hardware_real(one_minus_big_r)
+        ! the loop takes c/c_scale, s/s_scale and h = 2 sqrt(q) (the factor 2 of the
+        ! node's 2v and the 1/2 of the Heron step stay out of it: every quantity is an
+        ! exact power of two times the true one, the sums are rescaled at the end)
+        c_scale = merge(1.0_qp, 2.0_qp, from_apse)
+        s_scale = 3.0_qp - c_scale
+        x_factor = one_minus_big_r*(c_scale*c_scale)
+        lengths_offset = 2.0_qp/s_scale
+        do k = 1, rule%n
+            call node_xp(upper_xp*rule%offset_xp(k), rule%double_weight_xp(k), big_r_xp, &
+                         one_minus_big_r_xp, from_apse, want_derivative .and. hardware_slopes, &
+                         want_length_time, root_q_xp, slopes)
+            v = upper*rule%offset(k)
+            v2 = v*v
+            d = 1.0_qp + v2
+            if (from_apse) then
+                c = (1.0_qp - v2)/d
+                s = v/d
+            else
+                c = v/d
+                s = (1.0_qp - v2)/d
+            end if
+            c2 = c*c
+            x = x_factor*c2
+            q = 1.0_qp + x*(one_plus_big_r + x)
+            h = real(root_q_xp, qp)
+            do step = 2, heron_steps
+                h = 0.5_qp*(h + q/h)
+            end do
+            h = h + q/h
+            theta_term = rule%double_weight(k)*c2/(d*h)
+            sums(1) = sums(1) + theta_term
+            if (want_length_time) then
+                lengths = theta_term/(lengths_offset + s*h)
+                sums(3) = sums(3) + lengths*c
+                sums(4) = sums(4) + lengths
+            end if
+            if (quad_slopes) call add_slopes_qp(big_r, one_minus_big_r, c_scale*c, &
+                s_scale*s, (c_scale*c_scale)*c2, 0.5_qp*h, &
+                (2.0_qp*c_scale*c_scale)*theta_term, want_length_time, sums)
+        end do
+        ! theta_term is Theta's term/(2 c_scale^2), lengths T's s_scale/(4 c_scale^2)
+        sums(1) = sums(1)*(2.0_qp*c_scale*c_scale)
+        sums(3) = sums(3)*(4.0_qp*c_scale*c_scale*c_scale/s_scale)
+        sums(4) = sums(4)*(4.0_qp*c_scale*c_scale/s_scale)
+        if (want_derivative .and. hardware_slopes) sums([2, 5]) = real(slopes, qp)
+    end subroutine sweep_values
+
+    !> One node of `sweep_values` in hardware precision: sqrt(q) (the seed of the Heron
+    !! step) and, when wanted, the d/dR integrands added to `slopes`, with
+    !! dq/dR = (2z + 1 - R) s^2 - (1 + z) = -2 c^2 z (no cancellation). The slope sums'
+    !! terms each have one sign and a relative error of a few roundings of `xp`.
+    pure subroutine node_xp(v, weight, big_r, one_minus_big_r, from_apse, &
+                            want_derivative, want_length_time, root_q, slopes)
+        real(xp), intent(in) :: v, weight, big_r, one_minus_big_r
+        logical, intent(in) :: from_apse, want_derivative, want_length_time
+        real(xp), intent(out) :: root_q
         real(xp), intent(inout) :: slopes(2)
-        real(xp) :: two_z_plus
-        two_z_plus = z + z + one_minus_big_r
+        real(xp) :: v2, jacobian, c, s, c2, z, inverse, theta_term, s_big_q, inverse_d
+        v2 = v*v
+        jacobian = 1.0_xp/(1.0_xp + v2)
+        if (from_apse) then
+            c = (1.0_xp - v2)*jacobian
+            s = (v + v)*jacobian
+        else
+            c = (v + v)*jacobian
+            s = (1.0_xp - v2)*jacobian
+        end if
+        c2 = c*c
+        z = big_r + one_minus_big_r*c2
+        root_q = sqrt(z*(z + one_minus_big_r) + one_minus_big_r)
+        if (.not. want_derivative) return
+        inverse = 1.0_xp/root_q
+        theta_term = weight*c2*inverse*jacobian
         slopes(1) = slopes(1) - theta_term*(inverse*inverse)*(z*(z + z) + &
-                    one_minus_big_r*(z + 1.0_xp + two_z_plus*(s*s)))
+                    one_minus_big_r*(z + 1.0_xp + (z + z + one_minus_big_r)*(s*s)))
         if (want_length_time) then
-            slopes(2) = slopes(2) + length_term*(two_z_plus*(s*s) - (1.0_xp + z)) &
+            s_big_q = s*root_q
+            inverse_d = 1.0_xp/(1.0_xp + s_big_q)
+            slopes(2) = slopes(2) - theta_term*inverse_d*c*(2.0_xp*c2*z) &
                         *(1.0_xp + s_big_q + s_big_q)*(inverse*inverse)*inverse_d
         end if
-    end subroutine add_slopes_xp
+    end subroutine node_xp
+
+    !> The d/dR integrands of `node_xp` in binary128, added to the raw sums 2 and 5.
+    pure subroutine add_slopes_qp(big_r, one_minus_big_r, c, s, c2, root_q, theta_term, &
+                                  want_length_time, sums)
+        real(qp), intent(in) :: big_r, one_minus_big_r, c, s, c2, root_q, theta_term
+        logical, intent(in) :: want_length_time
+        real(qp), intent(inout) :: sums(5)
+        real(qp) :: z, inverse, s_big_q, inverse_d
+        z = big_r + one_minus_big_r*c2
+        inverse = 1.0_qp/root_q
+        sums(2) = sums(2) - theta_term*(inverse*inverse)*(z*(z + z) + &
+                  one_minus_big_r*(z + 1.0_qp + (z + z + one_minus_big_r)*(s*s)))
+        if (want_length_time) then
+            s_big_q = s*root_q
+            inverse_d = 1.0_qp/(1.0_qp + s_big_q)
+            sums(5) = sums(5) - theta_term*inverse_d*c*(2.0_qp*c2*z) &
+                      *(1.0_qp + s_big_q + s_big_q)*(inverse*inverse)*inverse_d
+        end if
+    end subroutine add_slopes_qp
 
     !> Check 0 < R < 1, R <= r <= 1, all finite.
     pure function check_radii(r, big_r) result(status)
