@@ -201,6 +201,7 @@ module brachistochrone_speed_laws
         procedure :: apse_angle_limit => logarithmic_limit
         procedure :: apse_constants => logarithmic_apse_constants
         procedure :: arch_terms => logarithmic_arch_terms
+        procedure :: panel_terms => logarithmic_panel_terms
         procedure :: theta_ratio64 => logarithmic_theta_ratio64
         procedure :: inverse_speed => logarithmic_inverse_speed
         procedure :: fall_integrand => logarithmic_fall_integrand
@@ -1027,6 +1028,41 @@ contains
         r_over_x = e1
         if (present(log_slope)) log_slope = real(lambda, xp)/(real(delta, xp)*real(c(1), xp))
     end subroutine logarithmic_arch_terms
+
+    !> `logarithmic_arch_terms` on one panel: exp(-lambda) by node pairs (`pair_exps`)
+    !! where `power_panel_terms` takes them for n = 2 (the same forms), else node by node.
+    pure subroutine logarithmic_panel_terms(self, c, side, mid, offset, lambda, delta, q, &
+                                            one_minus_q, q_over_v, r_over_x, root_q, &
+                                            log_slope)
+        class(logarithmic_law), intent(in) :: self
+        real(qp), intent(in) :: c(8), mid
+        integer, intent(in) :: side
+        real(qp), intent(in) :: offset(:), lambda(:), delta(:)
+        real(qp), intent(out) :: q(:), one_minus_q(:), q_over_v(:), r_over_x(:), root_q(:)
+        real(xp), intent(out), optional :: log_slope(:)
+        real(qp), dimension(size(lambda)) :: e1, em1, e2
+        if (.not. pair_terms_apply([c(1:2), 1.0_qp, 1.0_qp, c(5:8)], side, lambda, delta)) then
+            call default_panel_terms(self, c, side, mid, offset, lambda, delta, q, &
+                                     one_minus_q, q_over_v, r_over_x, root_q, log_slope)
+            return
+        end if
+        if (side == 1) then
+            call pair_exps(-1.0_qp, mid, offset, e1, em1)
+        else
+            call pair_exps(1.0_qp, mid, offset, e1, em1)
+            e1 = c(5)*e1
+            em1 = -(1.0_qp - e1)
+        end if
+        e2 = e1*e1
+        ! as logarithmic_arch_terms; 1 - exp(-2 lambda) = -em1 (2 + em1)
+        root_q = e1*root(delta*c(6))
+        q = root_q*root_q
+        one_minus_q = -em1*(2.0_qp + em1) + e2*lambda*c(6)
+        q_over_v = root_q*e1*c(7)
+        r_over_x = e1
+        if (present(log_slope)) log_slope = real(lambda, xp)/(real(delta, xp)* &
+                                                              real(c(1), xp))
+    end subroutine logarithmic_panel_terms
 
     pure function logarithmic_inverse_speed(self, delta) result(w)
         class(logarithmic_law), intent(in) :: self
