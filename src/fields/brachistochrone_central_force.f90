@@ -893,9 +893,9 @@ contains
         !> no panel skipped and each on the full rules (the tables' build)
         logical, intent(in), optional :: every_panel
         type(panel) :: panels(max_panels)
-        real(qp) :: part(3), last(3), share, v, lambda, delta, jacobian, q, omq, qv, rx
-        real(qp) :: inverse_root, common, g(3), root_q, weighted, width
-        real(xp) :: part_xp(2), carry(2), carry_all(2), log_slope, g_xp
+        real(qp) :: part(3), last(3), share, jacobian, q, omq, qv, rx
+        real(qp) :: inverse_root, common, g(3), root_q, weighted, width, terms(max_nodes, 6)
+        real(xp) :: part_xp(2), carry(2), carry_all(2), log_slope, g_xp, slopes_k(max_nodes)
         integer :: count, p, k, j
         logical :: all_panels
         all_panels = .false.
@@ -926,16 +926,15 @@ contains
             part_xp = 0.0_xp
             carry = 0.0_xp
             width = pan%hi - pan%lo
+            call panel_nodes(model, a, pan, j, present(slopes), terms, slopes_k)
             do k = 1, model%gauss(j)%n
-                v = pan%lo + width*model%gauss(j)%offset(k)
-                call node_point(pan%kind, pan%scale, a%big_lambda, v, lambda, delta, &
-                                jacobian)
-                if (present(slopes)) then
-                    call model%law%arch_terms(a%c, lambda, delta, q, omq, qv, rx, root_q, &
-                                              log_slope)
-                else
-                    call model%law%arch_terms(a%c, lambda, delta, q, omq, qv, rx, root_q)
-                end if
+                jacobian = terms(k, 1)
+                q = terms(k, 2)
+                omq = terms(k, 3)
+                qv = terms(k, 4)
+                rx = terms(k, 5)
+                root_q = terms(k, 6)
+                if (present(slopes)) log_slope = slopes_k(k)
                 ! 1/sqrt(1 - q) and sqrt(q/(1 - q)) by a double seed and Newton steps;
                 ! the Gauss weight folded into the Jacobian (g: weighted integrands)
                 inverse_root = inverse_sqrt(omq)
@@ -968,6 +967,49 @@ contains
             end associate
         end do
     end subroutine arch_sums
+
+    !> The Jacobian and the law's terms (q, 1 - q, q/v, r/x, sqrt q; `terms(k, 1:6)`) at
+    !! the nodes of panel `pan` on rule j, and with `want_slopes` d(log q)/d Lambda.
+    !! Linear panels' nodes as mid +- t (symmetric: the law may share exponentials).
+    pure subroutine panel_nodes(model, a, pan, j, want_slopes, terms, slopes_k)
+        type(central_force_model), intent(in) :: model
+        type(arch_setup), intent(in) :: a
+        type(panel), intent(in) :: pan
+        integer, intent(in) :: j
+        logical, intent(in) :: want_slopes
+        real(qp), intent(out) :: terms(max_nodes, 6)
+        real(xp), intent(out) :: slopes_k(max_nodes)
+        real(qp) :: mid, t(max_nodes), v(max_nodes), lambda(max_nodes), delta(max_nodes)
+        real(qp) :: width
+        integer :: n, k, side
+        n = model%gauss(j)%n
+        width = pan%hi - pan%lo
+        side = 0
+        if (pan%kind == kind_apse) side = 1
+        if (pan%kind == kind_start) side = 2
+        mid = pan%lo + 0.5_qp*width
+        if (side == 0) then
+            v(1:n) = pan%lo + width*model%gauss(j)%offset
+            t(1:n) = v(1:n) - mid
+        else
+            do k = 1, n/2
+                t(k) = width*(model%gauss(j)%offset(k) - 0.5_qp)
+                t(n + 1 - k) = -t(k)
+            end do
+            v(1:n) = mid + t(1:n)
+        end if
+        call node_point(pan%kind, pan%scale, a%big_lambda, v(1:n), lambda(1:n), &
+                        delta(1:n), terms(1:n, 1))
+        slopes_k = 0.0_xp
+        if (want_slopes) then
+            call model%law%panel_terms(a%c, side, mid, t(1:n), lambda(1:n), delta(1:n), &
+                terms(1:n, 2), terms(1:n, 3), terms(1:n, 4), terms(1:n, 5), terms(1:n, 6), &
+                slopes_k(1:n))
+        else
+            call model%law%panel_terms(a%c, side, mid, t(1:n), lambda(1:n), delta(1:n), &
+                terms(1:n, 2), terms(1:n, 3), terms(1:n, 4), terms(1:n, 5), terms(1:n, 6))
+        end if
+    end subroutine panel_nodes
 
     !> `arch_sums` on the full rules (want_length_time) with the whole-half-arch tables
     !! where they apply (`whole_lookup`): with W the whole integrals, the second half-arch

@@ -112,6 +112,9 @@ module brachistochrone_speed_laws
         procedure :: valid => default_valid  !! parameters inside the supported range
         procedure :: apse_constants => default_apse_constants !! per-apse data for arch_terms
         procedure :: arch_terms => default_arch_terms     !! q, 1 - q, q/v at a node
+        !> arch_terms at the nodes of one panel (laws may share exponentials between
+        !! nodes placed symmetrically about the panel's midpoint)
+        procedure :: panel_terms => default_panel_terms
         !> sqrt(q/(1 - q)) exp(shift) in double precision, for the solver's early phase
         procedure :: theta_ratio64 => default_theta_ratio64
         procedure :: inverse_speed => default_inverse_speed !! 1/v(x) at x = exp(-delta)
@@ -176,6 +179,7 @@ module brachistochrone_speed_laws
         procedure :: apse_angle_limit => power_limit
         procedure :: apse_constants => power_apse_constants
         procedure :: arch_terms => power_arch_terms
+        procedure :: panel_terms => power_panel_terms
         procedure :: theta_ratio64 => power_theta_ratio64
         procedure :: inverse_speed => power_inverse_speed
         procedure :: fall_integrand => power_fall_integrand
@@ -197,6 +201,7 @@ module brachistochrone_speed_laws
         procedure :: apse_angle_limit => logarithmic_limit
         procedure :: apse_constants => logarithmic_apse_constants
         procedure :: arch_terms => logarithmic_arch_terms
+        procedure :: panel_terms => logarithmic_panel_terms
         procedure :: theta_ratio64 => logarithmic_theta_ratio64
         procedure :: inverse_speed => logarithmic_inverse_speed
         procedure :: fall_integrand => logarithmic_fall_integrand
@@ -402,6 +407,29 @@ contains
         if (present(log_slope)) log_slope = 0.0_xp
     end subroutine default_arch_terms
 
+    !> `arch_terms` at the nodes k = 1..n of one panel. The panel's variable v (lambda
+    !! where side = 1, delta where side = 2; side = 0: neither) is mid + offset(k) at
+    !! node k, offset(n + 1 - k) = -offset(k); lambda(k), delta(k) from that v.
+    pure subroutine default_panel_terms(self, c, side, mid, offset, lambda, delta, q, &
+                                        one_minus_q, q_over_v, r_over_x, root_q, log_slope)
+        class(speed_law), intent(in) :: self
+        real(qp), intent(in) :: c(8), mid
+        integer, intent(in) :: side !! 1: v = lambda, 2: v = delta, 0: other
+        real(qp), intent(in) :: offset(:), lambda(:), delta(:) !! v - mid and the nodes
+        real(qp), intent(out) :: q(:), one_minus_q(:), q_over_v(:), r_over_x(:), root_q(:)
+        real(xp), intent(out), optional :: log_slope(:) !! as `arch_terms`
+        integer :: k
+        do k = 1, size(lambda)
+            if (present(log_slope)) then
+                call self%arch_terms(c, lambda(k), delta(k), q(k), one_minus_q(k), &
+                                     q_over_v(k), r_over_x(k), root_q(k), log_slope(k))
+            else
+                call self%arch_terms(c, lambda(k), delta(k), q(k), one_minus_q(k), &
+                                     q_over_v(k), r_over_x(k), root_q(k))
+            end if
+        end do
+    end subroutine default_panel_terms
+
     !> 1/v(x) at x = exp(-delta): 1/sqrt((1 - x) V(x)), V = -D(x, 1).
     pure function default_inverse_speed(self, delta) result(w)
         class(speed_law), intent(in) :: self
@@ -555,11 +583,11 @@ contains
         !> d(log q)/d Lambda at fixed lambda in hardware precision (laws with
         !! has_terms_xp; 0 otherwise)
         real(xp), intent(out), optional :: log_slope
-        real(qp) :: a, om1, om2, e1, e2, eam1, ea, e_delta, ea_e_delta
-        real(xp) :: ratio_xp
+        real(qp) :: a, om1, om2, e1, e2, eam1, ea, e_delta
         logical :: known  ! E(delta) already at hand
         a = c(3)
         known = .false.
+        e_delta = 0.0_qp
         call exp_pair(lambda, delta, c(5), e1, om1, om2, e2)
         if (a == 2.0_qp) then
             ! n = 3: exp(-a lambda) = exp(-2 lambda)
@@ -599,6 +627,23 @@ contains
             eam1 = fast_expm1(-a*lambda)
             ea = 1.0_qp + eam1
         end if
+        call power_finish_terms(c, lambda, delta, e1, om2, e2, ea, eam1, known, e_delta, &
+                                q, one_minus_q, q_over_v, r_over_x, root_q, log_slope)
+    end subroutine power_arch_terms
+
+    !> `power_arch_terms` from exp(-lambda) = e1, 1 - exp(-2 lambda) = om2, e2 =
+    !! exp(-2 lambda), ea = exp(-a lambda), eam1 = ea - 1 and, where known, E(delta).
+    pure subroutine power_finish_terms(c, lambda, delta, e1, om2, e2, ea, eam1, known, &
+                                       e_delta, q, one_minus_q, q_over_v, r_over_x, root_q, &
+                                       log_slope)
+        real(qp), intent(in) :: c(8), lambda, delta, e1, om2, e2, ea, eam1
+        logical, intent(in) :: known
+        real(qp), intent(inout) :: e_delta
+        real(qp), intent(out) :: q, one_minus_q, q_over_v, r_over_x, root_q
+        real(xp), intent(out), optional :: log_slope
+        real(qp) :: a, ea_e_delta
+        real(xp) :: ratio_xp
+        a = c(3)
         if (delta > c(8) .and. c(4) > 0.0_qp) then
             ! exp(-a lambda) E(delta) = exp(-a lambda) - R^a (no division; E(delta) >=
             ! 1 - e^(-1/4): at most two bits cancel, as in 1 - R^a/exp(-a lambda))
@@ -622,7 +667,152 @@ contains
         ! a E(lambda) exp(-a delta)/(E(Lambda) E(delta)) (see power_theta_terms_xp)
         if (present(log_slope)) log_slope = real(a, xp)*real(-eam1, xp)* &
             ratio_xp*real(c(6), xp)
-    end subroutine power_arch_terms
+    end subroutine power_finish_terms
+
+    !> `power_arch_terms` on one panel. Where the panel's variable v is lambda (side 1)
+    !! or delta (side 2), exp and expm1 of -lambda, -a lambda or a delta at the nodes
+    !! v = mid +- t come from their values at mid and at t (`pair_exps`): one exponential
+    !! per node pair and one division instead of two exponentials. On the apse side
+    !! exp(-lambda), exp(-a lambda) with exact arguments; on the start side, as in
+    !! `power_arch_terms`, R exp(delta), R^a exp(a delta) or E(delta) (where a delta <=
+    !! 1/4), there only where lambda > 1/2 and every node would take those forms there;
+    !! elsewhere node by node.
+    pure subroutine power_panel_terms(self, c, side, mid, offset, lambda, delta, q, &
+                                      one_minus_q, q_over_v, r_over_x, root_q, log_slope)
+        class(power_law), intent(in) :: self
+        real(qp), intent(in) :: c(8), mid
+        integer, intent(in) :: side
+        real(qp), intent(in) :: offset(:), lambda(:), delta(:)
+        real(qp), intent(out) :: q(:), one_minus_q(:), q_over_v(:), r_over_x(:), root_q(:)
+        real(xp), intent(out), optional :: log_slope(:)
+        real(qp), dimension(size(lambda)) :: e1, em1, ea, eam1, e_delta
+        real(qp) :: a
+        integer :: k
+        logical :: known
+        a = c(3)
+        known = .false.
+        e_delta = 0.0_qp
+        if (.not. pair_terms_apply(c, side, lambda, delta)) then
+            call default_panel_terms(self, c, side, mid, offset, lambda, delta, q, &
+                                     one_minus_q, q_over_v, r_over_x, root_q, log_slope)
+            return
+        end if
+        if (side == 1) then
+            call pair_exps(-1.0_qp, mid, offset, e1, em1)
+            if (.not. special_exponent(a)) call pair_exps(-a, mid, offset, ea, eam1)
+        else
+            call pair_exps(1.0_qp, mid, offset, e1, em1)
+            e1 = c(5)*e1
+            em1 = -(1.0_qp - e1)
+            if (.not. special_exponent(a)) then
+                if (minval(delta) > c(8)) then
+                    call pair_exps(a, mid, offset, ea, eam1)
+                    ea = c(4)*ea
+                    eam1 = ea - 1.0_qp
+                else
+                    ! E(delta) as in power_arch_terms where a delta <= 1/4
+                    ! (1 - E(delta) = exp(-a delta) as computed, not by a difference)
+                    call pair_exps(-a, mid, offset, ea, eam1)
+                    e_delta = -eam1
+                    known = .true.
+                    where (lambda > 2.0_qp*c(8))
+                        ea = c(4)/ea
+                        eam1 = ea - 1.0_qp
+                    elsewhere
+                        eam1 = (e_delta - c(2))/ea
+                        ea = 1.0_qp + eam1
+                    end where
+                end if
+            end if
+        end if
+        if (a == 2.0_qp) then
+            ea = e1*e1
+            eam1 = em1*(2.0_qp + em1)
+        else if (a == 1.0_qp) then
+            ea = e1
+            eam1 = em1
+        else if (a == 0.5_qp) then
+            ea = root(e1)
+            eam1 = em1/(1.0_qp + ea)
+        end if
+        do k = 1, size(lambda)
+            if (present(log_slope)) then
+                call power_finish_terms(c, lambda(k), delta(k), e1(k), &
+                                        -em1(k)*(2.0_qp + em1(k)), e1(k)*e1(k), ea(k), &
+                                        eam1(k), known, e_delta(k), q(k), one_minus_q(k), &
+                                        q_over_v(k), r_over_x(k), root_q(k), log_slope(k))
+            else
+                call power_finish_terms(c, lambda(k), delta(k), e1(k), &
+                                        -em1(k)*(2.0_qp + em1(k)), e1(k)*e1(k), ea(k), &
+                                        eam1(k), known, e_delta(k), q(k), one_minus_q(k), &
+                                        q_over_v(k), r_over_x(k), root_q(k))
+            end if
+        end do
+    end subroutine power_panel_terms
+
+    !> Exponents with exp(-a lambda) from exp(-lambda) (n = 1.5, 2, 3).
+    elemental logical function special_exponent(a)
+        real(qp), intent(in) :: a
+        special_exponent = a == 2.0_qp .or. a == 1.0_qp .or. a == 0.5_qp
+    end function special_exponent
+
+    !> Whether `power_panel_terms` takes its pairs: a linear panel of an even rule; on
+    !! the start side R and R^a normal (R exp(delta) <= 1) and lambda > 1/2 (1 - R
+    !! exp(delta) loses at most 1.4 bits), and for general a either a delta > 1/4 and a
+    !! lambda > 1/2 at every node or, where a delta <= 1/4, lambda > delta or a lambda >
+    !! 1/2 (E(Lambda) - E(delta) then loses at most two bits, as there).
+    pure logical function pair_terms_apply(c, side, lambda, delta) result(ok)
+        real(qp), intent(in) :: c(8), lambda(:), delta(:)
+        integer, intent(in) :: side
+        ok = (side == 1 .or. side == 2) .and. mod(size(lambda), 2) == 0
+        if (.not. ok .or. side == 1) return
+        ok = c(4) > 2.0_qp**(-16000) .and. c(5) > 2.0_qp**(-16000) .and. &
+             minval(lambda) > 0.5_qp
+        if (.not. ok .or. special_exponent(c(3))) return
+        if (minval(delta) > c(8)) then
+            ok = minval(lambda) > 2.0_qp*c(8)
+        else
+            ok = all(lambda > 2.0_qp*c(8) .or. (delta < lambda .and. delta <= c(8)))
+        end if
+    end function pair_terms_apply
+
+    !> exp(s v) and expm1(s v) at v = mid + offset(k), offset(n + 1 - k) = -offset(k)
+    !! (s mid <= 0 where expm1 is wanted): both at mid once, then per pair w = -|s
+    !! offset(k)|, x = expm1(w) and y = exp(w) (one exponential; the other from it
+    !! without loss) and one division: the node at s mid + w gets e y and e_m1 + e x
+    !! (one sign), its partner e/y and e_m1 - e x/y (about log2(mid/(mid - |offset|))
+    !! bits cancel: 1.3 at most on panels with hi <= 4 lo, as the engine's linear ones).
+    pure subroutine pair_exps(s, mid, offset, ev, em1v)
+        real(qp), intent(in) :: s, mid, offset(:)
+        real(qp), intent(out) :: ev(:), em1v(:)
+        real(qp) :: centre, centre_m1, x, y, inverse_y, w
+        integer :: k, n, far, near
+        n = size(offset)
+        if (abs(s*mid) < 0.5_qp) then
+            centre_m1 = fast_expm1(s*mid)
+            centre = 1.0_qp + centre_m1
+        else
+            centre = fast_exp(s*mid)
+            centre_m1 = centre - 1.0_qp
+        end if
+        do k = 1, n/2
+            w = -abs(s*offset(k))
+            if (w > -0.5_qp) then
+                x = fast_expm1(w)
+                y = 1.0_qp + x
+            else
+                y = fast_exp(w)
+                x = y - 1.0_qp
+            end if
+            far = merge(k, n + 1 - k, s*offset(k) <= 0.0_qp)
+            near = n + 1 - far
+            inverse_y = 1.0_qp/y
+            ev(far) = centre*y
+            em1v(far) = centre_m1 + centre*x
+            ev(near) = centre*inverse_y
+            em1v(near) = centre_m1 - centre*(x*inverse_y)
+        end do
+    end subroutine pair_exps
 
     !> sqrt(z) = z/sqrt(z) with the hardware-seeded inverse square root (within 3 ulp).
     elemental function root(z) result(r)
@@ -838,6 +1028,41 @@ contains
         r_over_x = e1
         if (present(log_slope)) log_slope = real(lambda, xp)/(real(delta, xp)*real(c(1), xp))
     end subroutine logarithmic_arch_terms
+
+    !> `logarithmic_arch_terms` on one panel: exp(-lambda) by node pairs (`pair_exps`)
+    !! where `power_panel_terms` takes them for n = 2 (the same forms), else node by node.
+    pure subroutine logarithmic_panel_terms(self, c, side, mid, offset, lambda, delta, q, &
+                                            one_minus_q, q_over_v, r_over_x, root_q, &
+                                            log_slope)
+        class(logarithmic_law), intent(in) :: self
+        real(qp), intent(in) :: c(8), mid
+        integer, intent(in) :: side
+        real(qp), intent(in) :: offset(:), lambda(:), delta(:)
+        real(qp), intent(out) :: q(:), one_minus_q(:), q_over_v(:), r_over_x(:), root_q(:)
+        real(xp), intent(out), optional :: log_slope(:)
+        real(qp), dimension(size(lambda)) :: e1, em1, e2
+        if (.not. pair_terms_apply([c(1:2), 1.0_qp, 1.0_qp, c(5:8)], side, lambda, delta)) then
+            call default_panel_terms(self, c, side, mid, offset, lambda, delta, q, &
+                                     one_minus_q, q_over_v, r_over_x, root_q, log_slope)
+            return
+        end if
+        if (side == 1) then
+            call pair_exps(-1.0_qp, mid, offset, e1, em1)
+        else
+            call pair_exps(1.0_qp, mid, offset, e1, em1)
+            e1 = c(5)*e1
+            em1 = -(1.0_qp - e1)
+        end if
+        e2 = e1*e1
+        ! as logarithmic_arch_terms; 1 - exp(-2 lambda) = -em1 (2 + em1)
+        root_q = e1*root(delta*c(6))
+        q = root_q*root_q
+        one_minus_q = -em1*(2.0_qp + em1) + e2*lambda*c(6)
+        q_over_v = root_q*e1*c(7)
+        r_over_x = e1
+        if (present(log_slope)) log_slope = real(lambda, xp)/(real(delta, xp)* &
+                                                              real(c(1), xp))
+    end subroutine logarithmic_panel_terms
 
     pure function logarithmic_inverse_speed(self, delta) result(w)
         class(logarithmic_law), intent(in) :: self
