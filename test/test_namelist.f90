@@ -197,6 +197,21 @@ contains
         end do
         call check(mismatches == 0, '4000 random decimals (e, d, q exponents, 1e-4500 '// &
                    'to 1e4500) convert to the bits read(text, *) gives')
+        ! the fast path (up to 34 significant digits, decimal exponent within 48) and its
+        ! edges: 1 to 40 digits, leading and trailing zeros, the point anywhere,
+        ! exponents -70 .. 70 (some beyond the reach, some with more than 34 digits)
+        mismatches = 0
+        do k = 1, 60000
+            text = random_decimal()
+            call real_from_text(trim(text), mine, status)
+            read (text, *, iostat=ios) reference
+            if (status /= text_ok .or. ios /= 0 .or. .not. same_bits(mine, reference)) then
+                mismatches = mismatches + 1
+                if (mismatches < 4) print '(3x,a)', 'differs: '//trim(text)
+            end if
+        end do
+        call check(mismatches == 0, '60000 random decimals of 1 to 40 digits, exponents '// &
+                   '-70 to 70, convert to the bits read(text, *) gives (signed zeros too)')
         call real_from_text('0.1', mine, status)
         call check(mine == 0.1_qp .and. status == text_ok, '0.1 is the quad 0.1')
         call real_from_text('1.5+3', mine, status)
@@ -223,6 +238,47 @@ contains
             seed = mod(seed*48271_8, 2147483647_8)
             next = int(mod(seed, int(m, 8)))
         end function next
+        !> [sign] [zeros] digits [. digits] [zeros] [e exponent], 1 to 40 digits in all
+        function random_decimal() result(word)
+            character(len=64) :: word
+            integer :: digits, point, j, length
+            word = ''
+            length = 0
+            if (next(3) == 0) call add(word, length, '-')
+            if (next(4) == 0) call add(word, length, repeat('0', 1 + next(3)))
+            digits = 1 + next(40)
+            point = next(digits + 2)
+            do j = 1, digits
+                if (j == point) call add(word, length, '.')
+                if (next(6) == 0) then
+                    call add(word, length, '0')
+                else
+                    call add(word, length, achar(iachar('0') + next(10)))
+                end if
+            end do
+            if (next(4) == 0) call add(word, length, repeat('0', 1 + next(5)))
+            if (next(3) /= 0) then
+                call add(word, length, 'e')
+                call add(word, length, trim(adjustl(integer_word(next(141) - 70))))
+            end if
+        end function random_decimal
+        subroutine add(word, length, piece)
+            character(len=*), intent(inout) :: word
+            integer, intent(inout) :: length
+            character(len=*), intent(in) :: piece
+            word(length + 1:length + len(piece)) = piece
+            length = length + len(piece)
+        end subroutine add
+        function integer_word(i) result(w)
+            integer, intent(in) :: i
+            character(len=12) :: w
+            write (w, '(i0)') i
+        end function integer_word
+        logical function same_bits(a, b)
+            real(qp), intent(in) :: a, b
+            same_bits = transfer(a, 0_8) == transfer(b, 0_8) .and. &
+                        all(transfer(a, [0_8, 0_8]) == transfer(b, [0_8, 0_8]))
+        end function same_bits
         logical function malformed(word)
             character(len=*), intent(in) :: word
             integer :: s
