@@ -351,17 +351,17 @@ contains
         integer, intent(in) :: slot, row                !! where the lines go
         type(endpoint_solution), intent(in) :: solution !! the solved row
         character(len=csv_row_length) :: line
-        integer :: length
+        integer :: length, ends(8)
         if (stream%csv) then
             call csv_row_into(solution, stream%csv_lines(row, slot), &
-                              stream%csv_lengths(row, slot))
+                              stream%csv_lengths(row, slot), ends)
             if (stream%nml) call namelist_lines(stream%csv_lines(row, slot) &
-                                                (1:stream%csv_lengths(row, slot)), &
+                                                (1:stream%csv_lengths(row, slot)), ends, &
                                                 stream%nml_lines(:, row, slot), &
                                                 stream%nml_lengths(:, row, slot))
         else if (stream%nml) then
-            call csv_row_into(solution, line, length)
-            call namelist_lines(line(1:length), stream%nml_lines(:, row, slot), &
+            call csv_row_into(solution, line, length, ends)
+            call namelist_lines(line(1:length), ends, stream%nml_lines(:, row, slot), &
                                 stream%nml_lengths(:, row, slot))
         end if
     end subroutine format_stream_row
@@ -370,15 +370,15 @@ contains
     !! `namelist_columns`) from its CSV row `rho,psi,arch,R,s,t,steps,status` (the same
     !! variables in the same order): `  x,`, `  0,` for an empty field, `  "word",` for
     !! arch and status.
-    pure subroutine namelist_lines(row, lines, lengths)
+    pure subroutine namelist_lines(row, ends, lines, lengths)
         character(len=*), intent(in) :: row             !! the CSV row
+        integer, intent(in) :: ends(:)                  !! its fields' ends (`csv_row_into`)
         character(len=*), intent(inout) :: lines(:)     !! value_line_length long
         integer, intent(out) :: lengths(:)              !! characters used
         integer :: k, start, finish, n
         start = 1
         do k = 1, size(namelist_columns)
-            finish = index(row(start:), ',') + start - 2
-            if (finish < start - 1) finish = len(row)        ! the last field
+            finish = ends(k)
             n = finish - start + 1
             if (any(namelist_columns(k) == [value_arch, value_status])) then
                 lines(k)(1:3) = '  "'
@@ -522,21 +522,33 @@ contains
     end subroutine put_quote
 
     !> `csv_row` into a fixed-length line, without allocation: line(1:length).
-    pure subroutine csv_row_into(solution, line, length)
+    pure subroutine csv_row_into(solution, line, length, ends)
         type(endpoint_solution), intent(in) :: solution !! the solved endpoint
         character(len=*), intent(inout) :: line         !! csv_row_length long
         integer, intent(out) :: length                  !! characters used
+        !> where each of the 8 fields ends (its comma's position - 1; the last: length)
+        integer, intent(out), optional :: ends(:)
+        integer :: fields(8)
         length = 0
         call put_value(.true., solution%rho, line, length)
+        fields(1) = length - 1
         call put_value(.true., solution%psi, line, length)
+        fields(2) = length - 1
         call put_word(arch_word_fixed(solution%arch), line, length)
+        fields(3) = length - 1
         call put_value(solution%has_apse_radius, solution%apse_radius, line, length)
+        fields(4) = length - 1
         call put_value(solution%has_arclength, solution%arclength, line, length)
+        fields(5) = length - 1
         call put_value(solution%has_time, solution%time, line, length)
+        fields(6) = length - 1
         call put_integer(solution%steps, line, length)
         call put_word(',', line, length)
+        fields(7) = length - 1
         call put_word(status_word_fixed(solution%status), line, length)
         length = length - 1          ! no comma after the last field
+        fields(8) = length
+        if (present(ends)) ends(:8) = fields
     end subroutine csv_row_into
 
     !> A CSV field and its comma: the value's 36 digits, or nothing when it does not exist.
@@ -575,7 +587,8 @@ contains
         integer :: used
         used = len_trim(word)
         if (word == ',') used = 0
-        line(length + 1:length + used + 1) = word(1:used)//','
+        line(length + 1:length + used) = word(1:used)
+        line(length + used + 1:length + used + 1) = ','
         length = length + used + 1
     end subroutine put_word
 
