@@ -2419,13 +2419,16 @@ contains
                     ! second half-arch: log((limit - Upsilon)/(limit - psi)) is nearly
                     ! linear in y next to the sector's edge (power laws: limit - Upsilon
                     ! ~ C R^(n-1), R-bar down to 1e-1000 and below): on past its tangent's
-                    ! root at this probe where that is further; the probe (f > 0) the
-                    ! bracket's upper end
+                    ! root at this probe where that is further; the probe the bracket's
+                    ! upper end where f > 0 is sure (well above the rough rounding)
                     tangent = real(lo, real64) - f_lo/lo_slope
                     if (ieee_is_finite(tangent)) next = min(next, real(tangent - 2.0_real64 &
                         - 0.25_real64*(real(lo, real64) - tangent), qp))
-                    hi = lo
-                    f_hi = f_lo
+                    if (real(f_lo, xp) > 4.0_xp*residual_noise(prob, real(f_lo, xp), &
+                                                               .true.)) then
+                        hi = lo
+                        f_hi = f_lo
+                    end if
                 end if
             end do
             below = .not. f_lo < 0.0_real64
