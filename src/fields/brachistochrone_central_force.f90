@@ -1978,7 +1978,13 @@ contains
         if (.not. prob%use_u) slope_next = slope_next/x0
         if (.not. (error <= 1.0e-35_qp*max(abs(x), floor) .or. (.not. prob%use_u .and. &
                    error*abs(slope_next*x0) <= 1.0e-35_qp*prob%psi .and. &
-                   error*abs(real(slopes(2), qp)*lambda_slope) <= 1.0e-35_qp*abs(s)))) return
+                   error*abs(real(slopes(2), qp)*lambda_slope) <= 1.0e-35_qp*abs(s)))) then
+            ! not certified: next to the sector's edge the next point by Newton on
+            ! log(limit - Upsilon), nearly linear in log R there (`log_form_point`)
+            if (.not. prob%use_u .and. prob%form == 2) &
+                x_next = log_form_point(prob, x0, angle, slope_next*x0, lo, hi, x)
+            return
+        end if
         if (.not. abs(dx*lambda_slope*real(slopes(4), qp)) <= eps_qp*abs(s)) return
         solution%arclength = s + real(slopes(2), qp)*lambda_slope*dx
         solution%time = t - model%law%conserved(a%c)*f
@@ -1995,6 +2001,29 @@ contains
         solution%status = status_ok
         done = .true.
     end subroutine final_step
+
+    !> The Newton point in R from x0 (the unknown R, second half-arch) on
+    !! F = log((limit - Upsilon)/(limit - psi)) in y = log R, Upsilon = angle at x0 with
+    !! d Upsilon/dy = upsilon_slope: next to the sector's edge limit - Upsilon ~ C R^(n-1)
+    !! (power laws), F is nearly linear in y and its Newton step far more accurate than
+    !! Upsilon's (whose curvature in y is about n - 1); `fallback` where F is not defined
+    !! or the point leaves (lo, hi). Only a next iterate: the certified step is
+    !! `final_step`'s own.
+    pure function log_form_point(prob, x0, angle, upsilon_slope, lo, hi, fallback) &
+        result(x)
+        type(endpoint_problem), intent(in) :: prob
+        real(qp), intent(in) :: x0, angle, upsilon_slope, lo, hi, fallback
+        real(qp) :: x
+        real(qp) :: deficit, dy
+        x = fallback
+        deficit = prob%limit - angle
+        if (.not. (deficit > 0.0_qp .and. prob%limit - prob%psi > 0.0_qp .and. &
+                   upsilon_slope /= 0.0_qp)) return
+        dy = log(deficit/(prob%limit - prob%psi))*deficit/upsilon_slope
+        if (.not. ieee_is_finite(dy)) return
+        dy = x0 + x0*expm1_qp(dy)
+        if (dy > lo .and. dy < hi) x = dy
+    end function log_form_point
 
     !> The quad-precision phase from the double phase's root x0 and slope (of the
     !! double phase's form): Newton, then secant steps on Upsilon - psi, each a full
@@ -2349,6 +2378,8 @@ contains
         real(real64), intent(out) :: slope_hi
         real(real64) :: f_half, theta_half, scaled, shift, upsilon_slope
         real(xp) :: theta_xp_half, slope_xp, shift_xp
+        real(qp) :: top, next
+        real(real64) :: lo_slope, tangent
         integer :: probe
         below = .false.
         prob%use_u = .true.
@@ -2376,11 +2407,29 @@ contains
             ! (Upsilon at R = rho/2 as above: the sign the branch was chosen by)
             f_hi = form_of(real(theta_half, qp))
             lo = hi
+            top = hi
+            next = hi - 8.0_qp
             do probe = 1, 40
-                lo = max(lowest_log_r, hi - 4.0_qp*2.0_qp**probe)
-                f_lo = bracket_residual(lo)
+                lo = max(lowest_log_r, next)
+                call bracket_residual(lo, f_lo, lo_slope)
                 steps = steps + 1
                 if (f_lo < 0.0_real64 .or. lo == lowest_log_r) exit
+                next = top - 4.0_qp*2.0_qp**(probe + 1)
+                if (prob%form == 2 .and. lo_slope > 0.0_real64) then
+                    ! second half-arch: log((limit - Upsilon)/(limit - psi)) is nearly
+                    ! linear in y next to the sector's edge (power laws: limit - Upsilon
+                    ! ~ C R^(n-1), R-bar down to 1e-1000 and below): on past its tangent's
+                    ! root at this probe where that is further; the probe the bracket's
+                    ! upper end where f > 0 is sure (well above the rough rounding)
+                    tangent = real(lo, real64) - f_lo/lo_slope
+                    if (ieee_is_finite(tangent)) next = min(next, real(tangent - 2.0_real64 &
+                        - 0.25_real64*(real(lo, real64) - tangent), qp))
+                    if (real(f_lo, xp) > 4.0_xp*residual_noise(prob, real(f_lo, xp), &
+                                                               .true.)) then
+                        hi = lo
+                        f_hi = f_lo
+                    end if
+                end if
             end do
             below = .not. f_lo < 0.0_real64
         else
@@ -2404,18 +2453,22 @@ contains
             end select
         end if
     contains
-        !> The residual at y = log R: a rough early evaluation (with the tables) for laws
-        !! with hardware terms, else `residual64`.
-        pure real(real64) function bracket_residual(y)
+        !> The residual f at y = log R and (laws with hardware terms, else 0) its slope:
+        !! a rough early evaluation (with the tables) for laws with hardware terms, else
+        !! `residual64`.
+        pure subroutine bracket_residual(y, f, y_slope)
             real(qp), intent(in) :: y
-            real(xp) :: f, slope
+            real(real64), intent(out) :: f, y_slope
+            real(xp) :: f_xp, slope
+            y_slope = 0.0_real64
             if (self%law%has_terms_xp()) then
-                call residual_xp(self, prob, real(y, xp), .true., f, slope)
-                bracket_residual = real(f, real64)
+                call residual_xp(self, prob, real(y, xp), .true., f_xp, slope)
+                f = real(f_xp, real64)
+                y_slope = real(slope, real64)
             else
-                bracket_residual = residual64(self, prob, y)
+                f = residual64(self, prob, y)
             end if
-        end function bracket_residual
+        end subroutine bracket_residual
 
         !> Upsilon - psi in the problem's form.
         pure real(real64) function form_of(upsilon)
