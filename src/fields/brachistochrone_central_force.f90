@@ -273,9 +273,9 @@ contains
         type(central_force_model), intent(inout) :: model
         real(qp) :: points(table_points, table_pieces)
         real(qp) :: values(table_points, table_pieces, 5), direct(5), table(5), z, width
-        real(qp) :: lower, upper, big_r, sizes(5)
+        real(qp) :: lower, upper
         real(qp), parameter :: slope_noise = real(epsilon(1.0_xp), qp)
-        integer :: k, piece, m, side
+        integer :: piece, m, side
         logical :: positive
         lower = log(table_low)
         upper = log(table_high)
@@ -307,17 +307,7 @@ contains
                 do m = 1, 5
                     call whole_value(model, m, z, table(m))
                 end do
-                ! sizes: Theta, and what the S and T corrections (times R) are added to
-                ! where the tables are used (s >= 1 - R, t >= t0(R): `table_sums`)
-                big_r = exp(-exp(z))
-                sizes(1) = direct(1)
-                sizes(2) = max(direct(2), -expm1_qp(-exp(z))/big_r)
-                sizes(3) = max(direct(3), fall_piece(model, 0.0_qp, exp(z))/big_r)
-                sizes(4) = abs(direct(4))
-                sizes(5) = abs(direct(5)) + direct(2)
-                if (.not. (all(abs(table(1:3) - direct(1:3)) <= 8.0_qp*eps_qp*sizes(1:3)) &
-                           .and. all(abs(table(4:5) - direct(4:5)) <= &
-                                     4.0_qp*slope_noise*sizes(4:5)))) &
+                if (.not. table_agrees(model, z, direct, table)) &
                     model%whole_ok(piece) = .false.
             end do
         end do
@@ -467,9 +457,9 @@ contains
     subroutine build_far_tables(model)
         type(central_force_model), intent(inout) :: model
         real(qp) :: points(far_points, far_pieces), values(far_points, far_pieces, 5)
-        real(qp) :: direct(5), table(5), sizes(5), z, width, lower, upper, big_r
+        real(qp) :: direct(5), table(5), z, width, lower, upper
         real(qp), parameter :: slope_noise = real(epsilon(1.0_xp), qp)
-        integer :: k, piece, m, side
+        integer :: piece, m, side
         lower = log(table_high)
         upper = log(far_high)
         points = chebyshev_points(lower, upper, far_pieces, far_points)
@@ -492,17 +482,29 @@ contains
                 do m = 1, 5
                     call far_value(model, m, z, table(m))
                 end do
-                big_r = exp(-exp(z))
-                sizes = [direct(1), max(direct(2), -expm1_qp(-exp(z))/big_r), &
-                         max(direct(3), fall_piece(model, 0.0_qp, exp(z))/big_r), &
-                         abs(direct(4)), abs(direct(5)) + direct(2)]
-                if (.not. (all(abs(table(1:3) - direct(1:3)) <= 8.0_qp*eps_qp*sizes(1:3)) &
-                           .and. all(abs(table(4:5) - direct(4:5)) <= &
-                                     4.0_qp*slope_noise*sizes(4:5)))) &
+                if (.not. table_agrees(model, z, direct, table)) &
                     model%far_ok(piece) = .false.
             end do
         end do
     end subroutine build_far_tables
+
+    !> A table's five values at z = log Lambda against the quadrature's (`whole_direct`):
+    !! the values within 8 roundings of their sizes (Theta itself; for the S and T
+    !! corrections, times R, what they are added to where the tables are used: s >= 1 - R,
+    !! t >= t0(R), `table_sums`) and the slopes within 4 roundings of the hardware kind.
+    pure function table_agrees(model, z, direct, table) result(agrees)
+        type(central_force_model), intent(in) :: model
+        real(qp), intent(in) :: z, direct(5), table(5)
+        logical :: agrees
+        real(qp), parameter :: slope_noise = real(epsilon(1.0_xp), qp)
+        real(qp) :: sizes(5), big_r
+        big_r = exp(-exp(z))
+        sizes = [direct(1), max(direct(2), -expm1_qp(-exp(z))/big_r), &
+                 max(direct(3), fall_piece(model, 0.0_qp, exp(z))/big_r), &
+                 abs(direct(4)), abs(direct(5)) + direct(2)]
+        agrees = all(abs(table(1:3) - direct(1:3)) <= 8.0_qp*eps_qp*sizes(1:3)) .and. &
+                 all(abs(table(4:5) - direct(4:5)) <= 4.0_qp*slope_noise*sizes(4:5))
+    end function table_agrees
 
     !> The piece of the far tables holding z = log Lambda, if it passed its check.
     pure function far_piece(model, z) result(piece)

@@ -427,25 +427,15 @@ contains
         real(xp), intent(in) :: big_r, one_minus_big_r, upper
         logical, intent(in) :: from_apse
         real(xp) :: sums(2)
-        real(xp) :: v, v2, jacobian, c, s, c2, z, q, theta_term, inverse
+        real(xp) :: v, jacobian, c, s, c2, z, q, theta_term, inverse
         integer :: k
         sums = 0.0_xp
         if (upper <= 0.0_xp) return
         associate (rule => model%gauss(j))
         do k = 1, rule%n
             v = upper*rule%offset_xp(k)
-            v2 = v*v
-            jacobian = 1.0_xp/(1.0_xp + v2)
-            if (from_apse) then
-                c = (1.0_xp - v2)*jacobian
-                s = (v + v)*jacobian
-            else
-                c = (v + v)*jacobian
-                s = (1.0_xp - v2)*jacobian
-            end if
-            c2 = c*c
-            z = big_r + one_minus_big_r*c2
-            q = z*(z + one_minus_big_r) + one_minus_big_r
+            call node_geometry_xp(v, big_r, one_minus_big_r, from_apse, jacobian, c, s, &
+                                  c2, z, q)
             inverse = 1.0_xp/sqrt(q)
             theta_term = rule%double_weight_xp(k)*jacobian*c2*inverse
             sums(1) = sums(1) + theta_term
@@ -779,19 +769,9 @@ contains
         logical, intent(in) :: from_apse, want_derivative, want_length_time
         real(xp), intent(out) :: root_q
         real(xp), intent(inout) :: slopes(2)
-        real(xp) :: v2, jacobian, c, s, c2, z, inverse, theta_term, s_big_q, inverse_d
-        v2 = v*v
-        jacobian = 1.0_xp/(1.0_xp + v2)
-        if (from_apse) then
-            c = (1.0_xp - v2)*jacobian
-            s = (v + v)*jacobian
-        else
-            c = (v + v)*jacobian
-            s = (1.0_xp - v2)*jacobian
-        end if
-        c2 = c*c
-        z = big_r + one_minus_big_r*c2
-        root_q = sqrt(z*(z + one_minus_big_r) + one_minus_big_r)
+        real(xp) :: jacobian, c, s, c2, z, q, inverse, theta_term, s_big_q, inverse_d
+        call node_geometry_xp(v, big_r, one_minus_big_r, from_apse, jacobian, c, s, c2, z, q)
+        root_q = sqrt(q)
         if (.not. want_derivative) return
         inverse = 1.0_xp/root_q
         theta_term = weight*c2*inverse*jacobian
@@ -804,6 +784,29 @@ contains
                         *(1.0_xp + s_big_q + s_big_q)*(inverse*inverse)*inverse_d
         end if
     end subroutine node_xp
+
+    !> The node's geometry in hardware precision: jacobian 1/(1 + v^2) of the half-angle
+    !! variable v, c = cos lambda and s = sin lambda (swapped from the start), c^2,
+    !! z = R + (1 - R) c^2 and q = z (z + 1 - R) + 1 - R.
+    pure subroutine node_geometry_xp(v, big_r, one_minus_big_r, from_apse, jacobian, c, &
+                                     s, c2, z, q)
+        real(xp), intent(in) :: v, big_r, one_minus_big_r
+        logical, intent(in) :: from_apse
+        real(xp), intent(out) :: jacobian, c, s, c2, z, q
+        real(xp) :: v2
+        v2 = v*v
+        jacobian = 1.0_xp/(1.0_xp + v2)
+        if (from_apse) then
+            c = (1.0_xp - v2)*jacobian
+            s = (v + v)*jacobian
+        else
+            c = (v + v)*jacobian
+            s = (1.0_xp - v2)*jacobian
+        end if
+        c2 = c*c
+        z = big_r + one_minus_big_r*c2
+        q = z*(z + one_minus_big_r) + one_minus_big_r
+    end subroutine node_geometry_xp
 
     !> The d/dR integrands of `node_xp` in binary128, added to the raw sums 2 and 5.
     pure subroutine add_slopes_qp(big_r, one_minus_big_r, c, s, c2, root_q, theta_term, &
