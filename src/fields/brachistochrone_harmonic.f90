@@ -79,7 +79,7 @@
 !! pi sqrt(R/g) = 2531.7 s = 42.2 min (Saitoh's "roughly 41 min" is too short by 1.2 min;
 !! 41 min would need R = 6000 km).
 module brachistochrone_harmonic
-    use brachistochrone_kinds, only: qp, pi, eps_qp
+    use brachistochrone_kinds, only: qp, pi, eps_qp, xp
     use brachistochrone_status, only: status_ok, status_not_finite, status_invalid_argument, &
                                       status_rho_out_of_range, status_psi_out_of_range, &
                                       status_latitude_out_of_range, &
@@ -114,6 +114,11 @@ module brachistochrone_harmonic
     integer, parameter :: max_series_terms = 60
     !> Limit on root-finder evaluations.
     integer, parameter :: max_steps = 100
+    !> Limit on the evaluations of the early phase in hardware precision (`xp`).
+    integer, parameter :: max_early_steps = 40
+    !> The early phase stops when its Newton step is below this, relative to beta: near
+    !! the rounding level of `xp` (1.1e-19 on x86-64; 8 eps where `xp` is double).
+    real(xp), parameter :: early_tolerance = max(1.0e-17_xp, 8.0_xp*epsilon(1.0_xp))
     !> Gauss-Legendre nodes per panel of the tautochrone integral.
     integer, parameter :: tautochrone_nodes = 20
     !> Relative tolerance of the tautochrone quadrature, in eps. The panel test
@@ -460,7 +465,7 @@ contains
         real(qp), intent(in) :: angle   !! theta_B in radians, 0 <= theta_B <= pi
         type(harmonic_tunnel) :: tunnel
         type(endpoint_angle_function) :: fun
-        real(qp) :: apse_angle, across, f_lo, f_hi, x0, beta, rho_m, d, h
+        real(qp) :: apse_angle, across, f_lo, f_hi, x0, start, beta, rho_m, d, h
         integer :: status
 
         tunnel%radius = radius
@@ -501,7 +506,8 @@ contains
                 x0 = 0.5_qp*pi*(pi - angle)/(pi - apse_angle)
             end if
             f_hi = apse_angle - angle
-            call newton_bracketed(fun, 0.0_qp, f_lo, 0.5_qp*pi, f_hi, x0, 4.0_qp*eps_qp, &
+            call early_beta(radius, angle, fun%side, x0, start)
+            call newton_bracketed(fun, 0.0_qp, f_lo, 0.5_qp*pi, f_hi, start, 4.0_qp*eps_qp, &
                                   0.0_qp, max_steps, beta, tunnel%steps, status)
             call beta_to_rho(radius, beta, rho_m, d)
             h = atan2(across, fun%side*radius*cos(beta))
@@ -542,6 +548,105 @@ contains
              + (along*across/(d_plus*r2) - h)*self%radius*cos(x)
         status = status_ok
     end subroutine endpoint_angle_evaluate
+
+    ! ---------------------------------------------------------------- early phase (xp)
+
+    !> The early phase of `solve_harmonic_endpoint`: a safeguarded Newton iteration in
+    !! hardware precision (`xp`) for beta in [0, pi/2] (same signs at the ends as the
+    !! binary128 run), from start until its step is below `early_tolerance` relative, or
+    !! after `max_early_steps` (then the last iterate). Its result only starts the
+    !! binary128 `newton_bracketed`, which certifies the root as before; it takes one or
+    !! two binary128 evaluations instead of five to eight.
+    pure subroutine early_beta(radius, angle, side, start, beta)
+        real(qp), intent(in) :: radius, angle, side !! r_B, theta_B, +1 or -1
+        real(qp), intent(in) :: start               !! first iterate
+        real(qp), intent(out) :: beta               !! the approximate root
+        real(xp) :: r, theta, s, lo, hi, x, x_new, f, df
+        logical :: increasing
+        integer :: k
+        r = real(radius, xp)
+        theta = real(angle, xp)
+        s = real(side, xp)
+        lo = 0.0_xp
+        hi = real(0.5_qp*pi, xp)
+        increasing = side > 0.0_qp
+        x = min(max(real(start, xp), lo), hi)
+        do k = 1, max_early_steps
+            call endpoint_angle_xp(r, theta, s, x, f, df)
+            if (f == 0.0_xp) exit
+            if ((f < 0.0_xp) .eqv. increasing) then
+                lo = x
+            else
+                hi = x
+            end if
+            x_new = x - f/df
+            if (.not. (x_new > lo .and. x_new < hi)) then
+                if (abs(x_new - x) <= early_tolerance*abs(x)) exit
+                x_new = 0.5_xp*(lo + hi)
+            end if
+            if (abs(x_new - x) <= early_tolerance*abs(x_new)) then
+                x = x_new
+                exit
+            end if
+            x = x_new
+            if (hi - lo <= early_tolerance*abs(x)) exit
+        end do
+        beta = real(x, qp)
+    end subroutine early_beta
+
+    !> `endpoint_angle_evaluate` in hardware precision: theta(B) - theta_B and its
+    !! derivative in beta, from r_B, theta_B, the side and beta.
+    pure subroutine endpoint_angle_xp(radius, angle, side, beta, f, df)
+        real(xp), intent(in) :: radius, angle, side, beta
+        real(xp), intent(out) :: f, df
+        real(xp), parameter :: quarter_pi = real(0.25_qp*pi, xp)
+        real(xp) :: rho_m, d, d_plus, across, along, h, r2, px, py
+        rho_m = radius*sin(beta)
+        d = (1.0_xp - radius) + 2.0_xp*radius*sin(quarter_pi - 0.5_xp*beta)**2
+        d_plus = d*(1.0_xp + rho_m)
+        across = sqrt((1.0_xp - radius)*(1.0_xp + radius))
+        along = side*radius*cos(beta)
+        h = atan2(across, along)
+        call position_kernel_xp(h, across/sqrt(d_plus), along/sqrt(d_plus), rho_m, d, px, py)
+        f = atan2(py, px) - angle
+        r2 = radius**2
+        df = (rho_m*across**2/r2)*(side*across*rho_m/d_plus) &
+             + (along*across/(d_plus*r2) - h)*radius*cos(beta)
+    end subroutine endpoint_angle_xp
+
+    !> `position_kernel` in hardware precision (the same branches, so that theta keeps
+    !! its relative precision as beta -> 0).
+    pure subroutine position_kernel_xp(h, sin_h, cos_h, rho_m, d, x, y)
+        real(xp), intent(in) :: h, sin_h, cos_h, rho_m, d
+        real(xp), intent(out) :: x, y
+        real(xp) :: even, odd, power, h2, term, total, plus2, minus2, sign
+        integer :: k
+        x = cos_h*cos(rho_m*h) + rho_m*sin_h*sin(rho_m*h)
+        if (h <= real(series_limit, xp)) then
+            even = 0.0_xp
+            odd = 1.0_xp
+            power = h
+            h2 = h*h
+            plus2 = (1.0_xp + rho_m)**2
+            minus2 = d*d
+            total = 0.0_xp
+            sign = 1.0_xp
+            do k = 1, max_series_terms
+                even = plus2*even + 4.0_xp*rho_m*odd
+                odd = odd*minus2
+                power = power*h2/real((2*k)*(2*k + 1), xp)
+                term = even*power
+                total = total + sign*term
+                if (term <= 0.125_xp*epsilon(1.0_xp)*abs(total)) exit
+                sign = -sign
+            end do
+            y = 0.5_xp*d*(1.0_xp + rho_m)*total
+        else if (rho_m <= 0.5_xp) then
+            y = rho_m*sin_h*cos(rho_m*h) - cos_h*sin(rho_m*h)
+        else
+            y = (1.0_xp - d*sin_h**2)*sin(d*h) - d*sin_h*cos_h*cos(d*h)
+        end if
+    end subroutine position_kernel_xp
 
     ! ---------------------------------------------------------------- tautochrone
 
