@@ -465,7 +465,7 @@ contains
         real(qp), intent(in) :: angle   !! theta_B in radians, 0 <= theta_B <= pi
         type(harmonic_tunnel) :: tunnel
         type(endpoint_angle_function) :: fun
-        real(qp) :: apse_angle, across, f_lo, f_hi, x0, start, beta, rho_m, d, h
+        real(qp) :: apse_angle, across, f_lo, f_hi, x0, start, curvature, beta, rho_m, d, h
         integer :: status
 
         tunnel%radius = radius
@@ -506,9 +506,9 @@ contains
                 x0 = 0.5_qp*pi*(pi - angle)/(pi - apse_angle)
             end if
             f_hi = apse_angle - angle
-            call early_beta(radius, angle, fun%side, x0, start)
+            call early_beta(radius, angle, fun%side, x0, start, curvature)
             call newton_bracketed(fun, 0.0_qp, f_lo, 0.5_qp*pi, f_hi, start, 4.0_qp*eps_qp, &
-                                  0.0_qp, max_steps, beta, tunnel%steps, status)
+                                  0.0_qp, max_steps, beta, tunnel%steps, status, curvature)
             call beta_to_rho(radius, beta, rho_m, d)
             h = atan2(across, fun%side*radius*cos(beta))
             call complete_tunnel(tunnel, rho_m, d, h)
@@ -556,23 +556,31 @@ contains
     !! binary128 run), from start until its step is below `early_tolerance` relative, or
     !! after `max_early_steps` (then the last iterate). Its result only starts the
     !! binary128 `newton_bracketed`, which certifies the root as before; it takes one or
-    !! two binary128 evaluations instead of five to eight.
-    pure subroutine early_beta(radius, angle, side, start, beta)
+    !! two binary128 evaluations instead of three to eight. Also K = |f''/(2 f')| near the
+    !! root, twice its secant estimate from f' at the last iterate and at a point
+    !! 1e-4 min(beta, sqrt(1 - r_B^2)) inside (the scales on which f'' varies), for the
+    !! binary128 run to stop after a step dx with 4 K dx^2 below its tolerance
+    !! (0: unknown).
+    pure subroutine early_beta(radius, angle, side, start, beta, curvature)
         real(qp), intent(in) :: radius, angle, side !! r_B, theta_B, +1 or -1
         real(qp), intent(in) :: start               !! first iterate
         real(qp), intent(out) :: beta               !! the approximate root
-        real(xp) :: r, theta, s, lo, hi, x, x_new, f, df
+        real(qp), intent(out) :: curvature          !! K estimate, 0 if unknown
+        real(xp), parameter :: hi_end = real(0.5_qp*pi, xp)
+        real(xp) :: r, theta, s, lo, hi, x, x_new, f, df, x_eval, df_eval, delta, df_near
         logical :: increasing
         integer :: k
         r = real(radius, xp)
         theta = real(angle, xp)
         s = real(side, xp)
         lo = 0.0_xp
-        hi = real(0.5_qp*pi, xp)
+        hi = hi_end
         increasing = side > 0.0_qp
         x = min(max(real(start, xp), lo), hi)
         do k = 1, max_early_steps
             call endpoint_angle_xp(r, theta, s, x, f, df)
+            x_eval = x
+            df_eval = df
             if (f == 0.0_xp) exit
             if ((f < 0.0_xp) .eqv. increasing) then
                 lo = x
@@ -592,6 +600,11 @@ contains
             if (hi - lo <= early_tolerance*abs(x)) exit
         end do
         beta = real(x, qp)
+        delta = 1.0e-4_xp*max(min(x_eval, sqrt((1.0_xp - r)*(1.0_xp + r))), 1.0e-12_xp)
+        if (x_eval > 0.5_xp*hi_end) delta = -delta
+        call endpoint_angle_xp(r, theta, s, x_eval + delta, f, df_near)
+        curvature = real(abs(df_near - df_eval)/(abs(df_eval)*abs(delta)), qp)
+        if (.not. (curvature < huge(1.0_qp))) curvature = 0.0_qp
     end subroutine early_beta
 
     !> `endpoint_angle_evaluate` in hardware precision: theta(B) - theta_B and its
