@@ -507,8 +507,15 @@ contains
             end if
             f_hi = apse_angle - angle
             call early_beta(radius, angle, fun%side, x0, start, curvature)
-            call newton_bracketed(fun, 0.0_qp, f_lo, 0.5_qp*pi, f_hi, start, 4.0_qp*eps_qp, &
-                                  0.0_qp, max_steps, beta, tunnel%steps, status, curvature)
+            if (curvature > 0.0_qp) then
+                call newton_bracketed(fun, 0.0_qp, f_lo, 0.5_qp*pi, f_hi, start, &
+                                      4.0_qp*eps_qp, 0.0_qp, max_steps, beta, &
+                                      tunnel%steps, status, curvature)
+            else
+                call newton_bracketed(fun, 0.0_qp, f_lo, 0.5_qp*pi, f_hi, start, &
+                                      4.0_qp*eps_qp, 0.0_qp, max_steps, beta, &
+                                      tunnel%steps, status)
+            end if
             call beta_to_rho(radius, beta, rho_m, d)
             h = atan2(across, fun%side*radius*cos(beta))
             call complete_tunnel(tunnel, rho_m, d, h)
@@ -558,73 +565,86 @@ contains
     !! binary128 `newton_bracketed`, which certifies the root as before; it takes one or
     !! two binary128 evaluations instead of three to eight. Also K = |f''/(2 f')| near the
     !! root, twice its secant estimate from f' at the last iterate and at a point
-    !! 1e-4 min(beta, sqrt(1 - r_B^2)) inside (the scales on which f'' varies), for the
-    !! binary128 run to stop after a step dx with 4 K dx^2 below its tolerance
-    !! (0: unknown).
+    !! 1e-4 min(beta, sqrt(1 - r_B^2)) inside (the scales on which f'' varies) plus the
+    !! rounding of f' over that distance, for the binary128 run to stop after a step dx
+    !! with 4 K dx^2 below its tolerance (0: unknown, when the early phase did not
+    !! converge; then also beta = start).
     pure subroutine early_beta(radius, angle, side, start, beta, curvature)
         real(qp), intent(in) :: radius, angle, side !! r_B, theta_B, +1 or -1
         real(qp), intent(in) :: start               !! first iterate
         real(qp), intent(out) :: beta               !! the approximate root
         real(qp), intent(out) :: curvature          !! K estimate, 0 if unknown
         real(xp), parameter :: hi_end = real(0.5_qp*pi, xp)
-        real(xp) :: r, theta, s, lo, hi, x, x_new, f, df, x_eval, df_eval, delta, df_near
+        real(xp) :: r, gap, theta, s, lo, hi, x, x_new, f, df, x_eval, df_eval, delta, df_near
+        logical :: converged
         logical :: increasing
         integer :: k
         r = real(radius, xp)
+        gap = real(1.0_qp - radius, xp)
         theta = real(angle, xp)
         s = real(side, xp)
         lo = 0.0_xp
         hi = hi_end
         increasing = side > 0.0_qp
         x = min(max(real(start, xp), lo), hi)
+        beta = start
+        curvature = 0.0_qp
+        converged = .false.
         do k = 1, max_early_steps
-            call endpoint_angle_xp(r, theta, s, x, f, df)
+            call endpoint_angle_xp(r, gap, theta, s, x, f, df)
+            if (.not. (abs(f) < huge(f) .and. abs(df) < huge(df) .and. df /= 0.0_xp)) return
             x_eval = x
             df_eval = df
-            if (f == 0.0_xp) exit
+            converged = f == 0.0_xp
+            if (converged) exit
             if ((f < 0.0_xp) .eqv. increasing) then
                 lo = x
             else
                 hi = x
             end if
             x_new = x - f/df
-            if (.not. (x_new > lo .and. x_new < hi)) then
-                if (abs(x_new - x) <= early_tolerance*abs(x)) exit
-                x_new = 0.5_xp*(lo + hi)
-            end if
-            if (abs(x_new - x) <= early_tolerance*abs(x_new)) then
-                x = x_new
-                exit
-            end if
+            converged = abs(x_new - x) <= early_tolerance*abs(x)
+            if (converged .and. .not. (x_new > lo .and. x_new < hi)) exit
+            if (.not. (x_new > lo .and. x_new < hi)) x_new = 0.5_xp*(lo + hi)
             x = x_new
-            if (hi - lo <= early_tolerance*abs(x)) exit
+            if (converged) exit
         end do
+        ! a step cap or an underflow: the binary128 run starts from start, K unknown
+        if (.not. converged .or. x <= 0.0_xp) return
         beta = real(x, qp)
-        delta = 1.0e-4_xp*max(min(x_eval, sqrt((1.0_xp - r)*(1.0_xp + r))), 1.0e-12_xp)
+        delta = 1.0e-4_xp*min(x_eval, sqrt(gap*(1.0_xp + r)))
+        if (.not. (delta > 0.0_xp)) return
         if (x_eval > 0.5_xp*hi_end) delta = -delta
-        call endpoint_angle_xp(r, theta, s, x_eval + delta, f, df_near)
-        curvature = real(abs(df_near - df_eval)/(abs(df_eval)*abs(delta)), qp)
+        call endpoint_angle_xp(r, gap, theta, s, x_eval + delta, f, df_near)
+        ! plus what the rounding of f' (1e-17 relative at most) could hide
+        curvature = real((abs(df_near - df_eval)/abs(df_eval) + 1.0e-17_xp)/abs(delta), qp)
         if (.not. (curvature < huge(1.0_qp))) curvature = 0.0_qp
     end subroutine early_beta
 
     !> `endpoint_angle_evaluate` in hardware precision: theta(B) - theta_B and its
-    !! derivative in beta, from r_B, theta_B, the side and beta.
-    pure subroutine endpoint_angle_xp(radius, angle, side, beta, f, df)
-        real(xp), intent(in) :: radius, angle, side, beta
+    !! derivative in beta (0 where cancellation leaves it fewer than 5 digits), from r_B, 1 - r_B (from binary128: r_B may round to 1 in
+    !! `xp`), theta_B, the side and beta.
+    pure subroutine endpoint_angle_xp(radius, gap, angle, side, beta, f, df)
+        real(xp), intent(in) :: radius, gap, angle, side, beta
         real(xp), intent(out) :: f, df
         real(xp), parameter :: quarter_pi = real(0.25_qp*pi, xp)
-        real(xp) :: rho_m, d, d_plus, across, along, h, r2, px, py
+        real(xp) :: rho_m, d, d_plus, across, along, h, r2, px, py, lead, trail
         rho_m = radius*sin(beta)
-        d = (1.0_xp - radius) + 2.0_xp*radius*sin(quarter_pi - 0.5_xp*beta)**2
+        d = gap + 2.0_xp*radius*sin(quarter_pi - 0.5_xp*beta)**2
         d_plus = d*(1.0_xp + rho_m)
-        across = sqrt((1.0_xp - radius)*(1.0_xp + radius))
+        across = sqrt(gap*(1.0_xp + radius))
         along = side*radius*cos(beta)
         h = atan2(across, along)
         call position_kernel_xp(h, across/sqrt(d_plus), along/sqrt(d_plus), rho_m, d, px, py)
         f = atan2(py, px) - angle
         r2 = radius**2
-        df = (rho_m*across**2/r2)*(side*across*rho_m/d_plus) &
-             + (along*across/(d_plus*r2) - h)*radius*cos(beta)
+        lead = (rho_m*across**2/r2)*(side*across*rho_m/d_plus)
+        trail = along*across/(d_plus*r2)
+        df = lead + (trail - h)*radius*cos(beta)
+        ! as r_B -> 1 at small beta, trail - h ~ (1 - r_B^2)^(3/2) cancels: where more
+        ! than 14 digits are lost, df = 0 (the early phase then leaves it to binary128)
+        if (abs(df) < 1.0e-14_xp*(abs(lead) + (abs(trail) + abs(h))*radius*cos(beta))) &
+            df = 0.0_xp
     end subroutine endpoint_angle_xp
 
     !> `position_kernel` in hardware precision (the same branches, so that theta keeps
