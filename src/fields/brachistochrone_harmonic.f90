@@ -465,7 +465,7 @@ contains
         real(qp), intent(in) :: angle   !! theta_B in radians, 0 <= theta_B <= pi
         type(harmonic_tunnel) :: tunnel
         type(endpoint_angle_function) :: fun
-        real(qp) :: apse_angle, across, f_lo, f_hi, x0, start, curvature, beta, rho_m, d, h
+        real(qp) :: apse_angle, across, f_lo, f_hi, x0, beta, rho_m, d, h
         integer :: status
 
         tunnel%radius = radius
@@ -506,22 +506,31 @@ contains
                 x0 = 0.5_qp*pi*(pi - angle)/(pi - apse_angle)
             end if
             f_hi = apse_angle - angle
-            call early_beta(radius, angle, fun%side, x0, start, curvature)
-            if (curvature > 0.0_qp) then
-                call newton_bracketed(fun, 0.0_qp, f_lo, 0.5_qp*pi, f_hi, start, &
-                                      4.0_qp*eps_qp, 0.0_qp, max_steps, beta, &
-                                      tunnel%steps, status, curvature)
-            else
-                call newton_bracketed(fun, 0.0_qp, f_lo, 0.5_qp*pi, f_hi, start, &
-                                      4.0_qp*eps_qp, 0.0_qp, max_steps, beta, &
-                                      tunnel%steps, status)
-            end if
+            call solve_beta(fun, f_lo, f_hi, x0, beta, tunnel%steps, status)
             call beta_to_rho(radius, beta, rho_m, d)
             h = atan2(across, fun%side*radius*cos(beta))
             call complete_tunnel(tunnel, rho_m, d, h)
             tunnel%status = status
         end if
     end function solve_harmonic_endpoint
+
+    !> beta by `newton_bracketed` in binary128 on [0, pi/2], started by `early_beta`
+    !! (with its K when it converged; else from x0, K unknown, as without it).
+    pure subroutine solve_beta(fun, f_lo, f_hi, x0, beta, steps, status)
+        type(endpoint_angle_function), intent(in) :: fun
+        real(qp), intent(in) :: f_lo, f_hi, x0  !! f at beta = 0, pi/2; first guess
+        real(qp), intent(out) :: beta           !! the root
+        integer, intent(out) :: steps, status   !! binary128 evaluations, status
+        real(qp) :: start, curvature
+        call early_beta(fun%radius, fun%angle, fun%side, x0, start, curvature)
+        if (curvature > 0.0_qp) then
+            call newton_bracketed(fun, 0.0_qp, f_lo, 0.5_qp*pi, f_hi, start, 4.0_qp*eps_qp, &
+                                  0.0_qp, max_steps, beta, steps, status, curvature)
+        else
+            call newton_bracketed(fun, 0.0_qp, f_lo, 0.5_qp*pi, f_hi, start, 4.0_qp*eps_qp, &
+                                  0.0_qp, max_steps, beta, steps, status)
+        end if
+    end subroutine solve_beta
 
     !> rho_m = r sin(beta) and 1 - rho_m = (1 - r) + 2 r sin^2(pi/4 - beta/2).
     elemental subroutine beta_to_rho(radius, beta, rho_m, d)
@@ -622,8 +631,9 @@ contains
     end subroutine early_beta
 
     !> `endpoint_angle_evaluate` in hardware precision: theta(B) - theta_B and its
-    !! derivative in beta (0 where cancellation leaves it fewer than 5 digits), from r_B, 1 - r_B (from binary128: r_B may round to 1 in
-    !! `xp`), theta_B, the side and beta.
+    !! derivative in beta (0 where cancellation leaves it fewer than 5 digits), from
+    !! r_B, 1 - r_B (from binary128: r_B may round to 1 in `xp`), theta_B, the side
+    !! and beta.
     pure subroutine endpoint_angle_xp(radius, gap, angle, side, beta, f, df)
         real(xp), intent(in) :: radius, gap, angle, side, beta
         real(xp), intent(out) :: f, df
