@@ -5,7 +5,7 @@
 module test_harmonic
     use, intrinsic :: iso_fortran_env, only: output_unit
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_value, ieee_quiet_nan
-    use brachistochrone_kinds, only: qp, pi, eps_qp
+    use brachistochrone_kinds, only: qp, pi, eps_qp, xp
     use brachistochrone_status, only: status_ok, status_not_finite, status_invalid_argument, &
                                       status_rho_out_of_range, status_psi_out_of_range, &
                                       status_latitude_out_of_range, status_bad_planet
@@ -458,6 +458,8 @@ contains
             worst_position/eps_qp, worst_theta/eps_qp, worst_at_radius/eps_qp, &
             '; most Newton steps ', most_steps
         call check(failures == 0, 'every endpoint 0 < r_B <= 1, 0 < theta_B < pi solved')
+        call check(most_steps <= 2 .or. digits(1.0_xp) < 64, &
+                   'after the early phase in x87 extended, at most 2 binary128 evaluations')
         call check(wrong_arch == 0, 'before/after the deepest point as theta_B vs apse angle')
         call check(worst_position <= 4.0_qp*eps_qp, 'solutions pass through B (4 eps * R)')
         call check(worst_theta <= 16.0_qp*eps_qp, 'theta(phi_B) = theta_B (16 eps)')

@@ -79,7 +79,7 @@
 !! pi sqrt(R/g) = 2531.7 s = 42.2 min (Saitoh's "roughly 41 min" is too short by 1.2 min;
 !! 41 min would need R = 6000 km).
 module brachistochrone_harmonic
-    use brachistochrone_kinds, only: qp, pi, eps_qp
+    use brachistochrone_kinds, only: qp, pi, eps_qp, xp
     use brachistochrone_status, only: status_ok, status_not_finite, status_invalid_argument, &
                                       status_rho_out_of_range, status_psi_out_of_range, &
                                       status_latitude_out_of_range, &
@@ -114,6 +114,11 @@ module brachistochrone_harmonic
     integer, parameter :: max_series_terms = 60
     !> Limit on root-finder evaluations.
     integer, parameter :: max_steps = 100
+    !> Limit on the evaluations of the early phase in hardware precision (`xp`).
+    integer, parameter :: max_early_steps = 40
+    !> The early phase stops when its Newton step is below this, relative to beta: near
+    !! the rounding level of `xp` (1.1e-19 on x86-64; 8 eps where `xp` is double).
+    real(xp), parameter :: early_tolerance = max(1.0e-17_xp, 8.0_xp*epsilon(1.0_xp))
     !> Gauss-Legendre nodes per panel of the tautochrone integral.
     integer, parameter :: tautochrone_nodes = 20
     !> Relative tolerance of the tautochrone quadrature, in eps. The panel test
@@ -501,14 +506,31 @@ contains
                 x0 = 0.5_qp*pi*(pi - angle)/(pi - apse_angle)
             end if
             f_hi = apse_angle - angle
-            call newton_bracketed(fun, 0.0_qp, f_lo, 0.5_qp*pi, f_hi, x0, 4.0_qp*eps_qp, &
-                                  0.0_qp, max_steps, beta, tunnel%steps, status)
+            call solve_beta(fun, f_lo, f_hi, x0, beta, tunnel%steps, status)
             call beta_to_rho(radius, beta, rho_m, d)
             h = atan2(across, fun%side*radius*cos(beta))
             call complete_tunnel(tunnel, rho_m, d, h)
             tunnel%status = status
         end if
     end function solve_harmonic_endpoint
+
+    !> beta by `newton_bracketed` in binary128 on [0, pi/2], started by `early_beta`
+    !! (with its K when it converged; else from x0, K unknown, as without it).
+    pure subroutine solve_beta(fun, f_lo, f_hi, x0, beta, steps, status)
+        type(endpoint_angle_function), intent(in) :: fun
+        real(qp), intent(in) :: f_lo, f_hi, x0  !! f at beta = 0, pi/2; first guess
+        real(qp), intent(out) :: beta           !! the root
+        integer, intent(out) :: steps, status   !! binary128 evaluations, status
+        real(qp) :: start, curvature
+        call early_beta(fun%radius, fun%angle, fun%side, x0, start, curvature)
+        if (curvature > 0.0_qp) then
+            call newton_bracketed(fun, 0.0_qp, f_lo, 0.5_qp*pi, f_hi, start, 4.0_qp*eps_qp, &
+                                  0.0_qp, max_steps, beta, steps, status, curvature)
+        else
+            call newton_bracketed(fun, 0.0_qp, f_lo, 0.5_qp*pi, f_hi, start, 4.0_qp*eps_qp, &
+                                  0.0_qp, max_steps, beta, steps, status)
+        end if
+    end subroutine solve_beta
 
     !> rho_m = r sin(beta) and 1 - rho_m = (1 - r) + 2 r sin^2(pi/4 - beta/2).
     elemental subroutine beta_to_rho(radius, beta, rho_m, d)
@@ -542,6 +564,132 @@ contains
              + (along*across/(d_plus*r2) - h)*self%radius*cos(x)
         status = status_ok
     end subroutine endpoint_angle_evaluate
+
+    ! ---------------------------------------------------------------- early phase (xp)
+
+    !> The early phase of `solve_harmonic_endpoint`: a safeguarded Newton iteration in
+    !! hardware precision (`xp`) for beta in [0, pi/2] (same signs at the ends as the
+    !! binary128 run), from start until its step is below `early_tolerance` relative, or
+    !! after `max_early_steps` (then the last iterate). Its result only starts the
+    !! binary128 `newton_bracketed`, which certifies the root as before; it takes one or
+    !! two binary128 evaluations instead of three to eight. Also K = |f''/(2 f')| near the
+    !! root, twice its secant estimate from f' at the last iterate and at a point
+    !! 1e-4 min(beta, sqrt(1 - r_B^2)) inside (the scales on which f'' varies) plus the
+    !! rounding of f' over that distance, for the binary128 run to stop after a step dx
+    !! with 4 K dx^2 below its tolerance (0: unknown, when the early phase did not
+    !! converge; then also beta = start).
+    pure subroutine early_beta(radius, angle, side, start, beta, curvature)
+        real(qp), intent(in) :: radius, angle, side !! r_B, theta_B, +1 or -1
+        real(qp), intent(in) :: start               !! first iterate
+        real(qp), intent(out) :: beta               !! the approximate root
+        real(qp), intent(out) :: curvature          !! K estimate, 0 if unknown
+        real(xp), parameter :: hi_end = real(0.5_qp*pi, xp)
+        real(xp) :: r, gap, theta, s, lo, hi, x, x_new, f, df, x_eval, df_eval, delta, df_near
+        logical :: converged
+        logical :: increasing
+        integer :: k
+        r = real(radius, xp)
+        gap = real(1.0_qp - radius, xp)
+        theta = real(angle, xp)
+        s = real(side, xp)
+        lo = 0.0_xp
+        hi = hi_end
+        increasing = side > 0.0_qp
+        x = min(max(real(start, xp), lo), hi)
+        beta = start
+        curvature = 0.0_qp
+        converged = .false.
+        do k = 1, max_early_steps
+            call endpoint_angle_xp(r, gap, theta, s, x, f, df)
+            if (.not. (abs(f) < huge(f) .and. abs(df) < huge(df) .and. df /= 0.0_xp)) return
+            x_eval = x
+            df_eval = df
+            converged = f == 0.0_xp
+            if (converged) exit
+            if ((f < 0.0_xp) .eqv. increasing) then
+                lo = x
+            else
+                hi = x
+            end if
+            x_new = x - f/df
+            converged = abs(x_new - x) <= early_tolerance*abs(x)
+            if (converged .and. .not. (x_new > lo .and. x_new < hi)) exit
+            if (.not. (x_new > lo .and. x_new < hi)) x_new = 0.5_xp*(lo + hi)
+            x = x_new
+            if (converged) exit
+        end do
+        ! a step cap or an underflow: the binary128 run starts from start, K unknown
+        if (.not. converged .or. x <= 0.0_xp) return
+        beta = real(x, qp)
+        delta = 1.0e-4_xp*min(x_eval, sqrt(gap*(1.0_xp + r)))
+        if (.not. (delta > 0.0_xp)) return
+        if (x_eval > 0.5_xp*hi_end) delta = -delta
+        call endpoint_angle_xp(r, gap, theta, s, x_eval + delta, f, df_near)
+        ! plus what the rounding of f' (1e-17 relative at most) could hide
+        curvature = real((abs(df_near - df_eval)/abs(df_eval) + 1.0e-17_xp)/abs(delta), qp)
+        if (.not. (curvature < huge(1.0_qp))) curvature = 0.0_qp
+    end subroutine early_beta
+
+    !> `endpoint_angle_evaluate` in hardware precision: theta(B) - theta_B and its
+    !! derivative in beta (0 where cancellation leaves it fewer than 5 digits), from
+    !! r_B, 1 - r_B (from binary128: r_B may round to 1 in `xp`), theta_B, the side
+    !! and beta.
+    pure subroutine endpoint_angle_xp(radius, gap, angle, side, beta, f, df)
+        real(xp), intent(in) :: radius, gap, angle, side, beta
+        real(xp), intent(out) :: f, df
+        real(xp), parameter :: quarter_pi = real(0.25_qp*pi, xp)
+        real(xp) :: rho_m, d, d_plus, across, along, h, r2, px, py, lead, trail
+        rho_m = radius*sin(beta)
+        d = gap + 2.0_xp*radius*sin(quarter_pi - 0.5_xp*beta)**2
+        d_plus = d*(1.0_xp + rho_m)
+        across = sqrt(gap*(1.0_xp + radius))
+        along = side*radius*cos(beta)
+        h = atan2(across, along)
+        call position_kernel_xp(h, across/sqrt(d_plus), along/sqrt(d_plus), rho_m, d, px, py)
+        f = atan2(py, px) - angle
+        r2 = radius**2
+        lead = (rho_m*across**2/r2)*(side*across*rho_m/d_plus)
+        trail = along*across/(d_plus*r2)
+        df = lead + (trail - h)*radius*cos(beta)
+        ! as r_B -> 1 at small beta, trail - h ~ (1 - r_B^2)^(3/2) cancels: where more
+        ! than 14 digits are lost, df = 0 (the early phase then leaves it to binary128)
+        if (abs(df) < 1.0e-14_xp*(abs(lead) + (abs(trail) + abs(h))*radius*cos(beta))) &
+            df = 0.0_xp
+    end subroutine endpoint_angle_xp
+
+    !> `position_kernel` in hardware precision (the same branches, so that theta keeps
+    !! its relative precision as beta -> 0).
+    pure subroutine position_kernel_xp(h, sin_h, cos_h, rho_m, d, x, y)
+        real(xp), intent(in) :: h, sin_h, cos_h, rho_m, d
+        real(xp), intent(out) :: x, y
+        real(xp) :: even, odd, power, h2, term, total, plus2, minus2, sign
+        integer :: k
+        x = cos_h*cos(rho_m*h) + rho_m*sin_h*sin(rho_m*h)
+        if (h <= real(series_limit, xp)) then
+            even = 0.0_xp
+            odd = 1.0_xp
+            power = h
+            h2 = h*h
+            plus2 = (1.0_xp + rho_m)**2
+            minus2 = d*d
+            total = 0.0_xp
+            sign = 1.0_xp
+            do k = 1, max_series_terms
+                even = plus2*even + 4.0_xp*rho_m*odd
+                odd = odd*minus2
+                power = power*h2/real((2*k)*(2*k + 1), xp)
+                term = even*power
+                total = total + sign*term
+                if (term <= 0.125_xp*epsilon(1.0_xp)*abs(total)) exit
+                sign = -sign
+            end do
+            y = 0.5_xp*d*(1.0_xp + rho_m)*total
+        else if (rho_m <= 0.5_xp) then
+            y = rho_m*sin_h*cos(rho_m*h) - cos_h*sin(rho_m*h)
+        else
+            y = (1.0_xp - d*sin_h**2)*sin(d*h) - d*sin_h*cos_h*cos(d*h)
+        end if
+    end subroutine position_kernel_xp
 
     ! ---------------------------------------------------------------- tautochrone
 
