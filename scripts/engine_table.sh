@@ -31,6 +31,7 @@ for spec in "power 1.000001" "power 1.1" "power 1.5" "power 2" "power 3" "power 
         /worst extreme endpoint/              { extreme = $NF }
         END {
             name = (field == "power") ? "power n = " n : field
+            if (field == "harmonic") name = "harmonic law through the engine"
             printf "| %s | %.1f | %.1f | %s | %s | %s | %s | %s |\n", name, general, fast, \
                 ratio, slowest, extreme, unsolved, build
         }'
