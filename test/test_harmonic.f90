@@ -507,6 +507,24 @@ contains
         call check(tunnel%status == status_ok .and. tunnel%min_radius <= 1.0e-30_qp .and. &
                    abs(tunnel%time - 0.5_qp*pi) < 2.0e-30_qp, &
                    'r_B -> 0: the diametral tunnel, time to the centre pi/2')
+        ! next to the centre the tunnel is the straight line y = rho_m (parallel to OA), so
+        ! sin(theta_B) = rho_m/r_B: r_B^2 underflows here (the derivative must not use it)
+        do k = 1, 3
+            theta = merge(0.5_qp, merge(1.2_qp, 1.0e-300_qp, k == 2), k == 1)
+            tunnel = solve_harmonic_endpoint(1.0e-4000_qp, theta)
+            expected = 1.0e-4000_qp*sin(theta)
+            call check(tunnel%status == status_ok .and. tunnel%arch == arch_first .and. &
+                       abs(tunnel%min_radius - expected) <= 8.0_qp*eps_qp*expected, &
+                       'r_B = 1e-4000: rho_m = r_B sin(theta_B), the straight line near O')
+        end do
+        ! rho_m = r_B theta_B/(d theta/d beta) below half the smallest subnormal: 0
+        tunnel = solve_harmonic_endpoint(1.0e-300_qp, 1.0e-4900_qp)
+        call check(tunnel%status == status_ok .and. tunnel%arch == arch_first .and. &
+                   tunnel%min_radius == 0.0_qp .and. abs(tunnel%time - 0.5_qp*pi) < 4.0_qp* &
+                   eps_qp, 'rho_m below the smallest binary128 number: 0, the straight tunnel')
+        tunnel = solve_harmonic_endpoint(1.0e-4000_qp, 1.0e-4900_qp)
+        call check(tunnel%status == status_ok .and. tunnel%min_radius == 0.0_qp, &
+                   'r_B = 1e-4000, theta_B = 1e-4900: rho_m underflows to 0')
         tunnel = solve_harmonic_endpoint(1.0_qp, 2.0_qp)
         call check(tunnel%status == status_ok .and. tunnel%arch == arch_complete .and. &
                    abs(tunnel%min_radius - (1.0_qp - 2.0_qp/pi)) <= 2.0_qp*eps_qp, &

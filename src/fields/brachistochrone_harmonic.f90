@@ -62,7 +62,9 @@
 !! Special endpoints: theta_B = 0 (radial fall along OA, rho_m = 0),
 !! theta_B = pi (the diametral tunnel, B beyond the centre, rho_m = 0), theta_B equal to
 !! the apse angle (B is the deepest point, rho_m = r_B), r_B = 1 (surface to surface,
-!! rho_m = 1 - theta_B/pi). As r_B -> 0 the solution tends to the straight diametral
+!! rho_m = 1 - theta_B/pi); rho_m below half the smallest binary128 number (r_B theta_B
+!! below about 3e-4966 on the first half-arch) is returned as 0, the straight tunnel,
+!! with s and t at their limits. As r_B -> 0 the solution tends to the straight diametral
 !! tunnel (rho_m <= r_B -> 0) and the time to the centre to pi/2. theta_B outside
 !! [0, pi] is refused (use 2 pi - theta_B: the mirror image), as is r_B outside (0, 1].
 !!
@@ -506,6 +508,13 @@ contains
                 x0 = 0.5_qp*pi*(pi - angle)/(pi - apse_angle)
             end if
             f_hi = apse_angle - angle
+            if (fun%side > 0.0_qp .and. angle/(across - radius*atan2(across, radius)) < &
+                0.5_qp*(nearest(0.0_qp, 1.0_qp)/radius)) then
+                ! rho_m = r_B beta, beta = theta_B/(d theta/d beta at 0) to first order: below
+                ! half the smallest subnormal, so rho_m rounds to 0 (the straight tunnel)
+                call complete_tunnel(tunnel, 0.0_qp, 1.0_qp, atan2(across, radius))
+                return
+            end if
             call solve_beta(fun, f_lo, f_hi, x0, beta, tunnel%steps, status)
             call beta_to_rho(radius, beta, rho_m, d)
             h = atan2(across, fun%side*radius*cos(beta))
@@ -551,17 +560,20 @@ contains
         real(qp), intent(out) :: f      !! theta at B minus theta_B
         real(qp), intent(out) :: df     !! its derivative in beta
         integer, intent(out) :: status  !! status_ok
-        real(qp) :: rho_m, d, d_plus, across, along, h, r2, px, py
+        real(qp) :: rho_m, d, d_plus, across, along, h, px, py, sine, cosine
         call beta_to_rho(self%radius, x, rho_m, d)
+        sine = sin(x)
+        cosine = cos(x)
         d_plus = d*(1.0_qp + rho_m)
         across = sqrt((1.0_qp - self%radius)*(1.0_qp + self%radius))
-        along = self%side*self%radius*cos(x)
+        along = self%side*self%radius*cosine
         h = atan2(across, along)
         call position_kernel(h, across/sqrt(d_plus), along/sqrt(d_plus), rho_m, d, px, py)
         f = atan2(py, px) - self%angle
-        r2 = self%radius**2
-        df = (rho_m*across**2/r2)*(self%side*across*rho_m/d_plus) &
-             + (along*across/(d_plus*r2) - h)*self%radius*cos(x)
+        ! without r_B^2 (it underflows for r_B below 1e-2466): rho_m/r_B = sin(beta),
+        ! along/r_B = side cos(beta)
+        df = self%side*sine**2*across**3/d_plus &
+             + (self%side*cosine**2*across/d_plus - h*self%radius*cosine)
         status = status_ok
     end subroutine endpoint_angle_evaluate
 
@@ -638,7 +650,7 @@ contains
         real(xp), intent(in) :: radius, gap, angle, side, beta
         real(xp), intent(out) :: f, df
         real(xp), parameter :: quarter_pi = real(0.25_qp*pi, xp)
-        real(xp) :: rho_m, d, d_plus, across, along, h, r2, px, py, lead, trail
+        real(xp) :: rho_m, d, d_plus, across, along, h, px, py, lead, trail
         rho_m = radius*sin(beta)
         d = gap + 2.0_xp*radius*sin(quarter_pi - 0.5_xp*beta)**2
         d_plus = d*(1.0_xp + rho_m)
@@ -647,13 +659,13 @@ contains
         h = atan2(across, along)
         call position_kernel_xp(h, across/sqrt(d_plus), along/sqrt(d_plus), rho_m, d, px, py)
         f = atan2(py, px) - angle
-        r2 = radius**2
-        lead = (rho_m*across**2/r2)*(side*across*rho_m/d_plus)
-        trail = along*across/(d_plus*r2)
-        df = lead + (trail - h)*radius*cos(beta)
-        ! as r_B -> 1 at small beta, trail - h ~ (1 - r_B^2)^(3/2) cancels: where more
-        ! than 14 digits are lost, df = 0 (the early phase then leaves it to binary128)
-        if (abs(df) < 1.0e-14_xp*(abs(lead) + (abs(trail) + abs(h))*radius*cos(beta))) &
+        ! as `endpoint_angle_evaluate`, without r_B^2
+        lead = side*sin(beta)**2*across**3/d_plus
+        trail = side*cos(beta)**2*across/d_plus
+        df = lead + (trail - h*radius*cos(beta))
+        ! as r_B -> 1 at small beta, trail - h r_B cos(beta) cancels: where more than 14
+        ! digits are lost, df = 0 (the early phase then leaves it to binary128)
+        if (abs(df) < 1.0e-14_xp*(abs(lead) + abs(trail) + abs(h)*radius*cos(beta))) &
             df = 0.0_xp
     end subroutine endpoint_angle_xp
 
