@@ -272,10 +272,9 @@ contains
     subroutine build_whole_tables(model)
         type(central_force_model), intent(inout) :: model
         real(qp) :: points(table_points, table_pieces)
-        real(qp) :: values(table_points, table_pieces, 5), direct(5), table(5), z, width
-        real(qp) :: lower, upper
+        real(qp) :: values(table_points, table_pieces, 5), width, lower, upper
         real(qp), parameter :: slope_noise = real(epsilon(1.0_xp), qp)
-        integer :: piece, m, side
+        integer :: piece, m
         logical :: positive
         lower = log(table_low)
         upper = log(table_high)
@@ -300,16 +299,8 @@ contains
         call split_whole_tables(model, values)
         width = (upper - lower)/real(table_pieces, qp)
         do piece = 1, table_pieces
-            model%whole_ok(piece) = positive
-            do side = 1, 2
-                z = lower + width*(real(piece - 1, qp) + merge(0.3_qp, 0.71_qp, side == 1))
-                direct = whole_direct(model, exp(z))
-                do m = 1, 5
-                    call whole_value(model, m, z, table(m))
-                end do
-                if (.not. table_agrees(model, z, direct, table)) &
-                    model%whole_ok(piece) = .false.
-            end do
+            model%whole_ok(piece) = piece_agrees(model, lower, width, piece, .false.) &
+                                    .and. positive
         end do
     end subroutine build_whole_tables
 
@@ -457,9 +448,9 @@ contains
     subroutine build_far_tables(model)
         type(central_force_model), intent(inout) :: model
         real(qp) :: points(far_points, far_pieces), values(far_points, far_pieces, 5)
-        real(qp) :: direct(5), table(5), z, width, lower, upper
+        real(qp) :: width, lower, upper
         real(qp), parameter :: slope_noise = real(epsilon(1.0_xp), qp)
-        integer :: piece, m, side
+        integer :: piece, m
         lower = log(table_high)
         upper = log(far_high)
         points = chebyshev_points(lower, upper, far_pieces, far_points)
@@ -475,18 +466,35 @@ contains
         model%far_xp = [hardware_copy(model%far(1)), hardware_copy(model%far(4))]
         width = (upper - lower)/real(far_pieces, qp)
         do piece = 1, far_pieces
-            model%far_ok(piece) = .true.
-            do side = 1, 2
-                z = lower + width*(real(piece - 1, qp) + merge(0.3_qp, 0.71_qp, side == 1))
-                direct = whole_direct(model, exp(z))
-                do m = 1, 5
-                    call far_value(model, m, z, table(m))
-                end do
-                if (.not. table_agrees(model, z, direct, table)) &
-                    model%far_ok(piece) = .false.
-            end do
+            model%far_ok(piece) = piece_agrees(model, lower, width, piece, .true.)
         end do
     end subroutine build_far_tables
+
+    !> Whether piece `piece` of the whole-half-arch tables (`far`: of the far tables), in
+    !! z = log Lambda from `lower` in pieces of `width`, agrees with the quadrature at two
+    !! points between its Chebyshev points (`table_agrees`).
+    pure function piece_agrees(model, lower, width, piece, far) result(agrees)
+        type(central_force_model), intent(in) :: model
+        real(qp), intent(in) :: lower, width
+        integer, intent(in) :: piece
+        logical, intent(in) :: far
+        logical :: agrees
+        real(qp) :: z, direct(5), table(5)
+        integer :: side, m
+        agrees = .true.
+        do side = 1, 2
+            z = lower + width*(real(piece - 1, qp) + merge(0.3_qp, 0.71_qp, side == 1))
+            direct = whole_direct(model, exp(z))
+            do m = 1, 5
+                if (far) then
+                    call far_value(model, m, z, table(m))
+                else
+                    call whole_value(model, m, z, table(m))
+                end if
+            end do
+            agrees = table_agrees(model, z, direct, table) .and. agrees
+        end do
+    end function piece_agrees
 
     !> A table's five values at z = log Lambda against the quadrature's (`whole_direct`):
     !! the values within 8 roundings of their sizes (Theta itself; for the S and T

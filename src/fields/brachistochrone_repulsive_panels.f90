@@ -322,7 +322,7 @@ contains
         integer, intent(out) :: which(max_panels), count, status
         complex(real64) :: points(16)
         real(qp) :: stack_lo(max_panels), stack_hi(max_panels), a, b
-        integer :: top, n, j, np
+        integer :: top, n, np
         count = 0
         status = status_ok
         if (.not. (piece%upper > piece%lower)) return
@@ -343,10 +343,7 @@ contains
                 count = count + 1
                 lo(count) = a
                 hi(count) = b
-                which(count) = size(ladder)
-                do j = size(ladder), 1, -1
-                    if (ladder(j) >= n) which(count) = j
-                end do
+                which(count) = ladder_index(n)
             else
                 if (top + 2 > max_panels) then
                     status = status_no_convergence
@@ -372,7 +369,7 @@ contains
         integer, intent(out) :: which(max_panels), count, status
         complex(real64) :: points(16)
         real(xp) :: stack_lo(max_panels), stack_hi(max_panels), a, b
-        integer :: top, n, j, np
+        integer :: top, n, np
         count = 0
         status = status_ok
         if (.not. (piece%upper > piece%lower)) return
@@ -393,10 +390,7 @@ contains
                 count = count + 1
                 lo(count) = a
                 hi(count) = b
-                which(count) = size(ladder)
-                do j = size(ladder), 1, -1
-                    if (ladder(j) >= n) which(count) = j
-                end do
+                which(count) = ladder_index(n)
             else
                 if (top + 2 > max_panels) then
                     status = status_no_convergence
@@ -411,6 +405,16 @@ contains
             end if
         end do
     end subroutine plan_panels_xp
+
+    !> The smallest rule of the ladder with at least n nodes (the largest if none).
+    pure function ladder_index(n) result(j)
+        integer, intent(in) :: n
+        integer :: j
+        do j = 1, size(ladder)
+            if (ladder(j) >= n) return
+        end do
+        j = size(ladder)
+    end function ladder_index
 
     !> Gauss nodes for `digits` on [a, b] given the singular points (huge if more than
     !! `max_nodes`). z -+ 1 are formed from the distances to the ends, so that a point
