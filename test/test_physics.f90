@@ -450,6 +450,21 @@ contains
                              status)
         call check_close(b%arclength, 2.0_qp*length, 16.0_qp, 'complete: s = 2 S(R,R)')
         call check_close(b%time, 2.0_qp*time, 16.0_qp, 'complete: t = 2 T(R,R)')
+        ! R-bar ~ 2.8 rho psi^(2/3): 3e-5267 underflows, 3e-4667 does not
+        b = solve_endpoint(model, 1.0e-2000_qp, 1.0e-4900_qp)
+        call check(b%status == status_ok .and. b%arch == arch_first .and. &
+                   b%apse_radius == 0.0_qp, 'R-bar below the binary128 range: R = 0')
+        call check_close(b%arclength, 1.0_qp - 1.0e-2000_qp, 4.0_qp, &
+                         'R-bar below the range: s = 1 - rho')
+        call check_close(b%time, radial_time(1.0e-2000_qp), 4.0_qp, &
+                         'R-bar below the range: t = t(rho)')
+        b = solve_endpoint(model, 1.0e-2000_qp, 1.0e-4000_qp)
+        call model%half_arch(1.0e-2000_qp, b%apse_radius, .false., angle, length, time, &
+                             status)
+        call check(b%status == status_ok .and. b%apse_radius > 1.0e-4700_qp .and. &
+                   b%apse_radius < 1.0e-4600_qp, 'rho = 1e-2000, psi = 1e-4000: R-bar ~ 3e-4667')
+        call check_close(angle, 1.0e-4000_qp, 64.0_qp, &
+                         'rho = 1e-2000, psi = 1e-4000: Upsilon(R-bar) = psi')
         b = solve_endpoint(model, 0.6_qp, inaccessible_angle)
         call check(b%status == status_inaccessible .and. b%arch == arch_inaccessible, &
                    'psi = 2 pi/3 is inaccessible')

@@ -42,6 +42,9 @@ module brachistochrone_two_point
     integer, parameter :: max_steps = 200
     !> Steps down in log R (by 4 each) looking for the lower end of the bracket.
     integer, parameter :: max_probes = 100
+    !> Lowest log R probed: the smallest normal binary128 number. A root below it is
+    !! returned as R-bar = 0 (`below_range`).
+    real(qp), parameter :: lowest_log_r = log(tiny(1.0_qp))
     !> The phase before the full-precision step runs in hardware precision
     !! (level_hardware, 19-digit rules): its relative tolerance and the accuracy of its
     !! evaluations, from the rounding of the hardware kind (x87 extended: 1.1e-17 and
@@ -249,7 +252,10 @@ contains
 
     !> Solve the two-point problem for B = (rho, psi) to full quad precision, without
     !! initial estimates. Never fails on an accessible endpoint 0 < rho <= 1,
-    !! 0 <= psi < 2 pi/3; other endpoints get a status (see `classify`).
+    !! 0 <= psi < 2 pi/3; other endpoints get a status (see `classify`). An R-bar below
+    !! the smallest normal binary128 number (tiny rho and psi, e.g. rho = 1e-2000,
+    !! psi = 1e-4900: R-bar ~ 2.8 rho psi^(2/3)) is returned as 0 with s and t at their
+    !! limits (`below_range`).
     pure function solve_endpoint(model, rho, psi) result(solution)
         type(inverse_square_model), intent(in) :: model !! the evaluator
         real(qp), intent(in) :: rho                     !! endpoint radius
@@ -259,7 +265,7 @@ contains
         type(root_bracket) :: b
         real(qp) :: apse_angle_rho, x, big_r, d
         integer :: steps, status
-        logical :: done, inside
+        logical :: done, inside, below
 
         call classify(model, rho, psi, solution, apse_angle_rho, done)
         if (done) return
@@ -272,7 +278,11 @@ contains
         end if
         call open_bracket(fun, model, apse_angle_rho, b, solution%steps)
         if (fun%unknown == unknown_log_r) then
-            call log_phase(fun, model, b, solution%steps, status)
+            call log_phase(fun, model, b, solution%steps, status, below)
+            if (below) then
+                call below_range(solution)
+                return
+            end if
         else
             call hardware_phase(fun, model, b, solution%steps, status)
         end if
@@ -352,30 +362,39 @@ contains
     end subroutine open_bracket
 
     !> First half-arch below rho/2: Newton in log R on the hardware rules (the lower
-    !! end of the bracket found by stepping down), then the bracket and start in R for
-    !! the full-precision phase. status: status_ok, status_no_convergence when no lower
-    !! end is found, or an evaluation's status.
-    pure subroutine log_phase(fun, model, b, steps, status)
+    !! end of the bracket found by stepping down, not below the smallest normal
+    !! binary128 number), then the bracket and start in R for the full-precision phase.
+    !! status: status_ok, status_no_convergence when no lower end is found, or an
+    !! evaluation's status; `below` (status_ok) when Upsilon exceeds psi even at the
+    !! smallest normal R: R-bar is below the binary128 range.
+    pure subroutine log_phase(fun, model, b, steps, status, below)
         type(upsilon_problem), intent(inout) :: fun  !! unknown log R, then R
         type(inverse_square_model), intent(in) :: model !! the evaluator
         type(root_bracket), intent(inout) :: b       !! the bracket, in log R then in R
         integer, intent(inout) :: steps              !! evaluations made
         integer, intent(out) :: status               !! the phase's status
+        logical, intent(out) :: below                !! R-bar underflows
         real(qp) :: log_lo, f_lo, f_end, x
         integer :: probe, used
         fun%level = level_hardware
-        log_lo = b%x0 - 2.0_qp
+        below = .false.
+        log_lo = max(b%x0 - 2.0_qp, lowest_log_r)
         do probe = 1, max_probes
             call upsilon_at(fun, model, log_lo, f_lo, f_end, status)
             steps = steps + 1
             if (status == status_ok .and. f_lo < 0.0_qp) exit
-            log_lo = log_lo - 4.0_qp
+            if (status == status_ok .and. log_lo == lowest_log_r) then
+                below = .true.
+                return
+            end if
+            log_lo = max(log_lo - 4.0_qp, lowest_log_r)
         end do
         if (status /= status_ok) return
         if (.not. f_lo < 0.0_qp) then
             status = status_no_convergence
             return
         end if
+        b%x0 = max(b%x0, log_lo)
         call newton_upsilon(fun, model, log_lo, f_lo, b%hi, 1.0_qp, b%x0, hardware_tolerance, &
                             0.0_qp, x, used, status, b%curvature, hardware_accuracy)
         steps = steps + used
@@ -531,6 +550,21 @@ contains
         end do
         x = real(y, qp)
     end function hermite_start
+
+    !> The first half-arch when R-bar is below the smallest normal binary128 number:
+    !! R-bar = 0 and s, t at their limits R -> 0, the radial fall 1 - rho and t0(rho)
+    !! (they differ from them by O(R) relative, below 1e-4900).
+    pure subroutine below_range(solution)
+        type(endpoint_solution), intent(inout) :: solution
+        solution%apse_radius = 0.0_qp
+        solution%apse_gap = solution%rho
+        solution%arclength = 1.0_qp - solution%rho
+        solution%time = radial_time(solution%rho)
+        solution%has_apse_radius = .true.
+        solution%has_arclength = .true.
+        solution%has_time = .true.
+        solution%status = status_ok
+    end subroutine below_range
 
     !> Arclength and time at B once R-bar is known.
     pure subroutine finish(model, solution, second, big_r, d)
