@@ -74,6 +74,15 @@ ENDPOINTS = [
     ("0.5", "0.3"), ("0.5", "1.5"), ("0.9", "0.01"), ("0.2", "3.0"),
     ("0.01", "1.0"), ("0.99", "2.0"), ("0.7", "0.000001"),
 ]
+# shallow tunnels (r_B next to 1, small theta_B: 1 - rho_m down to 3e-21), solved at
+# SHALLOW_DPS digits so that 1 - rho_m keeps more than 55 of them
+SHALLOW_ENDPOINTS = [
+    ("0.99999999999999999999999999999", "1e-20"),
+    ("0.99999999999999999999999999999", "1e-10"),
+    ("0.9999999999", "1e-10"),
+    ("0.999999999999999999", "0.001"),
+]
+SHALLOW_DPS = 110
 # (lat1, lon1, lat2, lon2): New York - Los Angeles, antipodes on the equator
 ROUTES = [
     ("40.7128", "-74.0060", "34.0522", "-118.2437"),
@@ -175,6 +184,24 @@ def theta_at(r, rho, second):
     return mp.atan2(rho * mp.sin(h), mp.cos(h)) - rho * h, h
 
 
+def endpoint_rows(r_text, theta_text):
+    """rho_m, time and arclength of the two-point problem at the working precision."""
+    r, theta_b = q128(r_text), q128(theta_text)
+    apse = mp.pi / 2 * (1 - r)
+    second = theta_b > apse
+    g = lambda rho: theta_at(r, rho, second)[0] - theta_b
+    rho = mp.findroot(g, (mp.mpf(0), r), solver="anderson",
+                      tol=mp.mpf(10) ** (-2 * mp.mp.dps + 2))
+    residual = g(rho)
+    if abs(residual) > mp.mpf(10) ** -55 * theta_b:
+        sys.exit(f"endpoint ({r_text}, {theta_text}): residual {residual}")
+    h = theta_at(r, rho, second)[1]
+    return [("endpoint_rho", r_text, theta_text, "", "", rho),
+            ("endpoint_time", r_text, theta_text, "", "", h * mp.sqrt(1 - rho ** 2)),
+            ("endpoint_s", r_text, theta_text, "", "",
+             2 * (1 - rho ** 2) * mp.sin(h / 2) ** 2)]
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--out", default="data/reference/harmonic_mpmath.csv")
@@ -200,22 +227,11 @@ def main():
 
     with mp.workdps(60):
         for r_text, theta_text in ENDPOINTS:
-            r, theta_b = q128(r_text), q128(theta_text)
-            apse = mp.pi / 2 * (1 - r)
-            second = theta_b > apse
-            g = lambda rho: theta_at(r, rho, second)[0] - theta_b
-            rho = mp.findroot(g, (mp.mpf(0), r), solver="anderson",
-                              tol=mp.mpf(10) ** -118)
-            residual = g(rho)
-            if abs(residual) > mp.mpf(10) ** -55 * theta_b:
-                sys.exit(f"endpoint ({r_text}, {theta_text}): residual {residual}")
-            h = theta_at(r, rho, second)[1]
-            rows.append(("endpoint_rho", r_text, theta_text, "", "", rho))
-            rows.append(("endpoint_time", r_text, theta_text, "", "",
-                         h * mp.sqrt(1 - rho ** 2)))
-            rows.append(("endpoint_s", r_text, theta_text, "", "",
-                         2 * (1 - rho ** 2) * mp.sin(h / 2) ** 2))
-
+            rows.extend(endpoint_rows(r_text, theta_text))
+    with mp.workdps(SHALLOW_DPS):
+        for r_text, theta_text in SHALLOW_ENDPOINTS:
+            rows.extend(endpoint_rows(r_text, theta_text))
+    with mp.workdps(60):
         big_r, g = q128("6371"), q128("9.81")
         for lat1_t, lon1_t, lat2_t, lon2_t in ROUTES:
             lat1, lon1, lat2, lon2 = (mp.radians(q128(t)) for t in

@@ -181,11 +181,13 @@ module brachistochrone_harmonic
         integer :: status = status_ok            !! status code
     end type planet_tunnel
 
-    !> theta at B minus theta_B, as a function of beta (rho_m = r_B sin beta).
+    !> theta at B minus theta_B, as a function of beta (rho_m = r_B sin beta), or of
+    !! gamma = pi/2 - beta (`complement`: the root beyond pi/4).
     type, extends(root_function) :: endpoint_angle_function
         real(qp) :: radius = 0.0_qp     !! r_B
         real(qp) :: angle = 0.0_qp      !! theta_B
         real(qp) :: side = 1.0_qp       !! +1 before the deepest point, -1 after
+        logical :: complement = .false. !! the unknown is gamma = pi/2 - beta
     contains
         procedure :: evaluate => endpoint_angle_evaluate
     end type endpoint_angle_function
@@ -467,7 +469,7 @@ contains
         real(qp), intent(in) :: angle   !! theta_B in radians, 0 <= theta_B <= pi
         type(harmonic_tunnel) :: tunnel
         type(endpoint_angle_function) :: fun
-        real(qp) :: apse_angle, across, f_lo, f_hi, x0, beta, rho_m, d, h
+        real(qp) :: apse_angle, across, f_lo, f_hi, x0, beta, rho_m, d, h, sine, cosine, half
         integer :: status
 
         tunnel%radius = radius
@@ -516,37 +518,70 @@ contains
                 return
             end if
             call solve_beta(fun, f_lo, f_hi, x0, beta, tunnel%steps, status)
-            call beta_to_rho(radius, beta, rho_m, d)
-            h = atan2(across, fun%side*radius*cos(beta))
+            call beta_trig(beta, fun%complement, sine, cosine, half)
+            call beta_to_rho(radius, sine, half, rho_m, d)
+            h = atan2(across, fun%side*radius*cosine)
             call complete_tunnel(tunnel, rho_m, d, h)
             tunnel%status = status
         end if
     end function solve_harmonic_endpoint
 
-    !> beta by `newton_bracketed` in binary128 on [0, pi/2], started by `early_beta`
-    !! (with its K when it converged; else from x0, K unknown, as without it).
+    !> beta (or gamma = pi/2 - beta, `fun%complement` on return) by `newton_bracketed`
+    !! in binary128 on [0, pi/2], started by `early_beta` (with its K when it converged;
+    !! else from x0, K unknown, as without it). A root beta beyond pi/4 is sought in
+    !! gamma, which keeps its relative precision as beta -> pi/2: there
+    !! 1 - rho_m = (1 - r_B) + 2 r_B sin^2(gamma/2) and, for r_B next to 1 (a shallow
+    !! tunnel), s = 2 (1 - rho_m^2) sin^2(h/2) and t have their relative precision only
+    !! if gamma has (with beta, r_B = 1 - 1e-29, theta_B = 1e-20 gave s to 24 digits).
     pure subroutine solve_beta(fun, f_lo, f_hi, x0, beta, steps, status)
-        type(endpoint_angle_function), intent(in) :: fun
+        type(endpoint_angle_function), intent(inout) :: fun
         real(qp), intent(in) :: f_lo, f_hi, x0  !! f at beta = 0, pi/2; first guess
-        real(qp), intent(out) :: beta           !! the root
+        real(qp), intent(out) :: beta           !! the root (gamma if fun%complement)
         integer, intent(out) :: steps, status   !! binary128 evaluations, status
-        real(qp) :: start, curvature
-        call early_beta(fun%radius, fun%angle, fun%side, x0, start, curvature)
+        real(qp) :: start, curvature, f_0, f_end
+        fun%complement = .false.
+        call early_beta(fun%radius, fun%angle, fun%side, .false., x0, start, curvature)
+        if (start > 0.25_qp*pi) then
+            ! polish the start in gamma (one or two hardware steps) for its curvature
+            fun%complement = .true.
+            call early_beta(fun%radius, fun%angle, fun%side, .true., 0.5_qp*pi - start, &
+                            start, curvature)
+        end if
+        f_0 = merge(f_hi, f_lo, fun%complement)
+        f_end = merge(f_lo, f_hi, fun%complement)
         if (curvature > 0.0_qp) then
-            call newton_bracketed(fun, 0.0_qp, f_lo, 0.5_qp*pi, f_hi, start, 4.0_qp*eps_qp, &
+            call newton_bracketed(fun, 0.0_qp, f_0, 0.5_qp*pi, f_end, start, 4.0_qp*eps_qp, &
                                   0.0_qp, max_steps, beta, steps, status, curvature)
         else
-            call newton_bracketed(fun, 0.0_qp, f_lo, 0.5_qp*pi, f_hi, start, 4.0_qp*eps_qp, &
+            call newton_bracketed(fun, 0.0_qp, f_0, 0.5_qp*pi, f_end, start, 4.0_qp*eps_qp, &
                                   0.0_qp, max_steps, beta, steps, status)
         end if
     end subroutine solve_beta
 
-    !> rho_m = r sin(beta) and 1 - rho_m = (1 - r) + 2 r sin^2(pi/4 - beta/2).
-    elemental subroutine beta_to_rho(radius, beta, rho_m, d)
-        real(qp), intent(in) :: radius, beta
+    !> sin(beta), cos(beta) and sin(pi/4 - beta/2) from the unknown x: beta itself, or
+    !! (complement) gamma = pi/2 - beta, each without forming the other.
+    elemental subroutine beta_trig(x, complement, sine, cosine, half)
+        real(qp), intent(in) :: x
+        logical, intent(in) :: complement
+        real(qp), intent(out) :: sine, cosine, half
+        if (complement) then
+            sine = cos(x)
+            cosine = sin(x)
+            half = sin(0.5_qp*x)
+        else
+            sine = sin(x)
+            cosine = cos(x)
+            half = sin(0.25_qp*pi - 0.5_qp*x)
+        end if
+    end subroutine beta_trig
+
+    !> rho_m = r sin(beta) and 1 - rho_m = (1 - r) + 2 r sin^2(pi/4 - beta/2), from
+    !! sin(beta) and sin(pi/4 - beta/2) (`beta_trig`).
+    elemental subroutine beta_to_rho(radius, sine, half, rho_m, d)
+        real(qp), intent(in) :: radius, sine, half
         real(qp), intent(out) :: rho_m, d
-        rho_m = radius*sin(beta)
-        d = (1.0_qp - radius) + 2.0_qp*radius*sin(0.25_qp*pi - 0.5_qp*beta)**2
+        rho_m = radius*sine
+        d = (1.0_qp - radius) + 2.0_qp*radius*half**2
     end subroutine beta_to_rho
 
     !> theta(B) - theta_B and its derivative in beta.
@@ -556,14 +591,13 @@ contains
     !! d theta/d rho_m = X Y/((1 - rho_m^2) r^2) - h, d rho_m/dbeta = r cos(beta).
     pure subroutine endpoint_angle_evaluate(self, x, f, df, status)
         class(endpoint_angle_function), intent(in) :: self
-        real(qp), intent(in) :: x       !! beta
+        real(qp), intent(in) :: x       !! beta (gamma = pi/2 - beta if self%complement)
         real(qp), intent(out) :: f      !! theta at B minus theta_B
-        real(qp), intent(out) :: df     !! its derivative in beta
+        real(qp), intent(out) :: df     !! its derivative in x
         integer, intent(out) :: status  !! status_ok
-        real(qp) :: rho_m, d, d_plus, across, along, h, px, py, sine, cosine
-        call beta_to_rho(self%radius, x, rho_m, d)
-        sine = sin(x)
-        cosine = cos(x)
+        real(qp) :: rho_m, d, d_plus, across, along, h, px, py, sine, cosine, half
+        call beta_trig(x, self%complement, sine, cosine, half)
+        call beta_to_rho(self%radius, sine, half, rho_m, d)
         d_plus = d*(1.0_qp + rho_m)
         across = sqrt((1.0_qp - self%radius)*(1.0_qp + self%radius))
         along = self%side*self%radius*cosine
@@ -574,6 +608,7 @@ contains
         ! along/r_B = side cos(beta)
         df = self%side*sine**2*across**3/d_plus &
              + (self%side*cosine**2*across/d_plus - h*self%radius*cosine)
+        if (self%complement) df = -df
         status = status_ok
     end subroutine endpoint_angle_evaluate
 
@@ -590,8 +625,9 @@ contains
     !! rounding of f' over that distance, for the binary128 run to stop after a step dx
     !! with 4 K dx^2 below its tolerance (0: unknown, when the early phase did not
     !! converge; then also beta = start).
-    pure subroutine early_beta(radius, angle, side, start, beta, curvature)
+    pure subroutine early_beta(radius, angle, side, complement, start, beta, curvature)
         real(qp), intent(in) :: radius, angle, side !! r_B, theta_B, +1 or -1
+        logical, intent(in) :: complement           !! in gamma = pi/2 - beta
         real(qp), intent(in) :: start               !! first iterate
         real(qp), intent(out) :: beta               !! the approximate root
         real(qp), intent(out) :: curvature          !! K estimate, 0 if unknown
@@ -606,13 +642,13 @@ contains
         s = real(side, xp)
         lo = 0.0_xp
         hi = hi_end
-        increasing = side > 0.0_qp
+        increasing = (side > 0.0_qp) .neqv. complement
         x = min(max(real(start, xp), lo), hi)
         beta = start
         curvature = 0.0_qp
         converged = .false.
         do k = 1, max_early_steps
-            call endpoint_angle_xp(r, gap, theta, s, x, f, df)
+            call endpoint_angle_xp(r, gap, theta, s, complement, x, f, df)
             if (.not. (abs(f) < huge(f) .and. abs(df) < huge(df) .and. df /= 0.0_xp)) return
             x_eval = x
             df_eval = df
@@ -636,37 +672,48 @@ contains
         delta = 1.0e-4_xp*min(x_eval, sqrt(gap*(1.0_xp + r)))
         if (.not. (delta > 0.0_xp)) return
         if (x_eval > 0.5_xp*hi_end) delta = -delta
-        call endpoint_angle_xp(r, gap, theta, s, x_eval + delta, f, df_near)
+        call endpoint_angle_xp(r, gap, theta, s, complement, x_eval + delta, f, df_near)
         ! plus what the rounding of f' (1e-17 relative at most) could hide
         curvature = real((abs(df_near - df_eval)/abs(df_eval) + 1.0e-17_xp)/abs(delta), qp)
         if (.not. (curvature < huge(1.0_qp))) curvature = 0.0_qp
     end subroutine early_beta
 
     !> `endpoint_angle_evaluate` in hardware precision: theta(B) - theta_B and its
-    !! derivative in beta (0 where cancellation leaves it fewer than 5 digits), from
-    !! r_B, 1 - r_B (from binary128: r_B may round to 1 in `xp`), theta_B, the side
-    !! and beta.
-    pure subroutine endpoint_angle_xp(radius, gap, angle, side, beta, f, df)
-        real(xp), intent(in) :: radius, gap, angle, side, beta
+    !! derivative in the unknown x (0 where cancellation leaves it fewer than 5 digits),
+    !! from r_B, 1 - r_B (from binary128: r_B may round to 1 in `xp`), theta_B, the side
+    !! and x = beta (gamma = pi/2 - beta if complement).
+    pure subroutine endpoint_angle_xp(radius, gap, angle, side, complement, x, f, df)
+        real(xp), intent(in) :: radius, gap, angle, side, x
+        logical, intent(in) :: complement
         real(xp), intent(out) :: f, df
         real(xp), parameter :: quarter_pi = real(0.25_qp*pi, xp)
-        real(xp) :: rho_m, d, d_plus, across, along, h, px, py, lead, trail
-        rho_m = radius*sin(beta)
-        d = gap + 2.0_xp*radius*sin(quarter_pi - 0.5_xp*beta)**2
+        real(xp) :: rho_m, d, d_plus, across, along, h, px, py, lead, trail, sine, cosine, half
+        if (complement) then
+            sine = cos(x)
+            cosine = sin(x)
+            half = sin(0.5_xp*x)
+        else
+            sine = sin(x)
+            cosine = cos(x)
+            half = sin(quarter_pi - 0.5_xp*x)
+        end if
+        rho_m = radius*sine
+        d = gap + 2.0_xp*radius*half**2
         d_plus = d*(1.0_xp + rho_m)
         across = sqrt(gap*(1.0_xp + radius))
-        along = side*radius*cos(beta)
+        along = side*radius*cosine
         h = atan2(across, along)
         call position_kernel_xp(h, across/sqrt(d_plus), along/sqrt(d_plus), rho_m, d, px, py)
         f = atan2(py, px) - angle
         ! as `endpoint_angle_evaluate`, without r_B^2
-        lead = side*sin(beta)**2*across**3/d_plus
-        trail = side*cos(beta)**2*across/d_plus
-        df = lead + (trail - h*radius*cos(beta))
+        lead = side*sine**2*across**3/d_plus
+        trail = side*cosine**2*across/d_plus
+        df = lead + (trail - h*radius*cosine)
         ! as r_B -> 1 at small beta, trail - h r_B cos(beta) cancels: where more than 14
         ! digits are lost, df = 0 (the early phase then leaves it to binary128)
-        if (abs(df) < 1.0e-14_xp*(abs(lead) + abs(trail) + abs(h)*radius*cos(beta))) &
+        if (abs(df) < 1.0e-14_xp*(abs(lead) + abs(trail) + abs(h)*radius*cosine)) &
             df = 0.0_xp
+        if (complement) df = -df
     end subroutine endpoint_angle_xp
 
     !> `position_kernel` in hardware precision (the same branches, so that theta keeps
