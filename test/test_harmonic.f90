@@ -486,6 +486,17 @@ contains
             call check_digits(tunnel%arclength, mirror, 32.0_qp, 'endpoint s = Tee (33)')
         end do
 
+        ! B at its deepest point to within the rounding of theta_B (0.1 pi against the
+        ! apse angle (pi/2)(1 - 0.8)): rho_m = r_B, s = 1 - r_B^2, t = (pi/2) sqrt(1 - r_B^2)
+        ! to first order in the gap; the Newton iteration meets a double root there
+        tunnel = solve_harmonic_endpoint(0.8_qp, 0.1_qp*pi)
+        call check(tunnel%status == status_ok .and. tunnel%steps <= 3, &
+                   'B at its deepest point within a rounding: solved in <= 3 steps')
+        call check_close(tunnel%min_radius, 0.8_qp, 4.0_qp, 'deepest point: rho_m = r_B')
+        call check_close(tunnel%arclength, 0.36_qp, 8.0_qp, 'deepest point: s = 1 - r_B^2')
+        call check_close(tunnel%time, 0.3_qp*pi, 8.0_qp, &
+                         'deepest point: t = (pi/2) sqrt(1 - r_B^2)')
+
         ! special endpoints
         tunnel = solve_harmonic_endpoint(0.4_qp, 0.0_qp)
         call check(tunnel%status == status_ok .and. tunnel%arch == arch_radial .and. &

@@ -538,7 +538,7 @@ contains
         real(qp), intent(in) :: f_lo, f_hi, x0  !! f at beta = 0, pi/2; first guess
         real(qp), intent(out) :: beta           !! the root (gamma if fun%complement)
         integer, intent(out) :: steps, status   !! binary128 evaluations, status
-        real(qp) :: start, curvature, f_0, f_end
+        real(qp) :: start, curvature, f_0, f_end, abs_tol
         fun%complement = .false.
         call early_beta(fun%radius, fun%angle, fun%side, .false., x0, start, curvature)
         if (start > 0.25_qp*pi) then
@@ -549,12 +549,18 @@ contains
         end if
         f_0 = merge(f_hi, f_lo, fun%complement)
         f_end = merge(f_lo, f_hi, fun%complement)
+        ! gamma to 4 eps relative keeps 1 - rho_m's; the phase h needs gamma only to
+        ! 4 eps sqrt(1 - r_B^2) absolute (B next to its deepest point, gamma ~ 1e-17: f is
+        ! quadratic in gamma there and a relative tolerance alone is not reached)
+        abs_tol = 0.0_qp
+        if (fun%complement) abs_tol = 4.0_qp*eps_qp*sqrt((1.0_qp - fun%radius)* &
+                                                         (1.0_qp + fun%radius))
         if (curvature > 0.0_qp) then
             call newton_bracketed(fun, 0.0_qp, f_0, 0.5_qp*pi, f_end, start, 4.0_qp*eps_qp, &
-                                  0.0_qp, max_steps, beta, steps, status, curvature)
+                                  abs_tol, max_steps, beta, steps, status, curvature)
         else
             call newton_bracketed(fun, 0.0_qp, f_0, 0.5_qp*pi, f_end, start, 4.0_qp*eps_qp, &
-                                  0.0_qp, max_steps, beta, steps, status)
+                                  abs_tol, max_steps, beta, steps, status)
         end if
     end subroutine solve_beta
 
