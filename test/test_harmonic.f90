@@ -497,6 +497,15 @@ contains
         call check_close(tunnel%time, 0.3_qp*pi, 8.0_qp, &
                          'deepest point: t = (pi/2) sqrt(1 - r_B^2)')
 
+        ! shallow B (r_B next to 1, theta_B near the apse angle's scale): d theta/d beta
+        ! is Y - h X, which cancelled there (up to 37 binary128 steps, derivative zeroed in
+        ! hardware precision); the angle at r_B on the tunnel found, from its depth, must
+        ! be theta_B
+        call shallow(1.0_qp - 4.2e-16_qp, 5.5e-16_qp)
+        call shallow(1.0_qp - 1.7e-18_qp, 1.4e-19_qp)
+        call shallow(1.0_qp - 1.0e-29_qp, 3.6e-30_qp)
+        call shallow(1.0_qp - 5.5e-11_qp, 8.6e-11_qp)
+
         ! special endpoints
         tunnel = solve_harmonic_endpoint(0.4_qp, 0.0_qp)
         call check(tunnel%status == status_ok .and. tunnel%arch == arch_radial .and. &
@@ -553,6 +562,20 @@ contains
         tunnel = solve_harmonic_endpoint(0.5_qp, nan)
         call check(tunnel%status == status_not_finite .and. ieee_is_finite(tunnel%time) .and. &
                    ieee_is_finite(tunnel%min_radius), 'NaN refused, outputs defined')
+    contains
+        subroutine shallow(r_b, theta_b)
+            real(qp), intent(in) :: r_b, theta_b
+            type(harmonic_tunnel) :: t
+            character(len=40) :: label
+            write (label, '(a,es9.2,a,es9.2)') '1 - r_B =', real(1.0_qp - r_b), &
+                ', theta_B =', real(theta_b)
+            t = solve_harmonic_endpoint(r_b, theta_b)
+            call check(t%status == status_ok .and. t%steps <= 4, &
+                       'shallow B solved in <= 4 steps: '//trim(label))
+            call check_close(hypocycloid_angle_at_radius(r_b, t%min_radius, &
+                             t%arch == arch_second, t%depth), theta_b, 16.0_qp, &
+                             'shallow B: theta(r_B) = theta_B: '//trim(label))
+        end subroutine shallow
     end subroutine two_point_tests
 
     subroutine tautochrone_tests()

@@ -59,9 +59,13 @@
 !! precision. It evaluates theta with sin h = sqrt(1 - r_B^2)/sqrt(1 - rho_m^2) and
 !! cos h = +-r_B cos(beta)/sqrt(1 - rho_m^2) as they are, and r_B - rho_m =
 !! 2 r_B sin^2(pi/4 - beta/2), so neither the centre nor the deepest point costs digits.
+!! A root beyond beta = pi/4 is sought in gamma = pi/2 - beta (shallow tunnels: r_B next to
+!! 1 needs 1 - rho_m = (1 - r_B) + 2 r_B sin^2(gamma/2) to gamma's relative precision), and
+!! d theta/d beta = +-(sqrt(1 - r_B^2) - h X) without cancellation (`across_minus_arc`).
 !! Special endpoints: theta_B = 0 (radial fall along OA, rho_m = 0),
 !! theta_B = pi (the diametral tunnel, B beyond the centre, rho_m = 0), theta_B equal to
-!! the apse angle (B is the deepest point, rho_m = r_B), r_B = 1 (surface to surface,
+!! the apse angle to two roundings (B is the deepest point, rho_m = r_B), r_B = 1 (surface
+!! to surface,
 !! rho_m = 1 - theta_B/pi); rho_m below half the smallest binary128 number (r_B theta_B
 !! below about 3e-4966 on the first half-arch) is returned as 0, the straight tunnel,
 !! with s and t at their limits. As r_B -> 0 the solution tends to the straight diametral
@@ -87,7 +91,8 @@ module brachistochrone_harmonic
                                       status_latitude_out_of_range, &
                                       status_bad_planet
     use brachistochrone_solution, only: endpoint_status, region_inside
-    use brachistochrone_arches, only: arch_none, arch_first, arch_second, arch_complete, arch_radial
+    use brachistochrone_arches, only: arch_none, arch_first, arch_second, arch_complete, &
+                                      arch_radial
     use brachistochrone_roots, only: root_function, newton_bracketed
     use brachistochrone_quadrature, only: univariate_integrand, gauss_legendre, integrate_adaptive
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
@@ -491,8 +496,11 @@ contains
             ! the diametral tunnel, B beyond the centre
             call complete_tunnel(tunnel, 0.0_qp, 1.0_qp, atan2(across, -radius))
             tunnel%arch = arch_second
-        else if (angle == apse_angle) then
-            ! B is the deepest point
+        else if (abs(angle - apse_angle) <= 2.0_qp*eps_qp*angle) then
+            ! B is the deepest point (to two roundings of theta_B: the root would be
+            ! gamma = |theta_B - apse angle|/sqrt(1 - r_B^2) < 2.3 eps, which moves rho_m by
+            ! eps^2 and h by under 2 eps; Newton's step from the early root overshoots
+            ! gamma = 0 there and bisection took 48 steps)
             call complete_tunnel(tunnel, radius, 1.0_qp - radius, 0.5_qp*pi)
             tunnel%arch = arch_first
         else
@@ -538,30 +546,58 @@ contains
         real(qp), intent(in) :: f_lo, f_hi, x0  !! f at beta = 0, pi/2; first guess
         real(qp), intent(out) :: beta           !! the root (gamma if fun%complement)
         integer, intent(out) :: steps, status   !! binary128 evaluations, status
-        real(qp) :: start, curvature, f_0, f_end, abs_tol
+        real(qp) :: start, curvature, across, shallow_start, shallow_curvature
+        integer :: more
+        across = sqrt((1.0_qp - fun%radius)*(1.0_qp + fun%radius))
         fun%complement = .false.
         call early_beta(fun%radius, fun%angle, fun%side, .false., x0, start, curvature)
-        if (start > 0.25_qp*pi) then
+        if (curvature == 0.0_qp .and. across < 0.5_qp) then
+            ! a shallow B (r_B next to 1): theta moves only within gamma of the order of
+            ! sqrt(1 - r_B^2) of the deepest point, where the start x0 (linear in beta) is
+            ! not; the early phase in gamma from there
+            call early_beta(fun%radius, fun%angle, fun%side, .true., across, &
+                            shallow_start, shallow_curvature)
+            if (shallow_curvature > 0.0_qp) then
+                fun%complement = .true.
+                start = shallow_start
+                curvature = shallow_curvature
+            end if
+        else if (start > 0.25_qp*pi) then
             ! polish the start in gamma (one or two hardware steps) for its curvature
             fun%complement = .true.
             call early_beta(fun%radius, fun%angle, fun%side, .true., 0.5_qp*pi - start, &
                             start, curvature)
         end if
-        f_0 = merge(f_hi, f_lo, fun%complement)
-        f_end = merge(f_lo, f_hi, fun%complement)
-        ! gamma to 4 eps relative keeps 1 - rho_m's; the phase h needs gamma only to
-        ! 4 eps sqrt(1 - r_B^2) absolute (B next to its deepest point, gamma ~ 1e-17: f is
-        ! quadratic in gamma there and a relative tolerance alone is not reached)
-        abs_tol = 0.0_qp
-        if (fun%complement) abs_tol = 4.0_qp*eps_qp*sqrt((1.0_qp - fun%radius)* &
-                                                         (1.0_qp + fun%radius))
-        if (curvature > 0.0_qp) then
-            call newton_bracketed(fun, 0.0_qp, f_0, 0.5_qp*pi, f_end, start, 4.0_qp*eps_qp, &
-                                  abs_tol, max_steps, beta, steps, status, curvature)
-        else
-            call newton_bracketed(fun, 0.0_qp, f_0, 0.5_qp*pi, f_end, start, 4.0_qp*eps_qp, &
-                                  abs_tol, max_steps, beta, steps, status)
+        call run_newton(start, curvature, beta, steps, status)
+        if (status == status_ok .and. .not. fun%complement .and. beta > 0.25_qp*pi) then
+            ! found in beta (the early phase failed): on in gamma, to its relative precision
+            fun%complement = .true.
+            call run_newton(0.5_qp*pi - beta, 0.0_qp, beta, more, status)
+            steps = steps + more
         end if
+    contains
+        !> newton_bracketed on [0, pi/2] in the current unknown (K = curvature if known).
+        !! gamma to 4 eps relative keeps 1 - rho_m's; the phase h needs gamma only to
+        !! 4 eps sqrt(1 - r_B^2) absolute (B next to its deepest point, gamma ~ 1e-17: f is
+        !! quadratic in gamma there and a relative tolerance alone is not reached).
+        pure subroutine run_newton(x_start, k, root, used, stat)
+            real(qp), intent(in) :: x_start, k
+            real(qp), intent(out) :: root
+            integer, intent(out) :: used, stat
+            real(qp) :: f_0, f_end, abs_tol, k_used
+            k_used = k
+            f_0 = merge(f_hi, f_lo, fun%complement)
+            f_end = merge(f_lo, f_hi, fun%complement)
+            abs_tol = merge(4.0_qp*eps_qp*across, 0.0_qp, fun%complement)
+            if (k > 0.0_qp) then
+                call newton_bracketed(fun, 0.0_qp, f_0, 0.5_qp*pi, f_end, x_start, &
+                                      4.0_qp*eps_qp, abs_tol, max_steps, root, used, stat, &
+                                      k_used)
+            else
+                call newton_bracketed(fun, 0.0_qp, f_0, 0.5_qp*pi, f_end, x_start, &
+                                      4.0_qp*eps_qp, abs_tol, max_steps, root, used, stat)
+            end if
+        end subroutine run_newton
     end subroutine solve_beta
 
     !> sin(beta), cos(beta) and sin(pi/4 - beta/2) from the unknown x: beta itself, or
@@ -594,7 +630,9 @@ contains
     !!
     !! With X = side r cos(beta), Y = sqrt(1 - r^2): X^2 + Y^2 = 1 - rho_m^2, h = atan2(Y, X),
     !! dh/dbeta = side Y rho_m/(1 - rho_m^2), d theta/dh = rho_m Y^2/r^2,
-    !! d theta/d rho_m = X Y/((1 - rho_m^2) r^2) - h, d rho_m/dbeta = r cos(beta).
+    !! d theta/d rho_m = X Y/((1 - rho_m^2) r^2) - h, d rho_m/dbeta = r cos(beta); their
+    !! sum is d theta/d beta = side (Y - h X) (the terms in Y^3 and Y add up to Y), formed
+    !! without cancellation by `across_minus_arc`.
     pure subroutine endpoint_angle_evaluate(self, x, f, df, status)
         class(endpoint_angle_function), intent(in) :: self
         real(qp), intent(in) :: x       !! beta (gamma = pi/2 - beta if self%complement)
@@ -610,13 +648,59 @@ contains
         h = atan2(across, along)
         call position_kernel(h, across/sqrt(d_plus), along/sqrt(d_plus), rho_m, d, px, py)
         f = atan2(py, px) - self%angle
-        ! without r_B^2 (it underflows for r_B below 1e-2466): rho_m/r_B = sin(beta),
-        ! along/r_B = side cos(beta)
-        df = self%side*sine**2*across**3/d_plus &
-             + (self%side*cosine**2*across/d_plus - h*self%radius*cosine)
+        df = self%side*across_minus_arc(across, along, h)
         if (self%complement) df = -df
         status = status_ok
     end subroutine endpoint_angle_evaluate
+
+    !> Y - h X for h = atan2(Y, X), Y >= 0 (d theta/d beta, side 1): where X > 0 and
+    !! z = Y/X <= 1/4 (a shallow B, r_B -> 1 at small beta, where Y and h X agree to
+    !! about log10(1/z^2) digits) as X (z - atan z) by its series
+    !! z^3/3 - z^5/5 + ..., else directly (at most 6 bits lost at z = 1/4).
+    elemental function across_minus_arc(y, x, h) result(d)
+        real(qp), intent(in) :: y, x, h
+        real(qp) :: d
+        real(qp) :: z, z2, power, total, term
+        integer :: k
+        if (.not. (x > 0.0_qp .and. y <= 0.25_qp*x)) then
+            d = y - h*x
+            return
+        end if
+        z = y/x
+        z2 = z*z
+        power = z*z2
+        total = 0.0_qp
+        do k = 1, max_series_terms
+            term = power/real(2*k + 1, qp)
+            total = total + merge(term, -term, mod(k, 2) == 1)
+            if (term <= 0.125_qp*eps_qp*total) exit
+            power = power*z2
+        end do
+        d = x*total
+    end function across_minus_arc
+
+    !> `across_minus_arc` in hardware precision.
+    elemental function across_minus_arc_xp(y, x, h) result(d)
+        real(xp), intent(in) :: y, x, h
+        real(xp) :: d
+        real(xp) :: z, z2, power, total, term
+        integer :: k
+        if (.not. (x > 0.0_xp .and. y <= 0.25_xp*x)) then
+            d = y - h*x
+            return
+        end if
+        z = y/x
+        z2 = z*z
+        power = z*z2
+        total = 0.0_xp
+        do k = 1, max_series_terms
+            term = power/real(2*k + 1, xp)
+            total = total + merge(term, -term, mod(k, 2) == 1)
+            if (term <= 0.125_xp*epsilon(1.0_xp)*total) exit
+            power = power*z2
+        end do
+        d = x*total
+    end function across_minus_arc_xp
 
     ! ---------------------------------------------------------------- early phase (xp)
 
@@ -685,15 +769,14 @@ contains
     end subroutine early_beta
 
     !> `endpoint_angle_evaluate` in hardware precision: theta(B) - theta_B and its
-    !! derivative in the unknown x (0 where cancellation leaves it fewer than 5 digits),
-    !! from r_B, 1 - r_B (from binary128: r_B may round to 1 in `xp`), theta_B, the side
-    !! and x = beta (gamma = pi/2 - beta if complement).
+    !! derivative in the unknown x, from r_B, 1 - r_B (from binary128: r_B may round to 1
+    !! in `xp`), theta_B, the side and x = beta (gamma = pi/2 - beta if complement).
     pure subroutine endpoint_angle_xp(radius, gap, angle, side, complement, x, f, df)
         real(xp), intent(in) :: radius, gap, angle, side, x
         logical, intent(in) :: complement
         real(xp), intent(out) :: f, df
         real(xp), parameter :: quarter_pi = real(0.25_qp*pi, xp)
-        real(xp) :: rho_m, d, d_plus, across, along, h, px, py, lead, trail, sine, cosine, half
+        real(xp) :: rho_m, d, d_plus, across, along, h, px, py, sine, cosine, half
         if (complement) then
             sine = cos(x)
             cosine = sin(x)
@@ -711,14 +794,7 @@ contains
         h = atan2(across, along)
         call position_kernel_xp(h, across/sqrt(d_plus), along/sqrt(d_plus), rho_m, d, px, py)
         f = atan2(py, px) - angle
-        ! as `endpoint_angle_evaluate`, without r_B^2
-        lead = side*sine**2*across**3/d_plus
-        trail = side*cosine**2*across/d_plus
-        df = lead + (trail - h*radius*cosine)
-        ! as r_B -> 1 at small beta, trail - h r_B cos(beta) cancels: where more than 14
-        ! digits are lost, df = 0 (the early phase then leaves it to binary128)
-        if (abs(df) < 1.0e-14_xp*(abs(lead) + abs(trail) + abs(h)*radius*cosine)) &
-            df = 0.0_xp
+        df = side*across_minus_arc_xp(across, along, h)
         if (complement) df = -df
     end subroutine endpoint_angle_xp
 
