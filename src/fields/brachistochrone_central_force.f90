@@ -646,6 +646,16 @@ contains
         count = 0
         b = min(1.0_qp, 0.5_qp*model%sigma_apse)
         c = min(1.0_qp, 0.5_qp*model%sigma_start)
+        ! an integral that ends at the endpoint (weight 0 beyond it) inside the first
+        ! ladder panel: one root panel up to it (fewer nodes than the root panel and the
+        ! piece of the ladder panel)
+        if (a%weight_above == 0.0_qp .and. a%lambda_r > b .and. a%lambda_r <= 4.0_qp*b &
+            .and. a%lambda_r + c < a%big_lambda) then
+            b = a%lambda_r
+        else if (a%weight_below == 0.0_qp .and. a%delta_r > c .and. &
+                 a%delta_r <= 4.0_qp*c .and. a%delta_r + b < a%big_lambda) then
+            c = a%delta_r
+        end if
         if (a%big_lambda <= b + c) then
             ! two root panels meeting in between: lambda = b' s^2 and delta = c' s^2
             b = a%big_lambda*b/(b + c)
