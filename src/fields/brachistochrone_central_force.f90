@@ -759,20 +759,34 @@ contains
     end subroutine push
 
     !> log of the Bernstein parameter of a panel: the ellipse through the nearest
-    !! singularity of the integrands, in the panel's variable (double precision).
-    pure function bernstein_log(model, big_lambda, p) result(log_rho)
+    !! singularity of the integrands, in the panel's variable (double precision), each
+    !! singularity counted by its size: the integrands decay like exp(-kappa lambda)
+    !! away from the apse (kappa = pi/sigma_apse, Theta's rate; S's is faster), so one
+    !! at the real part lambda* adds about |f(lambda*)| rho*^(-2n) to the error, a share
+    !! exp(-kappa (lambda* - lambda_0)) of that of the panel's largest value at lambda_0.
+    !! A singularity of weight w (<= 0) on the ellipse rho* is taken as one of weight 1 on
+    !! log rho* (1 + w/(35 log 10)) (the same rule for 35 digits, fewer nodes than it
+    !! needs for fewer digits), beyond reach below exp(-35 log 10). With `unweighted`
+    !! (integrands not decaying from the apse: `fall_piece`) every singularity counts.
+    pure function bernstein_log(model, big_lambda, p, unweighted) result(log_rho)
         type(central_force_model), intent(in) :: model
         real(qp), intent(in) :: big_lambda
         type(panel), intent(in) :: p
+        logical, intent(in), optional :: unweighted
         real(real64) :: log_rho
+        real(real64), parameter :: reach = 35.0_real64*log(10.0_real64), most = 8.0_real64
         complex(real64) :: zeta(8), point, image(2)
-        real(real64) :: lo, hi, big, sa, ss, rho_min
+        real(real64) :: lo, hi, big, sa, ss, log_min, kappa, near, w, lr
         integer :: k, m, images
         lo = real(p%lo, real64)
         hi = real(p%hi, real64)
         big = real(big_lambda, real64)
         sa = real(model%sigma_apse, real64)
         ss = real(model%sigma_start, real64)
+        kappa = real(pi/model%sigma_apse, real64)
+        if (present(unweighted)) then
+            if (unweighted) kappa = 0.0_real64
+        end if
         ! singular points as offsets from the panel's own end (apse or start)
         ! (+-2i: not a singularity but the growth of the factors exp(-+lambda),
         ! exp(-delta) off the real axis, which fewer nodes would not resolve)
@@ -788,8 +802,25 @@ contains
                     cmplx(big, sa, real64), cmplx(big, -sa, real64), &
                     (0.0_real64, 2.0_real64), (0.0_real64, -2.0_real64)]
         end select
-        rho_min = huge(1.0_real64)
+        ! the panel's point nearest the apse (its largest integrands), from its own end
+        select case (p%kind)
+        case (kind_apse_root)
+            near = real(p%scale, real64)*lo*lo
+        case (kind_apse)
+            near = lo
+        case (kind_start)
+            near = -hi
+        case default
+            near = -real(p%scale, real64)*hi*hi
+        end select
+        log_min = most
         do k = 1, size(zeta)
+            ! weight: log of the integrands' size at the singularity relative to the panel's
+            ! largest (the offsets on the start side count toward the start)
+            w = 0.0_real64
+            if (k <= 6) w = min(0.0_real64, -kappa*(merge(1.0_real64, -1.0_real64, &
+                p%kind <= kind_apse)*real(zeta(k)) - near))
+            if (w <= -reach) cycle
             if (p%kind == kind_apse .or. p%kind == kind_start) then
                 images = 1
                 image(1) = zeta(k)
@@ -800,10 +831,11 @@ contains
                 image(1:2) = [point, -point]
             end if
             do m = 1, images
-                rho_min = min(rho_min, bernstein2((2.0_real64*image(m) - (lo + hi))/(hi - lo)))
+                lr = 0.5_real64*log(bernstein2((2.0_real64*image(m) - (lo + hi))/(hi - lo)))
+                log_min = min(log_min, lr*reach/(reach + w))
             end do
         end do
-        log_rho = max(0.5_real64*log(rho_min), 1.0e-3_real64)
+        log_rho = max(log_min, 1.0e-3_real64)
     contains
         !> The square of the Bernstein parameter through x: the larger of |x -+ root|
         !! (their product is 1), squared (no hypot).
@@ -1278,7 +1310,7 @@ contains
                 if (share < negligible) cycle
             end if
             ! singularities: delta = 0 and +-i sigma_start (x = 0 is at infinity)
-            pan%log_rho = bernstein_log(model, 1.0e30_qp, pan)
+            pan%log_rho = bernstein_log(model, 1.0e30_qp, pan, .true.)
             j = rule_for(pan%log_rho, fine_digits + &
                          real(min(0.0_real64, log10(max(real(share, real64), &
                                                             1.0e-60_real64))), qp), &
