@@ -110,6 +110,9 @@ module brachistochrone_central_force
     !> Laws whose integrands decay faster than exp(-steep_decay lambda) from the apse
     !! (power laws n > 2 steep_decay - 1) take the early phase in u in logarithmic forms
     real(qp), parameter :: steep_decay = 6.0_qp
+    !> Growth of the panels between the root panels (`arch_panels`), and their largest
+    !! length in units of sigma
+    real(qp), parameter :: ladder = 8.0_qp
     !> The far tables beyond them: Lambda in [table_high, far_high] (R from 1.7e-5 down
     !! to about 2e-35), far_pieces equal pieces in z = log Lambda (`build_far_tables`).
     real(qp), parameter :: far_high = 80.0_qp
@@ -678,8 +681,8 @@ contains
                 if (decay_rate*(lo - origin) > 300.0_qp) exit
                 ! growth 4, length at most 4 sigma: the integrands decay like
                 ! exp(-pi lambda/sigma_apse), which grows as fast off the real axis
-                hi = min(4.0_qp*lo, lo + 4.0_qp*model%sigma_apse, meet)
-                if (hi > 0.75_qp*meet .and. meet - lo <= 4.0_qp*model%sigma_apse) hi = meet
+                hi = min(ladder*lo, lo + ladder*model%sigma_apse, meet)
+                if (hi > 0.75_qp*meet .and. meet - lo <= ladder*model%sigma_apse) hi = meet
                 call add_split(panels, count, kind_apse, lo, hi, 1.0_qp, a%lambda_r, a)
                 lo = hi
             end do
@@ -690,9 +693,9 @@ contains
                            split_root(a%delta_r/c), a)
             lo = c
             do while (lo < a%big_lambda - meet)
-                hi = min(4.0_qp*lo, lo + 4.0_qp*model%sigma_start, a%big_lambda - meet)
+                hi = min(ladder*lo, lo + ladder*model%sigma_start, a%big_lambda - meet)
                 if (hi > 0.75_qp*(a%big_lambda - meet) .and. &
-                    a%big_lambda - meet - lo <= 4.0_qp*model%sigma_start) &
+                    a%big_lambda - meet - lo <= ladder*model%sigma_start) &
                     hi = a%big_lambda - meet
                 call add_split(start_side, n_start, kind_start, lo, hi, 1.0_qp, a%delta_r, a)
                 lo = hi
