@@ -870,7 +870,7 @@ contains
             ! without growth the full ellipse is best
             if (growth == 0.0_real64 .and. k > 1) exit
             lr = log_rho*fractions(k)
-            need = (target + growth*(cosh(lr) - 1.0_real64))/(2.0_real64*0.95_real64*lr)
+            need = (target + growth*(cosh(lr) - 1.0_real64))/(2.0_real64*lr)
             best = min(best, need)
         end do
         if (best > real(max_nodes, real64)) then
