@@ -18,10 +18,12 @@
 !! (delta = 0), removed by lambda = b s^2, delta = c s^2 on the end panels (two such
 !! panels meeting in between when Lambda is small), and complex singularities at
 !! distance sigma_apse, sigma_start from the ends (`log_scales`); the point x = 0 is at
-!! lambda = -infinity. Between the end panels the panels grow geometrically (ratio 4,
-!! length at most 4 sigma) away from both ends, so the count is O(log log(1/R)), and the
-!! node count of each panel comes from the Bernstein ellipse through the nearest
-!! singularity (as on the inverse-square fast path) and the growth of the integrands off
+!! lambda = -infinity. Between the end panels the panels grow geometrically (ratio 8,
+!! length at most 8 sigma) away from both ends, so the count is O(log log(1/R)); an
+!! integral that ends at the endpoint inside the first of them takes one end panel up to
+!! it instead. The node count of each panel comes from the Bernstein ellipse through the
+!! nearest singularity (as on the inverse-square fast path), each singularity counted by
+!! the integrands' size there (`bernstein_log`), and the growth of the integrands off
 !! the real axis (`rule_for`). Away from the apse the integrands decay like
 !! exp(-(n+1) lambda/2) or faster: each panel is asked only for the digits its share of
 !! the running sum needs, and panels below 1e-40 of it are skipped. Transcendentals:
