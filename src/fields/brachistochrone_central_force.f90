@@ -681,7 +681,7 @@ contains
             do while (lo < meet)
                 ! past exp(-300) of the integrands at the origin: nothing more to add
                 if (decay_rate*(lo - origin) > 300.0_qp) exit
-                ! growth 4, length at most 4 sigma: the integrands decay like
+                ! growth `ladder`, length at most ladder sigma: the integrands decay like
                 ! exp(-pi lambda/sigma_apse), which grows as fast off the real axis
                 hi = min(ladder*lo, lo + ladder*model%sigma_apse, meet)
                 if (hi > 0.75_qp*meet .and. meet - lo <= ladder*model%sigma_apse) hi = meet
