@@ -18,10 +18,12 @@
 !! (delta = 0), removed by lambda = b s^2, delta = c s^2 on the end panels (two such
 !! panels meeting in between when Lambda is small), and complex singularities at
 !! distance sigma_apse, sigma_start from the ends (`log_scales`); the point x = 0 is at
-!! lambda = -infinity. Between the end panels the panels grow geometrically (ratio 4,
-!! length at most 4 sigma) away from both ends, so the count is O(log log(1/R)), and the
-!! node count of each panel comes from the Bernstein ellipse through the nearest
-!! singularity (as on the inverse-square fast path) and the growth of the integrands off
+!! lambda = -infinity. Between the end panels the panels grow geometrically (ratio 8,
+!! length at most 8 sigma) away from both ends, so the count is O(log log(1/R)); an
+!! integral that ends at the endpoint inside the first of them takes one end panel up to
+!! it instead. The node count of each panel comes from the Bernstein ellipse through the
+!! nearest singularity (as on the inverse-square fast path), each singularity counted by
+!! the integrands' size there (`bernstein_log`), and the growth of the integrands off
 !! the real axis (`rule_for`). Away from the apse the integrands decay like
 !! exp(-(n+1) lambda/2) or faster: each panel is asked only for the digits its share of
 !! the running sum needs, and panels below 1e-40 of it are skipped. Transcendentals:
@@ -110,6 +112,9 @@ module brachistochrone_central_force
     !> Laws whose integrands decay faster than exp(-steep_decay lambda) from the apse
     !! (power laws n > 2 steep_decay - 1) take the early phase in u in logarithmic forms
     real(qp), parameter :: steep_decay = 6.0_qp
+    !> Growth of the panels between the root panels (`arch_panels`), and their largest
+    !! length in units of sigma
+    real(qp), parameter :: ladder = 8.0_qp
     !> The far tables beyond them: Lambda in [table_high, far_high] (R from 1.7e-5 down
     !! to about 2e-35), far_pieces equal pieces in z = log Lambda (`build_far_tables`).
     real(qp), parameter :: far_high = 80.0_qp
@@ -646,6 +651,16 @@ contains
         count = 0
         b = min(1.0_qp, 0.5_qp*model%sigma_apse)
         c = min(1.0_qp, 0.5_qp*model%sigma_start)
+        ! an integral that ends at the endpoint (weight 0 beyond it) inside the first
+        ! ladder panel: one root panel up to it (fewer nodes than the root panel and the
+        ! piece of the ladder panel)
+        if (a%weight_above == 0.0_qp .and. a%lambda_r > b .and. a%lambda_r <= 4.0_qp*b &
+            .and. a%lambda_r + c < a%big_lambda) then
+            b = a%lambda_r
+        else if (a%weight_below == 0.0_qp .and. a%delta_r > c .and. &
+                 a%delta_r <= 4.0_qp*c .and. a%delta_r + b < a%big_lambda) then
+            c = a%delta_r
+        end if
         if (a%big_lambda <= b + c) then
             ! two root panels meeting in between: lambda = b' s^2 and delta = c' s^2
             b = a%big_lambda*b/(b + c)
@@ -666,10 +681,10 @@ contains
             do while (lo < meet)
                 ! past exp(-300) of the integrands at the origin: nothing more to add
                 if (decay_rate*(lo - origin) > 300.0_qp) exit
-                ! growth 4, length at most 4 sigma: the integrands decay like
+                ! growth `ladder`, length at most ladder sigma: the integrands decay like
                 ! exp(-pi lambda/sigma_apse), which grows as fast off the real axis
-                hi = min(4.0_qp*lo, lo + 4.0_qp*model%sigma_apse, meet)
-                if (hi > 0.75_qp*meet .and. meet - lo <= 4.0_qp*model%sigma_apse) hi = meet
+                hi = min(ladder*lo, lo + ladder*model%sigma_apse, meet)
+                if (hi > 0.75_qp*meet .and. meet - lo <= ladder*model%sigma_apse) hi = meet
                 call add_split(panels, count, kind_apse, lo, hi, 1.0_qp, a%lambda_r, a)
                 lo = hi
             end do
@@ -680,9 +695,9 @@ contains
                            split_root(a%delta_r/c), a)
             lo = c
             do while (lo < a%big_lambda - meet)
-                hi = min(4.0_qp*lo, lo + 4.0_qp*model%sigma_start, a%big_lambda - meet)
+                hi = min(ladder*lo, lo + ladder*model%sigma_start, a%big_lambda - meet)
                 if (hi > 0.75_qp*(a%big_lambda - meet) .and. &
-                    a%big_lambda - meet - lo <= 4.0_qp*model%sigma_start) &
+                    a%big_lambda - meet - lo <= ladder*model%sigma_start) &
                     hi = a%big_lambda - meet
                 call add_split(start_side, n_start, kind_start, lo, hi, 1.0_qp, a%delta_r, a)
                 lo = hi
@@ -713,6 +728,8 @@ contains
 
     !> Add the panel [lo, hi] of `kind`, split at `split` (in the panel's variable) into
     !! the parts below and above the endpoint, with their weights; zero weights dropped.
+    !! The parts in the order of the variable (`arch_panels` reverses the start side's
+    !! list as a whole: the order away from the apse, which `panel_share` counts on).
     pure subroutine add_split(panels, count, kind, lo, hi, scale, split, a)
         type(panel), intent(inout) :: panels(:)
         integer, intent(inout) :: count
@@ -729,9 +746,6 @@ contains
             call push(panels, count, panel(kind, lo, hi, scale, w_hi, 1.0_real64))
         else if (split >= hi) then
             call push(panels, count, panel(kind, lo, hi, scale, w_lo, 1.0_real64))
-        else if (reversed) then
-            call push(panels, count, panel(kind, split, hi, scale, w_hi, 1.0_real64))
-            call push(panels, count, panel(kind, lo, split, scale, w_lo, 1.0_real64))
         else
             call push(panels, count, panel(kind, lo, split, scale, w_lo, 1.0_real64))
             call push(panels, count, panel(kind, split, hi, scale, w_hi, 1.0_real64))
@@ -749,20 +763,34 @@ contains
     end subroutine push
 
     !> log of the Bernstein parameter of a panel: the ellipse through the nearest
-    !! singularity of the integrands, in the panel's variable (double precision).
-    pure function bernstein_log(model, big_lambda, p) result(log_rho)
+    !! singularity of the integrands, in the panel's variable (double precision), each
+    !! singularity counted by its size: the integrands decay like exp(-kappa lambda)
+    !! away from the apse (kappa = pi/sigma_apse, Theta's rate; S's is faster), so one
+    !! at the real part lambda* adds about |f(lambda*)| rho*^(-2n) to the error, a share
+    !! exp(-kappa (lambda* - lambda_0)) of that of the panel's largest value at lambda_0.
+    !! A singularity of weight w (<= 0) on the ellipse rho* is taken as one of weight 1 on
+    !! log rho* (1 + w/(35 log 10)) (the same rule for 35 digits, fewer nodes than it
+    !! needs for fewer digits), beyond reach below exp(-35 log 10). With `unweighted`
+    !! (integrands not decaying from the apse: `fall_piece`) every singularity counts.
+    pure function bernstein_log(model, big_lambda, p, unweighted) result(log_rho)
         type(central_force_model), intent(in) :: model
         real(qp), intent(in) :: big_lambda
         type(panel), intent(in) :: p
+        logical, intent(in), optional :: unweighted
         real(real64) :: log_rho
+        real(real64), parameter :: reach = 35.0_real64*log(10.0_real64), most = 8.0_real64
         complex(real64) :: zeta(8), point, image(2)
-        real(real64) :: lo, hi, big, sa, ss, rho_min
+        real(real64) :: lo, hi, big, sa, ss, log_min, kappa, near, w, lr
         integer :: k, m, images
         lo = real(p%lo, real64)
         hi = real(p%hi, real64)
         big = real(big_lambda, real64)
         sa = real(model%sigma_apse, real64)
         ss = real(model%sigma_start, real64)
+        kappa = real(pi/model%sigma_apse, real64)
+        if (present(unweighted)) then
+            if (unweighted) kappa = 0.0_real64
+        end if
         ! singular points as offsets from the panel's own end (apse or start)
         ! (+-2i: not a singularity but the growth of the factors exp(-+lambda),
         ! exp(-delta) off the real axis, which fewer nodes would not resolve)
@@ -778,8 +806,25 @@ contains
                     cmplx(big, sa, real64), cmplx(big, -sa, real64), &
                     (0.0_real64, 2.0_real64), (0.0_real64, -2.0_real64)]
         end select
-        rho_min = huge(1.0_real64)
+        ! the panel's point nearest the apse (its largest integrands), from its own end
+        select case (p%kind)
+        case (kind_apse_root)
+            near = real(p%scale, real64)*lo*lo
+        case (kind_apse)
+            near = lo
+        case (kind_start)
+            near = -hi
+        case default
+            near = -real(p%scale, real64)*hi*hi
+        end select
+        log_min = most
         do k = 1, size(zeta)
+            ! weight: log of the integrands' size at the singularity relative to the panel's
+            ! largest (the offsets on the start side count toward the start)
+            w = 0.0_real64
+            if (k <= 6) w = min(0.0_real64, -kappa*(merge(1.0_real64, -1.0_real64, &
+                p%kind <= kind_apse)*real(zeta(k)) - near))
+            if (w <= -reach) cycle
             if (p%kind == kind_apse .or. p%kind == kind_start) then
                 images = 1
                 image(1) = zeta(k)
@@ -790,10 +835,11 @@ contains
                 image(1:2) = [point, -point]
             end if
             do m = 1, images
-                rho_min = min(rho_min, bernstein2((2.0_real64*image(m) - (lo + hi))/(hi - lo)))
+                lr = 0.5_real64*log(bernstein2((2.0_real64*image(m) - (lo + hi))/(hi - lo)))
+                log_min = min(log_min, lr*reach/(reach + w))
             end do
         end do
-        log_rho = max(0.5_real64*log(rho_min), 1.0e-3_real64)
+        log_rho = max(log_min, 1.0e-3_real64)
     contains
         !> The square of the Bernstein parameter through x: the larger of |x -+ root|
         !! (their product is 1), squared (no hypot).
@@ -826,7 +872,7 @@ contains
             ! without growth the full ellipse is best
             if (growth == 0.0_real64 .and. k > 1) exit
             lr = log_rho*fractions(k)
-            need = (target + growth*(cosh(lr) - 1.0_real64))/(2.0_real64*0.95_real64*lr)
+            need = (target + growth*(cosh(lr) - 1.0_real64))/(2.0_real64*lr)
             best = min(best, need)
         end do
         if (best > real(max_nodes, real64)) then
@@ -1268,7 +1314,7 @@ contains
                 if (share < negligible) cycle
             end if
             ! singularities: delta = 0 and +-i sigma_start (x = 0 is at infinity)
-            pan%log_rho = bernstein_log(model, 1.0e30_qp, pan)
+            pan%log_rho = bernstein_log(model, 1.0e30_qp, pan, .true.)
             j = rule_for(pan%log_rho, fine_digits + &
                          real(min(0.0_real64, log10(max(real(share, real64), &
                                                             1.0e-60_real64))), qp), &
