@@ -1772,6 +1772,7 @@ contains
         !! through f(lo), f(hi), f'(hi) rather than regula falsi
         real(real64), intent(in), optional :: slope_hi
         real(xp) :: a, b, fa, fb, xk, fk, dk, x_new, x_prev, d_prev, floor, noise
+        real(xp) :: point(3), newton_error
         integer :: iteration
         logical :: rough
         call first_bracket(lo, f_lo, hi, f_hi, a, fa, b, fb)
@@ -1779,6 +1780,9 @@ contains
         curvature = 0.0_qp
         x_prev = a
         d_prev = 0.0_xp
+        ! the previous evaluation of the same precision (x, f, f'; f' = 0: none), for
+        ! the inverse Hermite step
+        point = 0.0_xp
         rough = .true.
         xk = falsi()
         if (present(slope_hi) .and. prob%use_u .and. prob%form == 0) then
@@ -1804,24 +1808,38 @@ contains
                 ! 1e-18): on to the hardware-precision rules, or to the full-precision
                 ! steps
                 x_new = xk
-                if (.not. rough) exit
+                if (.not. rough) then
+                    ! the Newton step within the rounding all the same (the root as
+                    ! close as this precision places it)
+                    if (xk - fk/dk > min(a, b) .and. xk - fk/dk < max(a, b)) &
+                        x_new = xk - fk/dk
+                    exit
+                end if
                 ! with the first bracket again (the rough signs are not sure within
                 ! their rounding)
                 rough = .false.
+                point = 0.0_xp
                 call first_bracket(lo, f_lo, hi, f_hi, a, fa, b, fb)
                 cycle
             else
                 call keep_bracket(xk, fk, a, fa, b, fb)
                 x_new = xk - fk/dk
+                newton_error = huge(1.0_xp)
+                call hermite_step(x_new, newton_error)
                 ! (a Newton step below xk's rounding lands on xk, an end of the bracket:
                 ! the root as close as this precision places it, not a step for falsi)
                 if (.not. (x_new > min(a, b) .and. x_new < max(a, b)) .and. &
                     x_new /= xk) x_new = falsi()
             end if
-            if (rough .and. abs(x_new - xk) <= 1.0e-5_xp*max(abs(xk), floor)) then
-                ! the rough root (the next iterate within about 1e-10): on to the
-                ! hardware-precision rules
+            point = [xk, fk, dk]
+            ! the rough root: the Newton step below 1e-5 (the next iterate within about
+            ! 1e-10), or the inverse Hermite step's distance from it (the Newton step's
+            ! error, which the Hermite step's is far below) below 1e-10
+            if (rough .and. (abs(x_new - xk) <= 1.0e-5_xp*max(abs(xk), floor) .or. &
+                             newton_error <= 1.0e-10_xp*max(abs(xk), floor))) then
+                ! on to the hardware-precision rules
                 rough = .false.
+                point = 0.0_xp
                 call first_bracket(lo, f_lo, hi, f_hi, a, fa, b, fb)
             else if (.not. rough .and. &
                      (abs(x_new - xk) <= 1.0e-12_xp*max(abs(xk), floor) .or. &
@@ -1839,6 +1857,26 @@ contains
         slope = real(dk, qp)
         curvature = 0.5_qp*curvature
     contains
+        !> The root of the cubic x(f) through the previous evaluation of the same
+        !! precision and this one (values and slopes: inverse Hermite interpolation)
+        !! where f is monotone between them and the root is in the bracket; then the
+        !! Newton point's distance from it as `newton_error` (the Newton step errs by
+        !! about |f''/2f'| step^2, the Hermite step by far less: the two evaluations'
+        !! slopes measure f'').
+        pure subroutine hermite_step(x_new, newton_error)
+            real(xp), intent(inout) :: x_new, newton_error
+            real(xp) :: h, s, x_h
+            if (point(3) == 0.0_xp .or. (point(3) > 0.0_xp .neqv. dk > 0.0_xp)) return
+            h = fk - point(2)
+            if (h == 0.0_xp) return
+            s = -point(2)/h
+            x_h = xk + (2.0_xp*s + 1.0_xp)*(s - 1.0_xp)**2*(point(1) - xk) + &
+                  h*s*(s - 1.0_xp)*((s - 1.0_xp)/point(3) + s/dk)
+            if (.not. (x_h > min(a, b) .and. x_h < max(a, b))) return
+            newton_error = abs(x_h - x_new)
+            x_new = x_h
+        end subroutine hermite_step
+
         pure real(xp) function falsi()
             falsi = b - fb*(b - a)/(fb - fa)
             if (.not. (falsi > min(a, b) .and. falsi < max(a, b))) falsi = 0.5_xp*(a + b)
