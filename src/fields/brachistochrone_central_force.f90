@@ -1788,6 +1788,10 @@ contains
         if (present(slope_hi) .and. prob%use_u .and. prob%form == 0) then
             if (slope_hi /= 0.0_real64) xk = hermite(real(slope_hi, xp))
         end if
+        ! steep laws (logarithmic forms): f about linear in lambda_r ~ u^2/R near the
+        ! root, from f(0) at u = 0: regula falsi in u^2
+        if (prob%use_u .and. prob%form /= 0 .and. a == 0.0_xp .and. &
+            ((fa < 0.0_xp) .neqv. (fb < 0.0_xp))) xk = b*sqrt(fa/(fa - fb))
         ! rho next to 1 (second half-arch): Upsilon - Theta(rho,rho) ~ c u^2 but for the
         ! smallest u (falsi would start far below the root; f of opposite signs at a = 0
         ! and b)
