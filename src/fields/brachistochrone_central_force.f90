@@ -1057,13 +1057,8 @@ contains
             end if
             return
         end if
-        below = a
-        below%weight_below = 1.0_qp
-        below%weight_above = 0.0_qp
-        above = a
-        above%weight_below = 0.0_qp
-        call arch_panels(model, below, panels_below, n_below)
-        call arch_panels(model, above, panels_above, n_above)
+        call split_panels(model, a, below, panels_below, n_below, above, panels_above, &
+                          n_above)
         use_below = n_below <= n_above
         if (present(expected) .and. a%weight_below == 0.0_qp) &
             use_below = use_below .and. expected >= 0.5_qp*whole(1)
@@ -1115,6 +1110,55 @@ contains
             end if
         end subroutine part_sums
     end subroutine table_sums
+
+    !> The apse data and panels of the integrals below the endpoint (weights 1, 0) and
+    !! above it (0, 1), as `arch_panels` gives them, from one layout (weights 1, 2, the
+    !! panels told apart by their weights) where the two are parts of it: the layout
+    !! does not depend on the weights but for the cut of the panels past exp(-300) of
+    !! the integrands where the weighted region starts, which the cut never reaches
+    !! where the decay rate pi/sigma_apse times Lambda is below 250 (the tables' range
+    !! but for the steepest laws). Elsewhere two layouts.
+    pure subroutine split_panels(model, a, below, panels_below, n_below, above, &
+                                 panels_above, n_above)
+        type(central_force_model), intent(in) :: model
+        type(arch_setup), intent(in) :: a
+        type(arch_setup), intent(out) :: below, above
+        type(panel), intent(out) :: panels_below(max_panels), panels_above(max_panels)
+        integer, intent(out) :: n_below, n_above
+        type(arch_setup) :: both
+        type(panel) :: panels(max_panels)
+        integer :: count, p
+        below = a
+        below%weight_below = 1.0_qp
+        below%weight_above = 0.0_qp
+        above = a
+        above%weight_below = 0.0_qp
+        above%weight_above = 1.0_qp
+        count = max_panels
+        if (pi/model%sigma_apse*a%big_lambda <= 250.0_qp) then
+            both = a
+            both%weight_below = 1.0_qp
+            both%weight_above = 2.0_qp
+            call arch_panels(model, both, panels, count)
+        end if
+        if (count >= max_panels) then
+            call arch_panels(model, below, panels_below, n_below)
+            call arch_panels(model, above, panels_above, n_above)
+            return
+        end if
+        n_below = 0
+        n_above = 0
+        do p = 1, count
+            if (panels(p)%weight == 1.0_qp) then
+                n_below = n_below + 1
+                panels_below(n_below) = panels(p)
+            else
+                n_above = n_above + 1
+                panels_above(n_above) = panels(p)
+                panels_above(n_above)%weight = 1.0_qp
+            end if
+        end do
+    end subroutine split_panels
 
     !> Whether the first half-arch (weights 0, 1) must be int_lambda_r^Lambda in the early
     !! phase, W - int_0^lambda_r being bound to fail its check in `theta_xp`
@@ -1545,13 +1589,8 @@ contains
         if (found) then
             ! as `table_sums`, Theta scaled by exp(shift)
             whole = whole*exp(shift)
-            below = a
-            below%weight_below = 1.0_qp
-            below%weight_above = 0.0_qp
-            above = a
-            above%weight_below = 0.0_qp
-            call arch_panels(model, below, panels_below, n_below)
-            call arch_panels(model, above, panels_above, n_above)
+            call split_panels(model, a, below, panels_below, n_below, above, panels_above, &
+                              n_above)
             ! (the hardware-precision evaluations straight to int_lambda_r^Lambda where the
             ! check below is bound to fail)
             use_below = n_below <= n_above .and. &
