@@ -1714,6 +1714,18 @@ contains
         end select
     end subroutine node_point_xp
 
+    !> log(ratio) in hardware precision to its relative precision, for a binary128 ratio
+    !! (log1p of ratio - 1, exact in binary128, next to 1).
+    elemental function log_of_ratio(ratio) result(l)
+        real(qp), intent(in) :: ratio
+        real(xp) :: l
+        if (abs(ratio - 1.0_qp) < 0.5_qp) then
+            l = log1p_xp(real(ratio - 1.0_qp, xp))
+        else
+            l = log(real(ratio, xp))
+        end if
+    end function log_of_ratio
+
     !> log(1 + z) in hardware precision (Kahan's correction of log(1 + z)).
     elemental function log1p_xp(z) result(l)
         real(xp), intent(in) :: z
@@ -1775,7 +1787,7 @@ contains
             if (prob%use_u) then
                 f = log(scaled*exp(-shift)/real(prob%psi, xp))
             else
-                f = log(max(scaled, tiny(1.0_xp))) - shift - real(log(prob%psi), xp)
+                f = log(max(scaled, tiny(1.0_xp))) - shift - log(real(prob%psi, xp))
             end if
             slope = scaled_slope/scaled*lambda_slope
         case (2)
@@ -2388,6 +2400,7 @@ contains
         real(qp), intent(out) :: apse_angle_rho    !! Theta(rho, rho) (0 when rho = 1)
         type(arch_setup) :: a
         real(qp) :: sums(3), whole(5)
+        real(xp) :: whole_xp(2)
         real(real64) :: scaled, shift
         logical :: found
         prob%rho = rho
@@ -2396,10 +2409,19 @@ contains
         prob%delta_rho = minus_log(rho, prob%one_minus_rho)
         prob%limit = 2.0_qp*limit
         apse_angle_rho = 0.0_qp
-        call whole_lookup(self, prob%delta_rho, whole, found, 1)
-        if (rho < 1.0_qp .and. found) then
-            apse_angle_rho = whole(1)
-        else if (rho < 1.0_qp) then
+        found = .false.
+        if (rho < 1.0_qp) then
+            ! the hardware-precision table first (no binary128 logarithm); the full
+            ! table where psi is within 1e-12 of it (the half-arch, `at_the_apse`,
+            ! `apse_start` need it to the last bits there)
+            call whole_lookup_xp(self, real(prob%delta_rho, xp), whole_xp, found)
+            apse_angle_rho = real(whole_xp(1), qp)
+            if (.not. found .or. abs(apse_angle_rho - psi) <= 1.0e-12_qp*psi) then
+                call whole_lookup(self, prob%delta_rho, whole, found, 1)
+                apse_angle_rho = whole(1)
+            end if
+        end if
+        if (rho < 1.0_qp .and. .not. found) then
             a = setup_arch(self, rho, prob%one_minus_rho, 0.0_qp, prob%delta_rho, &
                            .false., .true.)
             call theta64(self, a, scaled, shift)
@@ -2561,14 +2583,16 @@ contains
             end if
         end subroutine bracket_residual
 
-        !> Upsilon - psi in the problem's form.
+        !> Upsilon - psi in the problem's form (the logarithms of ratios formed in
+        !! binary128, in hardware precision: `log_of_ratio`).
         pure real(real64) function form_of(upsilon)
             real(qp), intent(in) :: upsilon
             select case (prob%form)
             case (1)
-                form_of = real(log(upsilon/prob%psi), real64)
+                form_of = real(log_of_ratio(upsilon/prob%psi), real64)
             case (2)
-                form_of = real(log((prob%limit - upsilon)/(prob%limit - prob%psi)), real64)
+                form_of = real(log_of_ratio((prob%limit - upsilon)/(prob%limit - prob%psi)), &
+                               real64)
             case default
                 form_of = real(upsilon - prob%psi, real64)
             end select
