@@ -48,7 +48,8 @@
 !! below (tiny R-bar keeps its relative precision, down to the binary128 range).
 !! Laws with hardware-precision terms (`speed_law%has_terms_xp`: power and logarithmic)
 !! take an early phase in the widest hardware kind (x87 extended; `hardware_phase`):
-!! safeguarded Newton steps on Theta and its analytic slope d Theta/d Lambda (the
+!! safeguarded Newton steps (inverse Hermite steps through the last two evaluations
+!! where there are two) on Theta and its analytic slope d Theta/d Lambda (the
 !! integrand's derivative at fixed lambda, g q'/(2 q (1 - q)) with q' = d q/d Lambda
 !! from the law, summed on the same nodes, plus the jump of the weights times g at the
 !! endpoint), first on 12-digit rules with double-precision transcendentals, then on
@@ -1803,14 +1804,19 @@ contains
 
     !> The early phase in hardware precision: Newton steps on the analytic slope, kept in
     !! the bracket [lo, hi] (f of opposite signs at its ends; regula falsi with the
-    !! Anderson-Bjorck correction where a Newton step would leave it). First `rough`
+    !! Anderson-Bjorck correction where a Newton step would leave it), and where the
+    !! previous evaluation of the same precision is at hand the root of the inverse
+    !! cubic Hermite interpolant through both (`hermite_step`). First `rough`
     !! evaluations (12-digit rules, transcendentals in double precision) until a step is
-    !! below 1e-5 of the unknown (the next iterate then within about 1e-10), then
-    !! hardware-precision ones (20-digit rules)
-    !! until a step is below 1e-12, or its own error by the measured curvature below 1e-20
-    !! of the unknown: by the quadratic convergence the root is then within
-    !! the rounding of the hardware kind (usually one such evaluation). x the root, slope
-    !! f'(x) (the form's), curvature |f''/2f'| measured between the iterates (0 if not).
+    !! below 1e-5 of the unknown or the Newton point within 1e-10 of the Hermite point
+    !! (the next iterate then within about 1e-10), then hardware-precision ones (20-digit
+    !! rules) until a step is below 1e-12, or its own error by the measured curvature
+    !! below 1e-20 of the unknown, or f is within its rounding: by the quadratic
+    !! convergence the root is then within the rounding of the hardware kind (usually
+    !! one such evaluation; the last Newton step is taken even within the rounding: it
+    !! halves the early root's error on average, and the certified step fails less
+    !! often). x the root, slope f'(x) (the form's), curvature |f''/2f'| measured
+    !! between the iterates (0 if not).
     pure subroutine hardware_phase(model, prob, lo, f_lo, hi, f_hi, x, slope, curvature, &
                                    steps, slope_hi)
         type(central_force_model), intent(in) :: model
