@@ -1042,27 +1042,33 @@ contains
         type(arch_setup) :: below, above
         type(panel) :: panels_below(max_panels), panels_above(max_panels)
         real(qp) :: whole(5), part(3), w_sign, p_sign, sizes(3)
-        real(xp) :: part_slopes(2)
+        real(xp) :: part_slopes(2), whole_hw(2)
         integer :: n_below, n_above
         logical :: found, use_below
-        ! the slopes' tables only for the slopes
-        call whole_lookup(model, a%big_lambda, whole, found, merge(5, 3, present(slopes)))
+        ! whether the tables apply, and W for the choice, from Theta's table in hardware
+        ! precision; the binary128 tables only where W enters the sums
+        call whole_lookup_xp(model, real(a%big_lambda, xp), whole_hw, found)
         found = found .and. a%weight_above == 1.0_qp .and. &
                 (a%weight_below == 0.0_qp .or. a%weight_below == 2.0_qp)
         if (.not. found) then
-            if (present(slopes)) then
-                call arch_sums(model, a, fine_digits, .true., sums, slopes)
-                magnitude = abs(slopes)
-            else
-                call arch_sums(model, a, fine_digits, .true., sums)
-            end if
+            call all_panels(sums, slopes, magnitude)
             return
         end if
         call split_panels(model, a, below, panels_below, n_below, above, panels_above, &
                           n_above)
         use_below = n_below <= n_above
         if (present(expected) .and. a%weight_below == 0.0_qp) &
-            use_below = use_below .and. expected >= 0.5_qp*whole(1)
+            use_below = use_below .and. expected >= 0.5_qp*real(whole_hw(1), qp)
+        whole = 0.0_qp
+        if (use_below .or. a%weight_below == 2.0_qp) then
+            ! the slopes' tables only for the slopes
+            call whole_lookup(model, a%big_lambda, whole, found, merge(5, 3, present(slopes)))
+            if (.not. found) then
+                ! (the two lookups disagree at the edge of a piece)
+                call all_panels(sums, slopes, magnitude)
+                return
+            end if
+        end if
         if (a%weight_below == 2.0_qp) then
             w_sign = merge(1.0_qp, 2.0_qp, use_below)
             p_sign = merge(1.0_qp, -1.0_qp, use_below)
@@ -1096,6 +1102,18 @@ contains
             magnitude = abs(real(w_sign*whole(4:5), xp)) + abs(part_slopes)
         end if
     contains
+        !> Every panel (`arch_sums` without the tables).
+        pure subroutine all_panels(sums, slopes, magnitude)
+            real(qp), intent(out) :: sums(3)
+            real(xp), intent(out), optional :: slopes(2), magnitude(2)
+            if (present(slopes)) then
+                call arch_sums(model, a, fine_digits, .true., sums, slopes)
+                magnitude = abs(slopes)
+            else
+                call arch_sums(model, a, fine_digits, .true., sums)
+            end if
+        end subroutine all_panels
+
         pure subroutine part_sums(b, pans, n_pans, part, part_slopes)
             type(arch_setup), intent(in) :: b
             type(panel), intent(in) :: pans(max_panels)
