@@ -605,14 +605,17 @@ contains
         call finish_setup(model, a, rho - a%big_r, delta_r, second, .false.)
     end function setup_arch_log
 
-    pure subroutine finish_setup(model, a, d, delta_r, second, whole)
+    pure subroutine finish_setup(model, a, d, delta_r, second, whole, lambda_r)
         type(central_force_model), intent(in) :: model
         type(arch_setup), intent(inout) :: a
         real(qp), intent(in) :: d, delta_r
         logical, intent(in) :: second, whole
+        real(qp), intent(in), optional :: lambda_r  !! log(1 + d/R) where known
         a%c = model%law%apse_constants(a%big_r, a%one_minus_big_r, a%big_lambda)
         a%cx = model%law%apse_constants_xp(real(a%big_lambda, xp))
-        if (a%big_r > 0.0_qp .and. d < a%big_r) then
+        if (present(lambda_r)) then
+            a%lambda_r = lambda_r
+        else if (a%big_r > 0.0_qp .and. d < a%big_r) then
             a%lambda_r = log1p(d/a%big_r)
         else
             a%lambda_r = a%big_lambda - delta_r
@@ -1486,11 +1489,16 @@ contains
         type(endpoint_problem), intent(in) :: prob
         real(qp), intent(in) :: x
         type(arch_setup) :: a
-        real(qp) :: d
+        real(qp) :: d, lambda_r
         if (prob%use_u) then
+            ! Lambda = delta_rho + lambda_r, lambda_r = log(1 + u^2/R) (R >= u^2): one
+            ! logarithm
             d = x*x
-            a = setup_arch(model, prob%rho - d, prob%one_minus_rho + d, d, prob%delta_rho, &
-                           prob%second, .false.)
+            a%big_r = prob%rho - d
+            a%one_minus_big_r = prob%one_minus_rho + d
+            lambda_r = log1p(d/a%big_r)
+            a%big_lambda = prob%delta_rho + lambda_r
+            call finish_setup(model, a, d, prob%delta_rho, prob%second, .false., lambda_r)
         else if (prob%use_r) then
             a = setup_arch(model, x, 1.0_qp - x, prob%rho - x, prob%delta_rho, &
                            prob%second, .false.)
