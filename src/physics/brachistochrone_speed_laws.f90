@@ -857,7 +857,8 @@ contains
 
     !> n = 3: t0(x) = sqrt(1 - x^2); n = 2: the inverse-square fall time (Tee eq. 46);
     !! other n: a series of incomplete gamma functions or an incomplete beta function
-    !! (`power_fall_time`).
+    !! (`power_fall_time`). (exp and expm1: `fast_exp`'s, a few units in the last place,
+    !! several times faster than libquadmath's; t0(1) = 0 not evaluated.)
     pure subroutine power_closed_fall(self, delta_lo, delta_hi, t, found)
         class(power_law), intent(in) :: self
         real(qp), intent(in) :: delta_lo, delta_hi
@@ -868,14 +869,29 @@ contains
         found = a > 0.0_qp
         t = 0.0_qp
         if (self%n == 3.0_qp) then
-            t = sqrt(-expm1(-2.0_qp*delta_hi)) - sqrt(-expm1(-2.0_qp*delta_lo))
+            t = sqrt(-fast_expm1(-2.0_qp*delta_hi))
+            if (delta_lo > 0.0_qp) t = t - sqrt(-fast_expm1(-2.0_qp*delta_lo))
         else if (self%n == 2.0_qp) then
-            t = radial_time(exp(-delta_hi), -expm1(-delta_hi)) &
-                - radial_time(exp(-delta_lo), -expm1(-delta_lo))
+            t = inverse_square_fall(delta_hi)
+            if (delta_lo > 0.0_qp) t = t - inverse_square_fall(delta_lo)
         else if (found) then
             t = power_fall_time(a, delta_hi, self%fall_limit)
             if (delta_lo > 0.0_qp) t = t - power_fall_time(a, delta_lo, self%fall_limit)
         end if
+    contains
+        !> The inverse-square fall time to x = exp(-delta), x and 1 - x each from the
+        !! exponential that gives it to its relative precision.
+        pure real(qp) function inverse_square_fall(delta)
+            real(qp), intent(in) :: delta
+            real(qp) :: x, e
+            if (delta < 0.5_qp) then
+                e = fast_expm1(-delta)
+                inverse_square_fall = radial_time(1.0_qp + e, -e)
+            else
+                x = fast_exp(-delta)
+                inverse_square_fall = radial_time(x, 1.0_qp - x)
+            end if
+        end function inverse_square_fall
     end subroutine power_closed_fall
 
     !> The fall time from 1 to x = exp(-delta) of the power law a = n - 1 < 2 where
@@ -940,11 +956,14 @@ contains
     !! (t = y). For y >= 1/2, with 1 - t = w^2, I = 2 sum_k c_k W^(2k+1)/(2k+1), W^2 = 1 - y,
     !! c_k the binomial series of (1 - w^2)^(p-1); below, I = B(p, 1/2) - sum_k d_k
     !! y^(p+k)/(p+k), d_k = (1/2)_k/k!. Both series have ratio at most 1/2 (terms of one
-    !! sign after the first few); about 115 terms for 36 digits.
+    !! sign after the first few); about 115 terms for 36 digits. The terms from where
+    !! they fall below 2^-64 of the sum (the tail, below 2^-63 of it) in hardware
+    !! precision (`series_tail`: an error below 1e-17 of the tail, 1e-36 of the sum).
     pure function power_fall_time(a, delta, limit) result(t)
         real(qp), intent(in) :: a, delta
         real(qp), intent(in) :: limit  !! t0(0) where known (`power_prepare`), else 0
         real(qp) :: t, p, w2, power, c, term, total, y
+        real(qp), parameter :: head = 2.0_qp**(-64)
         integer :: k
         if (a < 2.0_qp .and. a*min(delta, 100.0_qp) <= 2.0_qp*log_two) then
             t = mild_fall_time(a, delta)
@@ -962,6 +981,11 @@ contains
                 if (abs(term) <= 1.0e-36_qp*abs(total)) exit
                 c = c*(real(k + 1, qp) - p)*inverse_integer(k + 1)
                 power = power*w2
+                ! past the terms of both signs (k + 1 > p - 1)
+                if (abs(term) <= head*abs(total) .and. real(k, qp) > p) then
+                    total = total + series_tail(.true., k + 1, c, power, w2, p, total)
+                    exit
+                end if
             end do
             t = 2.0_qp*total/sqrt(2.0_qp*a)
         else
@@ -974,6 +998,10 @@ contains
                 if (term <= 1.0e-36_qp*total) exit
                 c = c*half_step(k)
                 power = power*y
+                if (term <= head*total) then
+                    total = total + series_tail(.false., k + 1, c, power, y, p, total)
+                    exit
+                end if
             end do
             if (limit > 0.0_qp) then
                 t = limit - total/sqrt(2.0_qp*a)
@@ -982,6 +1010,37 @@ contains
             end if
         end if
     end function power_fall_time
+
+    !> The tail of `power_fall_time`'s series from term k on (c, power: its coefficient
+    !! and power there, ratio: the power's ratio; `binomial`: the series in W, else the
+    !! one in y), in hardware precision, until the terms fall below 1e-36 of `total`.
+    pure function series_tail(binomial, k, c, power, ratio, p, total) result(tail)
+        logical, intent(in) :: binomial
+        integer, intent(in) :: k
+        real(qp), intent(in) :: c, power, ratio, p, total
+        real(qp) :: tail
+        real(xp) :: c_x, power_x, ratio_x, p_x, term, sum, least
+        integer :: j
+        c_x = real(c, xp)
+        power_x = real(power, xp)
+        ratio_x = real(ratio, xp)
+        p_x = real(p, xp)
+        least = real(1.0e-36_qp*abs(total), xp)
+        sum = 0.0_xp
+        do j = k, max_series_terms
+            if (binomial) then
+                term = c_x*power_x/real(2*j + 1, xp)
+                c_x = c_x*(real(j + 1, xp) - p_x)/real(j + 1, xp)
+            else
+                term = c_x*power_x/(p_x + real(j, xp))
+                c_x = c_x*(real(j, xp) + 0.5_xp)/real(j + 1, xp)
+            end if
+            sum = sum + term
+            if (abs(term) <= least) exit
+            power_x = power_x*ratio_x
+        end do
+        tail = real(sum, qp)
+    end function series_tail
 
     pure function power_conserved(self, c) result(k)
         class(power_law), intent(in) :: self
