@@ -653,18 +653,7 @@ contains
         type(panel) :: start_side(max_panels)
         integer :: n_start, k
         count = 0
-        b = min(1.0_qp, 0.5_qp*model%sigma_apse)
-        c = min(1.0_qp, 0.5_qp*model%sigma_start)
-        ! an integral that ends at the endpoint (weight 0 beyond it) inside the first
-        ! ladder panel: one root panel up to it (fewer nodes than the root panel and the
-        ! piece of the ladder panel)
-        if (a%weight_above == 0.0_qp .and. a%lambda_r > b .and. a%lambda_r <= 4.0_qp*b &
-            .and. a%lambda_r + c < a%big_lambda) then
-            b = a%lambda_r
-        else if (a%weight_below == 0.0_qp .and. a%delta_r > c .and. &
-                 a%delta_r <= 4.0_qp*c .and. a%delta_r + b < a%big_lambda) then
-            c = a%delta_r
-        end if
+        call root_scales(model, a, b, c)
         if (a%big_lambda <= b + c) then
             ! two root panels meeting in between: lambda = b' s^2 and delta = c' s^2
             b = a%big_lambda*b/(b + c)
@@ -713,6 +702,25 @@ contains
             end do
         end if
     end subroutine arch_panels
+
+    !> The scales of the root panels, lambda = b s^2 and delta = c s^2: half the
+    !! singularities' distances (at most 1), except for an integral that ends at the
+    !! endpoint (weight 0 beyond it) inside the first ladder panel, which gets one root
+    !! panel up to it (fewer nodes than the root panel and the piece of the ladder panel).
+    pure subroutine root_scales(model, a, b, c)
+        type(central_force_model), intent(in) :: model
+        type(arch_setup), intent(in) :: a
+        real(qp), intent(out) :: b, c
+        b = min(1.0_qp, 0.5_qp*model%sigma_apse)
+        c = min(1.0_qp, 0.5_qp*model%sigma_start)
+        if (a%weight_above == 0.0_qp .and. a%lambda_r > b .and. a%lambda_r <= 4.0_qp*b &
+            .and. a%lambda_r + c < a%big_lambda) then
+            b = a%lambda_r
+        else if (a%weight_below == 0.0_qp .and. a%delta_r > c .and. &
+                 a%delta_r <= 4.0_qp*c .and. a%delta_r + b < a%big_lambda) then
+            c = a%delta_r
+        end if
+    end subroutine root_scales
 
     !> sqrt(z) for the root panels' splits, within an ulp: the hardware kind's square root
     !! and one correction (z - s^2)/(2 s) in it (libquadmath's sqrtq costs about ten
@@ -1185,7 +1193,8 @@ contains
     !! does not depend on the weights but for the cut of the panels past exp(-300) of
     !! the integrands where the weighted region starts, which the cut never reaches
     !! where the decay rate pi/sigma_apse times Lambda is below 250 (the tables' range
-    !! but for the steepest laws). Elsewhere two layouts.
+    !! but for the steepest laws), and for the root panel up to an endpoint inside the
+    !! first ladder panel (`root_scales`). Elsewhere two layouts.
     pure subroutine split_panels(model, a, below, panels_below, n_below, above, &
                                  panels_above, n_above)
         type(central_force_model), intent(in) :: model
@@ -1195,6 +1204,7 @@ contains
         integer, intent(out) :: n_below, n_above
         type(arch_setup) :: both
         type(panel) :: panels(max_panels)
+        real(qp) :: b(3), c(3)
         integer :: count, p
         below = a
         below%weight_below = 1.0_qp
@@ -1203,12 +1213,14 @@ contains
         above%weight_below = 0.0_qp
         above%weight_above = 1.0_qp
         count = max_panels
-        if (pi/model%sigma_apse*a%big_lambda <= 250.0_qp) then
-            both = a
-            both%weight_below = 1.0_qp
-            both%weight_above = 2.0_qp
-            call arch_panels(model, both, panels, count)
-        end if
+        both = a
+        both%weight_below = 1.0_qp
+        both%weight_above = 2.0_qp
+        call root_scales(model, both, b(1), c(1))
+        call root_scales(model, below, b(2), c(2))
+        call root_scales(model, above, b(3), c(3))
+        if (pi/model%sigma_apse*a%big_lambda <= 250.0_qp .and. all(b == b(1)) .and. &
+            all(c == c(1))) call arch_panels(model, both, panels, count)
         if (count >= max_panels) then
             call arch_panels(model, below, panels_below, n_below)
             call arch_panels(model, above, panels_above, n_above)
