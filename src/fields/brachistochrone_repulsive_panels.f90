@@ -18,7 +18,7 @@
 !! and theta alone in the widest hardware precision (`xp`, x87 extended where there is
 !! one) aiming at 20 digits, for the root finder's early phase.
 module brachistochrone_repulsive_panels
-    use brachistochrone_kinds, only: qp, pi, xp
+    use brachistochrone_kinds, only: qp, xp
     use brachistochrone_status, only: status_ok, status_no_convergence
     use brachistochrone_quadrature, only: gauss_legendre_rule, gauss_legendre
     use brachistochrone_fast_math, only: inverse_sqrt
@@ -443,13 +443,16 @@ contains
     end function nodes_for
 
     !> The singular points of the piece's integrands in its variable (double precision).
+    !! Every map's image of a real point is taken in real arithmetic: tanh(asinh(s)/2) =
+    !! s/(1 + sqrt(1 + s^2)) =: t, and tanh((i pi - asinh(s))/2) = -1/t; for the nu map,
+    !! tan(i asinh(s)/2) = i t and tan(pi/4 + i asinh(s)/2) = (1 + i t)/(1 - i t).
     pure subroutine singular_points(curve, piece, points, np)
         type(panel_curve), intent(in) :: curve
         type(panel_piece), intent(in) :: piece
         complex(real64), intent(out) :: points(16)
         integer, intent(out) :: np
-        complex(real64) :: x(4), c, i1
-        real(real64) :: a, p, w, rm1, d, s(3)
+        complex(real64) :: c, i1, z
+        real(real64) :: a, p, w, rm1, d, s(3), x(3), t, span
         integer :: k
         i1 = (0.0_real64, 1.0_real64)
         np = 0
@@ -458,34 +461,41 @@ contains
         if (.not. curve%bounded) then
             a = real(curve%a, real64)
             w = sqrt(real(curve%beta, real64))
-            ! the zeros of x Q(x)
-            x = [(0.0_real64, 0.0_real64), cmplx(-p, 0.0_real64, real64), a + i1*w, a - i1*w]
             select case (piece%kind)
             case (piece_start)
-                do k = 1, 4
-                    c = sqrt((x(k) - 1.0_real64)/real(curve%span, real64))
+                ! the zeros of x Q(x): 0, -P, a +- i w, at sigma = +-sqrt((x - 1)/span)
+                span = real(curve%span, real64)
+                do k = 1, 2
+                    c = i1*sqrt((merge(0.0_real64, p, k == 1) + 1.0_real64)/span)
                     call add(points, np, c)
                     call add(points, np, -c)
                 end do
+                c = sqrt(cmplx(a - 1.0_real64, w, real64)/span)
+                call add(points, np, c)
+                call add(points, np, -c)
+                call add(points, np, conjg(c))
+                call add(points, np, -conjg(c))
             case (piece_far)
                 call add(points, np, (0.0_real64, 0.0_real64))
                 call add(points, np, cmplx(4.0_real64, 0.0_real64, real64))
-                do k = 2, 4
-                    if (abs(x(k)) > 0.0_real64) call add(points, np, 4.0_real64/x(k))
-                end do
+                call add(points, np, cmplx(-4.0_real64/p, 0.0_real64, real64))
+                if (abs(cmplx(a, w, real64)) > 0.0_real64) then
+                    z = 4.0_real64/cmplx(a, w, real64)
+                    call add(points, np, z)
+                    call add(points, np, conjg(z))
+                end if
             case default
                 ! h = -+(x - a): the zeros 0, -P and x = 1 (sqrt(x - 1)); the pair at
                 ! h = +-i w is cancelled by the sinh map, else a singularity of the jacobian
-                x(4) = (1.0_real64, 0.0_real64)
-                do k = 1, 4
-                    if (k == 3) cycle
-                    c = merge(-1.0_real64, 1.0_real64, piece%kind == piece_below)*(x(k) - a)
+                x = [0.0_real64, -p, 1.0_real64]
+                do k = 1, 3
+                    t = merge(-1.0_real64, 1.0_real64, piece%kind == piece_below)*(x(k) - a)
                     if (piece%stretched) then
-                        c = asinh(c/w)
-                        call add(points, np, tanh(0.5_real64*c))
-                        call add(points, np, tanh(0.5_real64*(i1*pi_64() - c)))
+                        t = half_tanh_64(t/w)
+                        call add(points, np, cmplx(t, 0.0_real64, real64))
+                        call add(points, np, cmplx(-1.0_real64/t, 0.0_real64, real64))
                     else
-                        call add(points, np, c)
+                        call add(points, np, cmplx(t, 0.0_real64, real64))
                     end if
                 end do
                 if (piece%stretched) then
@@ -504,12 +514,12 @@ contains
         if (piece%kind == piece_apse) then
             ! sin(nu/2) = sqrt(d/(R-1)) sinh(xi) = +-1; x + P = 0; x = 0
             s = [sqrt(rm1/d), sqrt((1.0_real64 + rm1 + p)/d), sqrt((1.0_real64 + rm1)/d)]
-            ! in w = tanh(xi/2); the map's poles w = +-1
+            ! in w = tanh(xi/2): +-t, -1/t; the map's poles w = +-1
             do k = 1, 3
-                c = asinh(cmplx(s(k), 0.0_real64, real64))
-                call add(points, np, tanh(0.5_real64*c))
-                call add(points, np, tanh(-0.5_real64*c))
-                call add(points, np, tanh(0.5_real64*(i1*pi_64() - c)))
+                t = half_tanh_64(s(k))
+                call add(points, np, cmplx(t, 0.0_real64, real64))
+                call add(points, np, cmplx(-t, 0.0_real64, real64))
+                call add(points, np, cmplx(-1.0_real64/t, 0.0_real64, real64))
             end do
             call add(points, np, (1.0_real64, 0.0_real64))
             call add(points, np, (-1.0_real64, 0.0_real64))
@@ -519,20 +529,40 @@ contains
         ! (-(1 + 2 (1 + P)/(R-1))): nu = 2i asinh(sqrt(d/(R-1))) and
         ! pi + 2i asinh(sqrt(1/(R-1))), pi + 2i asinh(sqrt((1 + P)/(R-1)))
         s = [sqrt(d/rm1), sqrt(1.0_real64/rm1), sqrt((1.0_real64 + p)/rm1)]
-        ! in v = tan(nu/4) (or tan(mu/4), mu = pi - nu); the map's poles v = +-i
+        ! in v = tan(nu/4) (or tan(mu/4), mu = pi - nu), each with nu + 2 pi k:
+        ! tan(nu/4) and -cot(nu/4); nu = 2i asinh(s) gives +-i t, +-i/t, and nu = pi +
+        ! 2i asinh(s) gives +-z, +-conj(z), z = (1 + i t)/(1 - i t) (mu = pi - nu swaps
+        ! the two forms); the map's poles v = +-i
         do k = 1, 3
-            c = 2.0_real64*i1*asinh(s(k))
-            if (k > 1) c = c + pi_64()
-            if (piece%kind == piece_arch_start) c = pi_64() - c
-            ! nu + 2 pi k: tan(nu/4) and -cot(nu/4)
-            call add(points, np, tan(0.25_real64*c))
-            call add(points, np, tan(-0.25_real64*c))
-            call add(points, np, -1.0_real64/tan(0.25_real64*c))
-            call add(points, np, 1.0_real64/tan(0.25_real64*c))
+            t = half_tanh_64(s(k))
+            if ((k == 1) .eqv. (piece%kind /= piece_arch_start)) then
+                call add(points, np, cmplx(0.0_real64, t, real64))
+                call add(points, np, cmplx(0.0_real64, -t, real64))
+                call add(points, np, cmplx(0.0_real64, 1.0_real64/t, real64))
+                call add(points, np, cmplx(0.0_real64, -1.0_real64/t, real64))
+            else
+                z = cmplx((1.0_real64 - t)*(1.0_real64 + t), 2.0_real64*t, real64)/ &
+                    (1.0_real64 + t*t)
+                call add(points, np, z)
+                call add(points, np, -z)
+                call add(points, np, conjg(z))
+                call add(points, np, -conjg(z))
+            end if
         end do
         call add(points, np, i1)
         call add(points, np, -i1)
     end subroutine singular_points
+
+    !> tanh(asinh(s)/2) = s/(1 + sqrt(1 + s^2)) (any real s, finite).
+    elemental function half_tanh_64(s) result(t)
+        real(real64), intent(in) :: s
+        real(real64) :: t
+        if (abs(s) < 1.0e150_real64) then
+            t = s/(1.0_real64 + sqrt(1.0_real64 + s*s))
+        else
+            t = sign(1.0_real64, s)
+        end if
+    end function half_tanh_64
 
     !> |z| without hypot's care for overflow and underflow where neither can happen.
     elemental function modulus(z) result(m)
@@ -557,10 +587,6 @@ contains
             points(np) = point
         end if
     end subroutine add
-
-    pure real(real64) function pi_64()
-        pi_64 = real(pi, real64)
-    end function pi_64
 
     !> theta, s, t integrands (binary128) at the piece variable v; the formulas of
     !! `brachistochrone_repulsive` (see its notes), with the maps in rational form:
