@@ -257,42 +257,43 @@ contains
         complex(xp), intent(in) :: v
         complex(xp) :: y(2)
         real(xp), parameter :: root2 = sqrt(2.0_xp)
+        !! (sqrt below: `dual_sqrt`)
         complex(xp) :: point, xm1, h, jac, sn, cs, inv, one_minus, rq
         select case (kind)
         case (piece_start)
             xm1 = c(5)*v*v
             point = 1.0_xp + xm1
-            rq = 1.0_xp/sqrt((point + c(2))*((point - c(3))**2 + c(4)))
-            y(1) = c(1)*root2*2.0_xp*c(5)*sqrt(c(5))*v*v/point*rq
-            y(2) = 2.0_xp*c(5)*v*point*sqrt(point)*rq
+            rq = 1.0_xp/dual_sqrt((point + c(2))*((point - c(3))**2 + c(4)))
+            y(1) = c(1)*root2*2.0_xp*c(5)*dual_sqrt(c(5))*v*v/point*rq
+            y(2) = 2.0_xp*c(5)*v*point*dual_sqrt(point)*rq
         case (piece_below, piece_above)
             if (stretched) then
                 one_minus = (1.0_xp - v)*(1.0_xp + v)
-                h = sqrt(c(4))*2.0_xp*v/one_minus
+                h = dual_sqrt(c(4))*2.0_xp*v/one_minus
                 jac = 2.0_xp/one_minus
             else
                 h = v
-                jac = 1.0_xp/sqrt(h*h + c(4))
+                jac = 1.0_xp/dual_sqrt(h*h + c(4))
             end if
             if (kind == piece_below) h = -h
             point = c(3) + h
             xm1 = (c(3) - 1.0_xp) + h
-            rq = jac/sqrt(point + c(2))
-            y(1) = c(1)*root2*sqrt(xm1)/point*rq
-            y(2) = point*sqrt(point)*rq
+            rq = jac/dual_sqrt(point + c(2))
+            y(1) = c(1)*root2*dual_sqrt(xm1)/point*rq
+            y(2) = point*dual_sqrt(point)*rq
         case (piece_far)
             point = 4.0_xp/v
-            rq = 4.0_xp/(v*v)/sqrt((point + c(2))*((point - c(3))**2 + c(4)))
-            y(1) = c(1)*root2*sqrt(point - 1.0_xp)/point*rq
-            y(2) = point*sqrt(point)*rq
+            rq = 4.0_xp/(v*v)/dual_sqrt((point + c(2))*((point - c(3))**2 + c(4)))
+            y(1) = c(1)*root2*dual_sqrt(point - 1.0_xp)/point*rq
+            y(2) = point*dual_sqrt(point)*rq
         case default
             if (kind == piece_apse) then
                 one_minus = (1.0_xp - v)*(1.0_xp + v)
-                sn = sqrt(c(7)/c(6))*2.0_xp*v/one_minus
-                cs = sqrt((1.0_xp - sn)*(1.0_xp + sn))
+                sn = dual_sqrt(c(7)/c(6))*2.0_xp*v/one_minus
+                cs = dual_sqrt((1.0_xp - sn)*(1.0_xp + sn))
                 xm1 = c(6)*cs*cs
                 point = 1.0_xp + xm1
-                rq = 4.0_xp/(sqrt(c(6))*cs*one_minus)/sqrt(point + c(2))
+                rq = 4.0_xp/(dual_sqrt(c(6))*cs*one_minus)/dual_sqrt(point + c(2))
             else
                 inv = 1.0_xp/(1.0_xp + v*v)
                 sn = 2.0_xp*v*inv
@@ -304,12 +305,27 @@ contains
                 end if
                 xm1 = c(6)*cs*cs
                 point = 1.0_xp + xm1
-                rq = 4.0_xp*inv/sqrt((c(7) + c(6)*sn*sn)*(point + c(2)))
+                rq = 4.0_xp*inv/dual_sqrt((c(7) + c(6)*sn*sn)*(point + c(2)))
             end if
             y(1) = c(1)*root2*xm1/point*rq
-            y(2) = point*sqrt(point)*(sqrt(c(6))*cs)*rq
+            y(2) = point*dual_sqrt(point)*(dual_sqrt(c(6))*cs)*rq
         end select
     end function angle_length_c
+
+    !> sqrt(z) for the complex step: z = x + i y with x > 0 and |y| far below x (y is
+    !! h = 1e-40 times a derivative), sqrt(x) + i y/(2 sqrt(x)), exact to first order
+    !! in y, as the complex step needs (libm's csqrtl at a fraction of its cost).
+    elemental function dual_sqrt(z) result(r)
+        complex(xp), intent(in) :: z
+        complex(xp) :: r
+        real(xp) :: root
+        root = sqrt(real(z))
+        if (root > 0.0_xp) then
+            r = cmplx(root, 0.5_xp*aimag(z)/root, xp)
+        else
+            r = sqrt(z)
+        end if
+    end function dual_sqrt
 
     !> The panels of one piece and the rule (index into the ladder) of each, aiming at
     !! `digits`: bisection until every panel's Bernstein ellipse allows the digits with
