@@ -22,7 +22,7 @@ module brachistochrone_repulsive_panels
     use brachistochrone_status, only: status_ok, status_no_convergence
     use brachistochrone_quadrature, only: gauss_legendre_rule, gauss_legendre
     use brachistochrone_fast_math, only: inverse_sqrt
-    use, intrinsic :: iso_fortran_env, only: real64
+    use, intrinsic :: iso_fortran_env, only: real64, int64
     implicit none
     private
 
@@ -87,7 +87,22 @@ module brachistochrone_repulsive_panels
         !> the start piece's constant factors of theta, s, t: 2 sqrt2 K span^(3/2),
         !! 2 span, sqrt(2 span)
         real(qp) :: start_factor(3) = 0.0_qp
+        !> `panel_sums`: 2 sqrt(beta), 2 sqrt(d/(R-1)), 4 (R - 1)
+        real(qp) :: root_beta2 = 0.0_qp, root_ratio2 = 0.0_qp, rm1_4 = 0.0_qp
+        !> hardware copies for the seeds of `panel_sums`
+        real(xp) :: p_x = 0.0_xp, a_x = 0.0_xp, beta_x = 0.0_xp, span_x = 0.0_xp, &
+                    a_m1_x = 0.0_xp, rm1_x = 0.0_xp, d_x = 0.0_xp, root_beta2_x = 0.0_xp, &
+                    root_ratio2_x = 0.0_xp, rm1_4_x = 0.0_xp
     end type prepared_curve
+
+    !> The seeds' conversion on the bits (`quad_real`) where `xp` is x87 extended.
+    integer(int64), parameter :: quad_bits(2) = transfer(1.5_qp, [0_int64, 0_int64])
+    integer(int64), parameter :: extended_bits(2) = transfer(1.5_xp, [0_int64, 0_int64])
+    logical, parameter :: x87_layout = xp /= real64 .and. digits(1.0_xp) == 64 .and. &
+        storage_size(1.0_xp) == 128 .and. quad_bits(1) == 0_int64 .and. &
+        quad_bits(2) == ishft(int(z'3FFF8', int64), 44) .and. &
+        extended_bits(1) == ishft(3_int64, 62) .and. &
+        iand(extended_bits(2), int(z'FFFF', int64)) == int(z'3FFF', int64)
 
 contains
 
@@ -108,6 +123,19 @@ contains
             pc%inverse_root_rm1 = 1.0_qp/pc%root_rm1
             pc%root_ratio = sqrt(c%d/c%rm1)
         end if
+        pc%root_beta2 = 2.0_qp*pc%root_beta
+        pc%root_ratio2 = 2.0_qp*pc%root_ratio
+        pc%rm1_4 = 4.0_qp*c%rm1
+        pc%p_x = real(c%p, xp)
+        pc%a_x = real(c%a, xp)
+        pc%beta_x = real(c%beta, xp)
+        pc%span_x = real(c%span, xp)
+        pc%a_m1_x = real(pc%a_m1, xp)
+        pc%rm1_x = real(c%rm1, xp)
+        pc%d_x = real(c%d, xp)
+        pc%root_beta2_x = real(pc%root_beta2, xp)
+        pc%root_ratio2_x = real(pc%root_ratio2, xp)
+        pc%rm1_4_x = real(pc%rm1_4, xp)
     end function prepare
 
     !> The rules of the ladder (about a millisecond: build once, share).
@@ -133,27 +161,23 @@ contains
         type(panel_piece), intent(in) :: pieces(:)
         real(qp), intent(out) :: values(3)
         integer, intent(out) :: status
-        real(qp) :: lo(max_panels), hi(max_panels), width, y(3), sums(3)
+        real(qp) :: lo(max_panels), hi(max_panels), sums(3), piece_sums(3)
         type(prepared_curve) :: pc
-        integer :: which(max_panels), count, i, j, m
+        integer :: which(max_panels), count, i, j
         values = 0.0_qp
         status = status_ok
         pc = prepare(curve)
         do i = 1, size(pieces)
             call plan_panels(curve, pieces(i), quad_digits, lo, hi, which, count, status)
             if (status /= status_ok) return
+            piece_sums = 0.0_qp
             do j = 1, count
-                width = hi(j) - lo(j)
-                sums = 0.0_qp
-                associate (r => rules%rule(which(j)))
-                    do m = 1, r%n
-                        call weighted_integrands(pc, pieces(i)%kind, pieces(i)%stretched, &
-                                                 lo(j) + width*r%node(m), r%weight(m), y)
-                        sums = sums + y
-                    end do
-                end associate
-                values = values + width*sums
+                call panel_sums(pc, rules%rule(which(j)), pieces(i)%kind, &
+                                pieces(i)%stretched, lo(j), hi(j), sums)
+                piece_sums = piece_sums + sums
             end do
+            values = values + piece_factors(pc, pieces(i)%kind, pieces(i)%stretched)* &
+                     piece_sums
         end do
     end subroutine panel_integrals
 
@@ -714,6 +738,207 @@ contains
         y(3) = half_root2*(p2*rx)
         end associate
     end subroutine weighted_integrands
+
+    !> One panel [lo, hi] of a piece for `panel_integrals`: width times the weighted sum
+    !! of theta's, s's and t's integrands over the rule r, each integrand divided by its
+    !! constant factor (`piece_factors`). The node's geometry is formed in binary128 and,
+    !! in parallel, in hardware precision for the seeds of the inverse square roots
+    !! (`refine`: three products and a difference each), so that no binary128 number is
+    !! converted per node.
+    pure subroutine panel_sums(pc, r, kind, stretched, lo, hi, sums)
+        type(prepared_curve), intent(in) :: pc
+        type(panel_rule), intent(in) :: r
+        integer, intent(in) :: kind
+        logical, intent(in) :: stretched
+        real(qp), intent(in) :: lo, hi
+        real(qp), intent(out) :: sums(3)
+        real(qp) :: width, v, w, x, xm1, q, h, inv, u, r1, r2, x2, a, b
+        real(xp) :: lo_x, width_x, vx, xx, xm1x, qx, hx, invx, ax, bx
+        integer :: m
+        width = hi - lo
+        lo_x = real(lo, xp)
+        width_x = real(width, xp)
+        sums = 0.0_qp
+        do m = 1, r%n
+            v = lo + width*r%node(m)
+            vx = lo_x + width_x*r%node_xp(m)
+            select case (kind)
+            case (piece_start)
+                a = v*v
+                x = 1.0_qp + pc%c%span*a
+                q = (x + pc%c%p)*((x - pc%c%a)**2 + pc%c%beta)
+                xx = 1.0_xp + pc%span_x*(vx*vx)
+                qx = (xx + pc%p_x)*((xx - pc%a_x)**2 + pc%beta_x)
+                r1 = r%weight(m)*refine(q, 1.0_xp/sqrt(qx))
+                r2 = refine(x, 1.0_xp/sqrt(xx))
+                u = (x*x)*r1
+                sums(1) = sums(1) + a*(r2*(r2*r1))
+                sums(2) = sums(2) + v*(u*r2)
+                sums(3) = sums(3) + u
+                cycle
+            case (piece_below, piece_above, piece_far)
+                if (kind == piece_far) then
+                    x = far_start/v
+                    xm1 = x - 1.0_qp
+                    w = r%weight(m)*(x*x)
+                    q = (x + pc%c%p)*((x - pc%c%a)**2 + pc%c%beta)
+                    xx = 4.0_xp/vx
+                    xm1x = xx - 1.0_xp
+                    qx = (xx + pc%p_x)*((xx - pc%a_x)**2 + pc%beta_x)
+                else
+                    if (stretched) then
+                        inv = 1.0_qp/((1.0_qp - v)*(1.0_qp + v))
+                        h = pc%root_beta2*v*inv
+                        w = r%weight(m)*inv
+                        invx = 1.0_xp/((1.0_xp - vx)*(1.0_xp + vx))
+                        hx = pc%root_beta2_x*vx*invx
+                    else
+                        h = v
+                        w = r%weight(m)
+                        hx = vx
+                    end if
+                    if (kind == piece_below) then
+                        h = -h
+                        hx = -hx
+                    end if
+                    x = pc%c%a + h
+                    xm1 = pc%a_m1 + h
+                    q = x + pc%c%p
+                    xx = pc%a_x + hx
+                    xm1x = pc%a_m1_x + hx
+                    qx = xx + pc%p_x
+                    if (.not. stretched) then
+                        q = (v*v + pc%c%beta)*q
+                        qx = (vx*vx + pc%beta_x)*qx
+                    end if
+                end if
+            case (piece_apse)
+                inv = 1.0_qp/((1.0_qp - v)*(1.0_qp + v))
+                a = pc%root_ratio2*v*inv
+                b = (1.0_qp - a)*(1.0_qp + a)
+                xm1 = pc%c%rm1*b
+                x = 1.0_qp + xm1
+                q = x + pc%c%p
+                w = r%weight(m)*inv
+                invx = 1.0_xp/((1.0_xp - vx)*(1.0_xp + vx))
+                ax = pc%root_ratio2_x*vx*invx
+                bx = (1.0_xp - ax)*(1.0_xp + ax)
+                xx = 1.0_xp + pc%rm1_x*bx
+                qx = xx + pc%p_x
+                ! 1/sqrt((1 - sn^2) q) in place of 1/sqrt(q (x - 1)) (x - 1 = rm1 (1 - sn^2))
+                xm1 = b
+                xm1x = bx
+                r1 = refine(b*q, 1.0_xp/sqrt(bx*qx))
+                r2 = refine(x*q, 1.0_xp/sqrt(xx*qx))
+                u = r1*w
+                x2 = x*x
+                sums(1) = sums(1) + ((pc%c%rm1*b)*u)*(r2*(r2*q))
+                sums(2) = sums(2) + x2*(r2*w)
+                sums(3) = sums(3) + x2*u
+                cycle
+            case default
+                inv = 1.0_qp/(1.0_qp + v*v)
+                a = v*inv
+                b = (1.0_qp - v)*(1.0_qp + v)*inv
+                invx = 1.0_xp/(1.0_xp + vx*vx)
+                ax = vx*invx
+                bx = (1.0_xp - vx)*(1.0_xp + vx)*invx
+                if (kind == piece_arch) then
+                    xm1 = pc%c%rm1*(b*b)
+                    q = pc%c%d + pc%rm1_4*(a*a)
+                    xm1x = pc%rm1_x*(bx*bx)
+                    qx = pc%d_x + pc%rm1_4_x*(ax*ax)
+                else
+                    xm1 = pc%rm1_4*(a*a)
+                    q = pc%c%d + pc%c%rm1*(b*b)
+                    xm1x = pc%rm1_4_x*(ax*ax)
+                    qx = pc%d_x + pc%rm1_x*(bx*bx)
+                    b = a
+                end if
+                x = 1.0_qp + xm1
+                xx = 1.0_xp + xm1x
+                q = q*(x + pc%c%p)
+                qx = qx*(xx + pc%p_x)
+                r1 = refine(q, 1.0_xp/sqrt(qx))
+                r2 = refine(x, 1.0_xp/sqrt(xx))
+                u = (r%weight(m)*inv)*r1
+                h = r2*u
+                x2 = x*x
+                sums(1) = sums(1) + xm1*(r2*h)
+                sums(2) = sums(2) + b*(x2*h)
+                sums(3) = sums(3) + x2*u
+                cycle
+            end select
+            ! the pieces of unbounded curves beyond the start
+            r1 = refine(q*xm1, 1.0_xp/sqrt(qx*xm1x))
+            r2 = refine(q*x, 1.0_xp/sqrt(qx*xx))
+            u = r1*w
+            x2 = x*x
+            sums(1) = sums(1) + (xm1*u)*(r2*(r2*q))
+            sums(2) = sums(2) + x2*(r2*w)
+            sums(3) = sums(3) + x2*u
+        end do
+        sums = width*sums
+    end subroutine panel_sums
+
+    !> The constant factors of theta's, s's and t's integrands taken out of
+    !! `panel_sums`' terms on a piece of this kind.
+    pure function piece_factors(pc, kind, stretched) result(f)
+        type(prepared_curve), intent(in) :: pc
+        integer, intent(in) :: kind
+        logical, intent(in) :: stretched
+        real(qp) :: f(3)
+        real(qp), parameter :: half_root2 = 0.5_qp*sqrt2
+        select case (kind)
+        case (piece_start)
+            f = [0.25_qp*pc%k_root2*pc%span_root_span, 0.5_qp*pc%c%span, &
+                 half_root2*pc%root_span]
+        case (piece_below, piece_above)
+            f = [0.25_qp*pc%k_root2, 1.0_qp, half_root2]
+            if (.not. stretched) f = 0.5_qp*f
+        case (piece_far)
+            f = [pc%k_root2/32.0_qp, 0.125_qp, sqrt2/16.0_qp]
+        case (piece_apse)
+            f = [0.5_qp*pc%k_root2*pc%inverse_root_rm1, 2.0_qp, sqrt2*pc%inverse_root_rm1]
+        case (piece_arch)
+            f = [0.5_qp*pc%k_root2, pc%root_rm1, sqrt2]
+        case default
+            f = [0.5_qp*pc%k_root2, 2.0_qp*pc%root_rm1, sqrt2]
+        end select
+    end function piece_factors
+
+    !> 2/sqrt(x) from a hardware-precision seed of 1/sqrt(x) (relative error about
+    !! 1e-18 on x87): one Newton step s (3 - x s^2), error about 1.5 e^2 (a second
+    !! step where the hardware kind is double); `inverse_sqrt` where the seed is out
+    !! of the hardware's range.
+    elemental function refine(x, seed) result(r)
+        real(qp), intent(in) :: x
+        real(xp), intent(in) :: seed
+        real(qp) :: r
+        if (.not. (seed > 0.0_xp .and. seed < huge(1.0_xp))) then
+            r = 2.0_qp*inverse_sqrt(x)
+            return
+        end if
+        r = quad_real(seed)
+        if (digits(1.0_xp) < 60) r = r*(1.5_qp - 0.5_qp*x*(r*r))
+        r = r*(3.0_qp - x*(r*r))
+    end function refine
+
+    !> A positive normal x87 number in binary128 (exact): the same exponent, the
+    !! significand without its explicit leading bit (`real` where `xp` is not x87).
+    elemental function quad_real(x) result(y)
+        real(xp), intent(in) :: x
+        real(qp) :: y
+        integer(int64), parameter :: low48 = ishft(1_int64, 48) - 1
+        integer(int64) :: bits(2)
+        if (.not. x87_layout) then
+            y = real(x, qp)
+            return
+        end if
+        bits = transfer(x, bits)
+        y = transfer([ishft(bits(1), 49), ior(ishft(iand(bits(2), int(z'FFFF', int64)), &
+                     48), iand(ishft(bits(1), -15), low48))], y)
+    end function quad_real
 
     !> theta's integrand in hardware precision (the maps of `integrands`);
     !! c = [K, P, a, beta, span, R - 1, d].
