@@ -415,6 +415,10 @@ contains
                 r_gap = curve%apse_m1 - (r - 1.0_qp)
             end if
             r_gap = max(r_gap, 0.0_qp)
+            if (rough .and. range(1.0_xp) >= range(1.0_qp)) then
+                call bounded_pieces_xp(curve, r, r_gap, pieces, n)
+                return
+            end if
             ! nu from nu_r to pi (x from r down to 1), in v = tan(nu/4) from v_r to 1;
             ! within `stretch` widths sqrt(d) of the apse (and nu < pi/3) the sinh map
             ! sin(nu/2) = c sinh(xi), c = sqrt(d/(R-1)), in w = tanh(xi/2), split where
@@ -469,6 +473,17 @@ contains
             end if
         end function rt
 
+        !> a/b (in hardware precision when rough).
+        elemental function ratio(a, b) result(y)
+            real(qp), intent(in) :: a, b
+            real(qp) :: y
+            if (rough .and. range(1.0_xp) >= range(1.0_qp)) then
+                y = real(real(a, xp)/real(b, xp), qp)
+            else
+                y = a/b
+            end if
+        end function ratio
+
         !> `half_tanh` (or in hardware precision when rough).
         elemental function ht(s) result(t)
             real(qp), intent(in) :: s
@@ -495,14 +510,56 @@ contains
             width = rt(curve%width2)
             if (curve%width2 > 0.0_qp .and. h_lo < stretch*width) then
                 h_mid = width*stretch
-                call add(pieces, n, kind, .true., ht(h_lo/width), &
-                         ht(min(h_hi/width, stretch)))
+                call add(pieces, n, kind, .true., ht(ratio(h_lo, width)), &
+                         ht(min(ratio(h_hi, width), stretch)))
                 if (h_hi > h_mid) call add(pieces, n, kind, .false., h_mid, h_hi)
             else
                 call add(pieces, n, kind, .false., h_lo, h_hi)
             end if
         end subroutine peak_pieces
     end subroutine plan_pieces
+
+    !> The pieces of `plan_pieces` on a bounded curve (R - r = r_gap given) for the
+    !! hardware-precision integrals: every end in hardware precision (about 1e-19),
+    !! from the curve's numbers rounded once.
+    pure subroutine bounded_pieces_xp(curve, r, r_gap, pieces, n)
+        type(repulsive_curve), intent(in) :: curve
+        real(qp), intent(in) :: r, r_gap
+        type(panel_piece), intent(inout) :: pieces(max_pieces)
+        integer, intent(inout) :: n
+        real(xp) :: gap, rm1, d, c, s_mid, sin_mid, v_mid, v_r, big, r_m1
+        gap = real(r_gap, xp)
+        rm1 = real(curve%apse_m1, xp)
+        d = real(curve%split, xp)
+        r_m1 = real(r - 1.0_qp, xp)
+        c = sqrt(d/rm1)
+        s_mid = min(real(stretch, xp), real(apse_split, xp)/c)
+        sin_mid = min(c*s_mid, 1.0_xp)
+        v_mid = sin_mid/(1.0_xp + sqrt((1.0_xp - sin_mid)*(1.0_xp + sin_mid)))
+        big = 0.0_xp
+        v_r = 0.0_xp
+        if (gap > 0.0_xp) then
+            big = sqrt(gap + r_m1)
+            v_r = sqrt(gap)/(sqrt(r_m1) + big)
+        end if
+        if (v_r < v_mid) then
+            call add(pieces, n, piece_apse, .false., real(half_tanh_xp(sqrt(gap/d)), qp), &
+                     real(half_tanh_xp(s_mid), qp))
+            call add(pieces, n, piece_arch, .false., real(v_mid, qp), 1.0_qp)
+        else if (r_m1 < gap) then
+            call add(pieces, n, piece_arch_start, .false., 0.0_qp, &
+                     real(sqrt(r_m1)/(sqrt(gap) + big), qp))
+        else
+            call add(pieces, n, piece_arch, .false., real(v_r, qp), 1.0_qp)
+        end if
+    end subroutine bounded_pieces_xp
+
+    !> tanh(asinh(s)/2) in hardware precision, s >= 0.
+    elemental function half_tanh_xp(s) result(t)
+        real(xp), intent(in) :: s
+        real(xp) :: t
+        t = s/(1.0_xp + sqrt(1.0_xp + s*s))
+    end function half_tanh_xp
 
     !> tanh(asinh(s)/2) = s/(1 + sqrt(1 + s^2)), s >= 0.
     elemental function half_tanh(s) result(t)
@@ -706,9 +763,35 @@ contains
             call set_from_gap_rough(e, curve)
         else
             ! expm1(x) = 2 sinh(x/2) exp(x/2), accurate as x -> 0
-            call set_bounded(real(-sinh(0.5_xp*x)*exp(0.5_xp*x), qp), real(e, qp), curve)
+            call set_bounded_rough(-sinh(0.5_xp*x)*exp(0.5_xp*x), e, curve)
         end if
     end subroutine rough_curve_of_lambda
+
+    !> `set_bounded` in hardware precision (R - 1 and 3 - 2R exact as given, the
+    !! curve's other numbers to about 1e-19), no binary128 square root or division.
+    pure subroutine set_bounded_rough(apse_m1, apse_gap, curve)
+        real(xp), intent(in) :: apse_m1, apse_gap
+        type(repulsive_curve), intent(out) :: curve
+        real(xp) :: big_r, s, split, k2
+        if (range(1.0_xp) < range(1.0_qp)) then
+            call set_bounded(real(apse_m1, qp), real(apse_gap, qp), curve)
+            return
+        end if
+        big_r = 1.0_xp + apse_m1
+        s = sqrt((big_r + 3.0_xp)/apse_m1)
+        split = 2.0_xp*big_r*apse_gap/(apse_m1*(s + 3.0_xp))
+        k2 = big_r**3/(2.0_xp*apse_m1)
+        curve%bounded = .true.
+        curve%apse_m1 = real(apse_m1, qp)
+        curve%apse = 1.0_qp + curve%apse_m1
+        curve%apse_gap = real(apse_gap, qp)
+        curve%split = real(split, qp)
+        curve%gap = real(-4.0_xp*apse_gap*apse_gap/(apse_m1*(s + 3.0_xp)* &
+                         (sqrt((big_r + 3.0_xp)*apse_m1) + 3.0_xp - big_r)), qp)
+        curve%p = real(2.0_xp*big_r + split, qp)
+        curve%k2 = real(k2, qp)
+        curve%k = real(sqrt(k2), qp)
+    end subroutine set_bounded_rough
 
     !> `set_from_gap` of an unbounded curve (g > 0) in hardware precision: the
     !! curve's numbers to about 1e-19 (g itself exact), no binary128 square root.
