@@ -126,6 +126,11 @@ module brachistochrone_repulsive
     !! t = tanh(xi/2), where 1 - t (rounded absolutely) stays above 1/9, so that a node
     !! costs a few eps at most
     real(qp), parameter :: stretch = 8.0_qp
+    !> The peak's sinh map (unbounded curves) reaches `peak_stretch` widths, in
+    !! t = tanh(xi/4) (h/sqrt(beta) = sinh(xi) = 4t (1 + t^2)/(1 - t^2)^2): its poles
+    !! t = +-1 stay twice as far (in xi) from the piece as in tanh(xi/2), so a piece
+    !! needs about half the nodes, and 1 - t stays above 1/6
+    real(qp), parameter :: peak_stretch = 32.0_qp
     !> sin(nu/2) where the apse's sinh map hands over to the nu map (the map's own
     !! singularity is at sin(nu/2) = 1: at 1/2 its rule needs a third fewer nodes)
     real(qp), parameter :: apse_split = 0.5_qp
@@ -497,8 +502,36 @@ contains
             end if
         end function ht
 
+        !> `quarter_tanh` (or in hardware precision when rough).
+        elemental function qt(s) result(t)
+            real(qp), intent(in) :: s
+            real(qp) :: t
+            real(xp) :: sx, ch
+            if (rough .and. range(1.0_xp) >= range(1.0_qp)) then
+                sx = real(s, xp)
+                ch = sqrt(0.5_xp*(1.0_xp + sqrt(1.0_xp + sx*sx)))
+                t = real(0.5_xp*sx/(ch*(1.0_xp + ch)), qp)
+            else
+                t = quarter_tanh(s)
+            end if
+        end function qt
+
+        !> t moved (one Newton step) so that the map's h = sqrt(beta) 4t (1 + t^2)/(1 -
+        !! t^2)^2, formed as the integrands form it, is h to a few roundings: an error
+        !! of t itself would move h by up to 8 times more (not when rough).
+        elemental function on_map(t, h, width) result(t_new)
+            real(qp), intent(in) :: t, h, width
+            real(qp) :: t_new, inv, h_t, slope
+            t_new = t
+            if (rough .or. .not. t > 0.0_qp) return
+            inv = 1.0_qp/((1.0_qp - t)*(1.0_qp + t))
+            h_t = (4.0_qp*width)*(t*(1.0_qp + t*t))*(inv*inv)
+            slope = h_t*(1.0_qp/t + 2.0_qp*t/(1.0_qp + t*t) + 4.0_qp*t*inv)
+            t_new = t - (h_t - h)/slope
+        end function on_map
+
         !> h from h_lo to h_hi (distance to the peak at a): in the sinh map
-        !! h = sqrt(beta) sinh(xi), in t = tanh(xi/2), up to `stretch` widths
+        !! h = sqrt(beta) sinh(xi), in t = tanh(xi/4), up to `peak_stretch` widths
         !! sqrt(beta), plain h beyond.
         pure subroutine peak_pieces(pieces, n, kind, h_lo, h_hi)
             type(panel_piece), intent(inout) :: pieces(:)
@@ -508,10 +541,12 @@ contains
             real(qp) :: width, h_mid
             if (.not. (h_hi > h_lo)) return
             width = rt(curve%width2)
-            if (curve%width2 > 0.0_qp .and. h_lo < stretch*width) then
-                h_mid = width*stretch
-                call add(pieces, n, kind, .true., ht(ratio(h_lo, width)), &
-                         ht(min(ratio(h_hi, width), stretch)))
+            if (curve%width2 > 0.0_qp .and. h_lo < peak_stretch*width) then
+                h_mid = width*peak_stretch
+                call add(pieces, n, kind, .true., &
+                         on_map(qt(ratio(h_lo, width)), h_lo, width), &
+                         on_map(qt(min(ratio(h_hi, width), peak_stretch)), &
+                                min(h_hi, h_mid), width))
                 if (h_hi > h_mid) call add(pieces, n, kind, .false., h_mid, h_hi)
             else
                 call add(pieces, n, kind, .false., h_lo, h_hi)
@@ -560,6 +595,15 @@ contains
         real(xp) :: t
         t = s/(1.0_xp + sqrt(1.0_xp + s*s))
     end function half_tanh_xp
+
+    !> tanh(asinh(s)/4) = sinh(xi/2)/(1 + cosh(xi/2)), cosh(xi/2) = sqrt((1 + sqrt(1 +
+    !! s^2))/2), sinh(xi/2) = s/(2 cosh(xi/2)) (xi = asinh(s)), s >= 0: no cancellation.
+    elemental function quarter_tanh(s) result(t)
+        real(qp), intent(in) :: s
+        real(qp) :: t, ch
+        ch = root(0.5_qp*(1.0_qp + root(1.0_qp + s*s)))
+        t = 0.5_qp*s/(ch*(1.0_qp + ch))
+    end function quarter_tanh
 
     !> tanh(asinh(s)/2) = s/(1 + sqrt(1 + s^2)), s >= 0.
     elemental function half_tanh(s) result(t)
@@ -1056,12 +1100,12 @@ contains
                 h_hi = real_part(-a, (min(r, far_start) - 1.5_qp) + ac)
             end if
             if (stretched) then
-                lower = half_tanh_c(h_lo/width)
+                lower = quarter_tanh_c(h_lo/width)
                 upper = h_hi/width
-                if (real(upper) > real(stretch, xp)) upper = real(stretch, xp)
-                upper = half_tanh_c(upper)
+                if (real(upper) > real(peak_stretch, xp)) upper = real(peak_stretch, xp)
+                upper = quarter_tanh_c(upper)
             else if (after_stretched) then
-                lower = width*real(stretch, xp)
+                lower = width*real(peak_stretch, xp)
                 upper = h_hi
             else
                 lower = h_lo
@@ -1077,6 +1121,14 @@ contains
         complex(xp) :: w
         w = cmplx(real(x, xp), aimag(z), xp)
     end function real_part
+
+    !> `quarter_tanh` in complex hardware precision.
+    elemental function quarter_tanh_c(s) result(t)
+        complex(xp), intent(in) :: s
+        complex(xp) :: t, ch
+        ch = sqrt(0.5_xp*(1.0_xp + sqrt(1.0_xp + s*s)))
+        t = 0.5_xp*s/(ch*(1.0_xp + ch))
+    end function quarter_tanh_c
 
     !> tanh(asinh(s)/2) = s/(1 + sqrt(1 + s^2)) in complex hardware precision.
     elemental function half_tanh_c(s) result(t)

@@ -45,6 +45,10 @@ module brachistochrone_repulsive_panels
     integer, parameter :: max_nodes = 48, max_panels = 64
     !> Digits aimed at: binary128 (with a margin over 34) and the hardware phase.
     real(real64), parameter :: quad_digits = 35.0_real64, hardware_digits = 20.5_real64
+    !> More digits asked of the peak's sinh map in binary128 (its integrand grows
+    !! towards the map's poles t = +-1 near the Bernstein ellipse: measured against
+    !! the mpmath references, 35 digits left up to 6 eps)
+    real(real64), parameter :: stretched_extra = 2.0_real64
     !> Digits aimed at by the complex-step slopes (used only through a step below 1e-17 of
     !! lambda, so 1e-17 of relative error would do; the hardware rounding is 1e-19)
     real(real64), parameter :: slope_digits = 19.0_real64
@@ -87,11 +91,11 @@ module brachistochrone_repulsive_panels
         !> the start piece's constant factors of theta, s, t: 2 sqrt2 K span^(3/2),
         !! 2 span, sqrt(2 span)
         real(qp) :: start_factor(3) = 0.0_qp
-        !> `panel_sums`: 2 sqrt(beta), 2 sqrt(d/(R-1)), 4 (R - 1)
-        real(qp) :: root_beta2 = 0.0_qp, root_ratio2 = 0.0_qp, rm1_4 = 0.0_qp
+        !> `panel_sums`: 4 sqrt(beta), 2 sqrt(d/(R-1)), 4 (R - 1)
+        real(qp) :: root_beta4 = 0.0_qp, root_ratio2 = 0.0_qp, rm1_4 = 0.0_qp
         !> hardware copies for the seeds of `panel_sums`
         real(xp) :: p_x = 0.0_xp, a_x = 0.0_xp, beta_x = 0.0_xp, span_x = 0.0_xp, &
-                    a_m1_x = 0.0_xp, rm1_x = 0.0_xp, d_x = 0.0_xp, root_beta2_x = 0.0_xp, &
+                    a_m1_x = 0.0_xp, rm1_x = 0.0_xp, d_x = 0.0_xp, root_beta4_x = 0.0_xp, &
                     root_ratio2_x = 0.0_xp, rm1_4_x = 0.0_xp
     end type prepared_curve
 
@@ -123,7 +127,7 @@ contains
             pc%inverse_root_rm1 = 1.0_qp/pc%root_rm1
             pc%root_ratio = sqrt(c%d/c%rm1)
         end if
-        pc%root_beta2 = 2.0_qp*pc%root_beta
+        pc%root_beta4 = 4.0_qp*pc%root_beta
         pc%root_ratio2 = 2.0_qp*pc%root_ratio
         pc%rm1_4 = 4.0_qp*c%rm1
         pc%p_x = real(c%p, xp)
@@ -133,7 +137,7 @@ contains
         pc%a_m1_x = real(pc%a_m1, xp)
         pc%rm1_x = real(c%rm1, xp)
         pc%d_x = real(c%d, xp)
-        pc%root_beta2_x = real(pc%root_beta2, xp)
+        pc%root_beta4_x = real(pc%root_beta4, xp)
         pc%root_ratio2_x = real(pc%root_ratio2, xp)
         pc%rm1_4_x = real(pc%rm1_4, xp)
     end function prepare
@@ -168,7 +172,8 @@ contains
         status = status_ok
         pc = prepare(curve)
         do i = 1, size(pieces)
-            call plan_panels(curve, pieces(i), quad_digits, lo, hi, which, count, status)
+            call plan_panels(curve, pieces(i), quad_digits + merge(stretched_extra, &
+                             0.0_real64, pieces(i)%stretched), lo, hi, which, count, status)
             if (status /= status_ok) return
             piece_sums = 0.0_qp
             do j = 1, count
@@ -293,8 +298,8 @@ contains
         case (piece_below, piece_above)
             if (stretched) then
                 one_minus = (1.0_xp - v)*(1.0_xp + v)
-                h = dual_sqrt(c(4))*2.0_xp*v/one_minus
-                jac = 2.0_xp/one_minus
+                h = dual_sqrt(c(4))*4.0_xp*v*(1.0_xp + v*v)/(one_minus*one_minus)
+                jac = 4.0_xp/one_minus
             else
                 h = v
                 jac = 1.0_xp/dual_sqrt(h*h + c(4))
@@ -531,9 +536,15 @@ contains
                 do k = 1, 3
                     t = merge(-1.0_real64, 1.0_real64, piece%kind == piece_below)*(x(k) - a)
                     if (piece%stretched) then
-                        t = half_tanh_64(t/w)
+                        ! t = tanh(xi/4), xi = asinh(u) + 2 pi i m or i pi - asinh(u) +
+                        ! 2 pi i m: t, 1/t, z and conj(z), z = (i - t)/(1 - i t)
+                        t = quarter_tanh_64(t/w)
                         call add(points, np, cmplx(t, 0.0_real64, real64))
-                        call add(points, np, cmplx(-1.0_real64/t, 0.0_real64, real64))
+                        call add(points, np, cmplx(1.0_real64/t, 0.0_real64, real64))
+                        z = cmplx(-2.0_real64*t, (1.0_real64 - t)*(1.0_real64 + t), real64)/ &
+                            (1.0_real64 + t*t)
+                        call add(points, np, z)
+                        call add(points, np, conjg(z))
                     else
                         call add(points, np, cmplx(t, 0.0_real64, real64))
                     end if
@@ -593,6 +604,18 @@ contains
         call add(points, np, -i1)
     end subroutine singular_points
 
+    !> tanh(asinh(s)/4) (any real s, finite): sinh(xi/2)/(1 + cosh(xi/2)).
+    elemental function quarter_tanh_64(s) result(t)
+        real(real64), intent(in) :: s
+        real(real64) :: t, ch
+        if (abs(s) < 1.0e150_real64) then
+            ch = sqrt(0.5_real64*(1.0_real64 + sqrt(1.0_real64 + s*s)))
+            t = 0.5_real64*s/(ch*(1.0_real64 + ch))
+        else
+            t = sign(1.0_real64, s)
+        end if
+    end function quarter_tanh_64
+
     !> tanh(asinh(s)/2) = s/(1 + sqrt(1 + s^2)) (any real s, finite).
     elemental function half_tanh_64(s) result(t)
         real(real64), intent(in) :: s
@@ -630,7 +653,8 @@ contains
 
     !> theta, s, t integrands (binary128) at the piece variable v; the formulas of
     !! `brachistochrone_repulsive` (see its notes), with the maps in rational form:
-    !! stretched h = sqrt(beta) 2t/(1 - t^2) (t = tanh(xi/2), dxi = 2 dt/(1 - t^2));
+    !! stretched h = sqrt(beta) 4t (1 + t^2)/(1 - t^2)^2 (t = tanh(xi/4), dxi = 4 dt/(1 -
+    !! t^2));
     !! bounded sin(nu/2) = 2v/(1 + v^2), cos(nu/2) = (1 - v^2)/(1 + v^2) (v = tan(nu/4),
     !! dnu = 4 dv/(1 + v^2); swapped for mu = pi - nu); apse sin(nu/2) = c 2w/(1 - w^2).
     !! No elementary function but square roots (`inverse_sqrt`, within 2 ulp).
@@ -669,10 +693,10 @@ contains
         case (piece_below, piece_above)
             if (stretched) then
                 one_minus = (1.0_qp - v)*(1.0_qp + v)
-                inv = 2.0_qp/one_minus
-                h = pc%root_beta*v*inv
+                inv = 1.0_qp/one_minus
+                h = pc%root_beta4*(v*(1.0_qp + v*v))*(inv*inv)
                 point = c%a + merge(-h, h, kind == piece_below)
-                rw = w*inv
+                rw = 4.0_qp*w*inv
                 q = point + c%p
             else
                 h = v
@@ -787,11 +811,12 @@ contains
                     qx = (xx + pc%p_x)*((xx - pc%a_x)**2 + pc%beta_x)
                 else
                     if (stretched) then
+                        ! h = sqrt(beta) 4t (1 + t^2)/(1 - t^2)^2, dxi = 4 dt/(1 - t^2)
                         inv = 1.0_qp/((1.0_qp - v)*(1.0_qp + v))
-                        h = pc%root_beta2*v*inv
+                        h = pc%root_beta4*(v*(1.0_qp + v*v))*(inv*inv)
                         w = r%weight(m)*inv
                         invx = 1.0_xp/((1.0_xp - vx)*(1.0_xp + vx))
-                        hx = pc%root_beta2_x*vx*invx
+                        hx = pc%root_beta4_x*(vx*(1.0_xp + vx*vx))*(invx*invx)
                     else
                         h = v
                         w = r%weight(m)
@@ -894,8 +919,8 @@ contains
             f = [0.25_qp*pc%k_root2*pc%span_root_span, 0.5_qp*pc%c%span, &
                  half_root2*pc%root_span]
         case (piece_below, piece_above)
-            f = [0.25_qp*pc%k_root2, 1.0_qp, half_root2]
-            if (.not. stretched) f = 0.5_qp*f
+            f = [0.5_qp*pc%k_root2, 2.0_qp, sqrt2]
+            if (.not. stretched) f = 0.25_qp*f
         case (piece_far)
             f = [pc%k_root2/32.0_qp, 0.125_qp, sqrt2/16.0_qp]
         case (piece_apse)
@@ -959,8 +984,8 @@ contains
         case (piece_below, piece_above)
             if (stretched) then
                 one_minus = (1.0_xp - v)*(1.0_xp + v)
-                h = sqrt(c(4))*2.0_xp*v/one_minus
-                jac = 2.0_xp/one_minus
+                h = sqrt(c(4))*4.0_xp*v*(1.0_xp + v*v)/(one_minus*one_minus)
+                jac = 4.0_xp/one_minus
             else
                 h = v
                 jac = 1.0_xp/sqrt(h*h + c(4))
