@@ -194,8 +194,8 @@ contains
         type(panel_piece), intent(in) :: pieces(:)
         real(qp), intent(out) :: value
         integer, intent(out) :: status
-        real(xp) :: lo(max_panels), hi(max_panels), c(7), width, start, total, sum
-        integer :: which(max_panels), count, i, j, m
+        real(xp) :: lo(max_panels), hi(max_panels), c(7), total, piece_total, factor
+        integer :: which(max_panels), count, i, j
         value = 0.0_qp
         status = status_ok
         c = real([curve%k, curve%p, curve%a, curve%beta, curve%span, curve%rm1, curve%d], xp)
@@ -203,20 +203,26 @@ contains
         do i = 1, size(pieces)
             call plan_panels_xp(curve, pieces(i), hardware_digits, lo, hi, which, count, status)
             if (status /= status_ok) return
+            piece_total = 0.0_xp
             do j = 1, count
-                start = lo(j)
-                width = hi(j) - lo(j)
-                sum = 0.0_xp
-                associate (r => rules%rule(which(j)))
-                    do m = 1, r%n
-                        sum = sum + r%weight_xp(m)*angle_xp(c, pieces(i)%kind, &
-                                  pieces(i)%stretched, start + width*r%node_xp(m))
-                    end do
-                end associate
-                total = total + width*sum
+                piece_total = piece_total + angle_sum_xp(c, pieces(i)%kind, &
+                    pieces(i)%stretched, lo(j), hi(j) - lo(j), rules%rule(which(j)))
             end do
+            select case (pieces(i)%kind)
+            case (piece_start)
+                factor = 2.0_xp*c(5)*sqrt(c(5))
+            case (piece_below, piece_above)
+                factor = merge(4.0_xp, 1.0_xp, pieces(i)%stretched)
+            case (piece_far)
+                factor = 1.0_xp
+            case (piece_apse)
+                factor = 4.0_xp*sqrt(c(6))
+            case default
+                factor = 4.0_xp
+            end select
+            total = total + factor*piece_total
         end do
-        value = real(total, qp)
+        value = real(c(1)*sqrt(2.0_xp)*total, qp)
     end subroutine panel_angle_xp
 
     !> The derivatives of theta and s over the pieces with respect to the solver's
@@ -965,61 +971,81 @@ contains
                      48), iand(ishft(bits(1), -15), low48))], y)
     end function quad_real
 
-    !> theta's integrand in hardware precision (the maps of `integrands`);
+    !> The weighted sum of theta's integrand over one panel [start, start + width] in
+    !! hardware precision (the maps of `integrands`), without the piece's constant
+    !! factor (`panel_angle_xp`): one square root and one or two divisions a node.
     !! c = [K, P, a, beta, span, R - 1, d].
-    pure function angle_xp(c, kind, stretched, v) result(y)
-        real(xp), intent(in) :: c(7)
+    pure function angle_sum_xp(c, kind, stretched, start, width, r) result(total)
+        real(xp), intent(in) :: c(7), start, width
         integer, intent(in) :: kind
         logical, intent(in) :: stretched
-        real(xp), intent(in) :: v
-        real(xp) :: y
-        real(xp), parameter :: root2 = sqrt(2.0_xp)
-        real(xp) :: point, xm1, h, jac, sn, cs, inv, one_minus
+        type(panel_rule), intent(in) :: r
+        real(xp) :: total
+        real(xp) :: v, x, xm1, h, inv, sn, b, z, sum, root_beta4, am1, ratio2, rm1_4
+        integer :: m
+        sum = 0.0_xp
         select case (kind)
         case (piece_start)
-            xm1 = c(5)*v*v
-            point = 1.0_xp + xm1
-            y = c(1)*root2*2.0_xp*c(5)*sqrt(c(5))*v*v/(point* &
-                sqrt((point + c(2))*((point - c(3))**2 + c(4))))
+            do m = 1, r%n
+                v = start + width*r%node_xp(m)
+                x = 1.0_xp + c(5)*(v*v)
+                sum = sum + r%weight_xp(m)*(v*v)/(x*sqrt((x + c(2))*((x - c(3))**2 + c(4))))
+            end do
         case (piece_below, piece_above)
-            if (stretched) then
-                one_minus = (1.0_xp - v)*(1.0_xp + v)
-                h = sqrt(c(4))*4.0_xp*v*(1.0_xp + v*v)/(one_minus*one_minus)
-                jac = 4.0_xp/one_minus
-            else
-                h = v
-                jac = 1.0_xp/sqrt(h*h + c(4))
-            end if
-            if (kind == piece_below) h = -h
-            point = c(3) + h
-            xm1 = (c(3) - 1.0_xp) + h
-            y = c(1)*root2*sqrt(xm1)/(point*sqrt(point + c(2)))*jac
-        case (piece_far)
-            point = 4.0_xp/v
-            y = c(1)*root2*sqrt(point - 1.0_xp)/(point* &
-                sqrt((point + c(2))*((point - c(3))**2 + c(4))))*4.0_xp/(v*v)
-        case default
-            if (kind == piece_apse) then
-                one_minus = (1.0_xp - v)*(1.0_xp + v)
-                sn = sqrt(c(7)/c(6))*2.0_xp*v/one_minus
-                cs = sqrt((1.0_xp - sn)*(1.0_xp + sn))
-                xm1 = c(6)*cs*cs
-                point = 1.0_xp + xm1
-                y = c(1)*root2*xm1/(point*sqrt(point + c(2)))*4.0_xp/(sqrt(c(6))*cs*one_minus)
-            else
-                inv = 1.0_xp/(1.0_xp + v*v)
-                sn = 2.0_xp*v*inv
-                cs = (1.0_xp - v)*(1.0_xp + v)*inv
-                if (kind == piece_arch_start) then
-                    h = sn
-                    sn = cs
-                    cs = h
+            root_beta4 = 4.0_xp*sqrt(c(4))
+            am1 = c(3) - 1.0_xp
+            do m = 1, r%n
+                v = start + width*r%node_xp(m)
+                if (stretched) then
+                    inv = 1.0_xp/((1.0_xp - v)*(1.0_xp + v))
+                    h = root_beta4*(v*(1.0_xp + v*v))*(inv*inv)
+                    z = inv*inv
+                else
+                    h = v
+                    z = 1.0_xp/(v*v + c(4))
                 end if
-                xm1 = c(6)*cs*cs
-                point = 1.0_xp + xm1
-                y = c(1)*root2*xm1/(point*sqrt((c(7) + c(6)*sn*sn)*(point + c(2))))*4.0_xp*inv
-            end if
+                if (kind == piece_below) h = -h
+                x = c(3) + h
+                xm1 = am1 + h
+                sum = sum + r%weight_xp(m)*sqrt(z*xm1/((x + c(2))*(x*x)))
+            end do
+        case (piece_far)
+            do m = 1, r%n
+                v = start + width*r%node_xp(m)
+                x = 4.0_xp/v
+                sum = sum + r%weight_xp(m)*sqrt((x - 1.0_xp)/((x + c(2))* &
+                      ((x - c(3))**2 + c(4))*(v*v)))
+            end do
+        case (piece_apse)
+            ratio2 = 2.0_xp*sqrt(c(7)/c(6))
+            do m = 1, r%n
+                v = start + width*r%node_xp(m)
+                inv = 1.0_xp/((1.0_xp - v)*(1.0_xp + v))
+                sn = ratio2*v*inv
+                b = (1.0_xp - sn)*(1.0_xp + sn)
+                x = 1.0_xp + c(6)*b
+                sum = sum + r%weight_xp(m)*inv*sqrt(b/((x + c(2))*(x*x)))
+            end do
+        case default
+            rm1_4 = 4.0_xp*c(6)
+            do m = 1, r%n
+                v = start + width*r%node_xp(m)
+                inv = 1.0_xp/(1.0_xp + v*v)
+                sn = v*inv
+                b = (1.0_xp - v)*(1.0_xp + v)*inv
+                if (kind == piece_arch) then
+                    xm1 = c(6)*(b*b)
+                    z = c(7) + rm1_4*(sn*sn)
+                else
+                    xm1 = rm1_4*(sn*sn)
+                    z = c(7) + c(6)*(b*b)
+                end if
+                x = 1.0_xp + xm1
+                sum = sum + r%weight_xp(m)*(xm1*inv)/sqrt((x*x)*z*(x + c(2)))
+            end do
         end select
-    end function angle_xp
+        total = width*sum
+    end function angle_sum_xp
+
 
 end module brachistochrone_repulsive_panels
