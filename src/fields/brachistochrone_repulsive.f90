@@ -782,6 +782,29 @@ contains
         end if
     end subroutine curve_of_lambda
 
+    !> `curve_of_lambda` at x = x0 + dx from the curve at x0 (curve0, made by
+    !! `curve_of_lambda`), |dx| <= 1e-12: exp(x0 + dx) = exp(x0) (1 + dx + dx^2/2) to a
+    !! rounding, no binary128 exponential; next to the apse `curve_of_lambda` at x.
+    pure subroutine curve_after_step(arch, curve0, dx, x, curve, rho)
+        integer, intent(in) :: arch
+        type(repulsive_curve), intent(in) :: curve0
+        real(qp), intent(in) :: dx, x, rho
+        type(repulsive_curve), intent(out) :: curve
+        real(qp) :: step
+        if (arch > near_apse .or. .not. abs(dx) <= 1.0e-12_qp) then
+            call curve_of_lambda(arch, x, curve, rho)
+            return
+        end if
+        ! exp(x) = exp(x0) + exp(x0) expm1(dx), expm1(x) = expm1(x0) + exp(x0) expm1(dx)
+        step = dx*(1.0_qp + 0.5_qp*dx)
+        if (arch == arch_unbounded) then
+            call set_from_gap(curve0%gap + curve0%gap*step, curve)
+        else
+            call set_bounded(curve0%apse_m1 - 0.5_qp*(curve0%apse_gap*step), &
+                             curve0%apse_gap + curve0%apse_gap*step, curve)
+        end if
+    end subroutine curve_after_step
+
     !> The bounded curve with apse R = rho + r_gap, R - rho kept exactly.
     pure subroutine set_near_apse(rho, r_gap, curve)
         real(qp), intent(in) :: rho, r_gap
@@ -949,27 +972,32 @@ contains
 
     !> d theta/d lambda and d s/d lambda at radius r (second half-arch: 2 F(R) - F(r))
     !! on the curve of lambda, by the complex step in hardware precision (about 18
-    !! digits; `panel_slopes_xp`). status: status_ok or a failure.
-    pure subroutine lambda_slopes(arch, curve, r, rules, slopes, status)
+    !! digits; `panel_slopes_xp`), and theta, s, t there in binary128
+    !! (`panel_values`' values, on the same pieces). status, value_status: status_ok or
+    !! a failure of the slopes, of the values.
+    pure subroutine lambda_slopes(arch, curve, r, rules, slopes, status, values, &
+                                  value_status)
         integer, intent(in) :: arch
         type(repulsive_curve), intent(in) :: curve
         real(qp), intent(in) :: r
         type(panel_rules), intent(in) :: rules
-        real(qp), intent(out) :: slopes(2)
-        integer, intent(out) :: status
-        real(qp) :: apse(2)
-        integer :: stat
-        call one_end(r, slopes, status)
+        real(qp), intent(out) :: slopes(2), values(3)
+        integer, intent(out) :: status, value_status
+        real(qp) :: apse(2), apse_values(3)
+        integer :: stat(2)
+        call one_end(r, slopes, status, values, value_status)
         if (mod(arch, near_apse) == arch_second) then
-            call one_end(the_apse, apse, stat)
-            call keep_first(status, stat)
+            call one_end(the_apse, apse, stat(1), apse_values, stat(2))
+            call keep_first(status, stat(1))
+            call keep_first(value_status, stat(2))
             slopes = 2.0_qp*apse - slopes
+            values = 2.0_qp*apse_values - values
         end if
     contains
-        pure subroutine one_end(radius, v, st)
+        pure subroutine one_end(radius, v, st, w, st_w)
             real(qp), intent(in) :: radius
-            real(qp), intent(out) :: v(2)
-            integer, intent(out) :: st
+            real(qp), intent(out) :: v(2), w(3)
+            integer, intent(out) :: st, st_w
             real(xp), parameter :: h = 1.0e-40_xp
             type(panel_piece) :: pieces(max_pieces)
             type(panel_curve) :: c
@@ -979,6 +1007,7 @@ contains
             c = panel_curve(bounded=curve%bounded, k=curve%k, p=curve%p, a=curve%centre, &
                             beta=curve%width2, rm1=curve%apse_m1, d=curve%split)
             call plan_pieces(curve, radius, .false., pieces, n, c%span)
+            call panel_integrals(rules, c, pieces(1:n), w, st_w)
             call complex_step(curve, radius, h, c%span, pieces(1:n), cc, lower_c, upper_c)
             call panel_slopes_xp(rules, c, pieces(1:n), lower_c(1:n), upper_c(1:n), cc, h, &
                                  v, st)
@@ -1230,10 +1259,8 @@ contains
         if (any(stat /= status_ok)) return
         ! one binary128 evaluation, the Newton step on the complex-step slopes
         call curve_of_lambda(arch, x0, curve, rho)
-        call panel_values(curve, rho, mod(arch, near_apse) == arch_second, rules, .false., &
-                          v0, stat(1))
+        call lambda_slopes(arch, curve, rho, rules, slopes, stat(2), v0, stat(1))
         f0 = v0(1) - target
-        call lambda_slopes(arch, curve, rho, rules, slopes, stat(2))
         if (any(stat /= status_ok)) return
         steps = steps + 1
         ! the error of x that moves theta, s or t by a rounding (next to the apse, where
@@ -1247,10 +1274,10 @@ contains
             x = x0 + dx
             if (x > lo .and. x < hi .and. 1.0e-17_qp*abs(dx) + curvature*dx*dx <= &
                 2.0_qp*eps_qp*scale) then
+                call curve_after_step(arch, curve, dx, x, solution%curve, rho)
                 ! (K at the midpoint to 1e-19 is ample: it multiplies f0, below 1e-16)
                 call rough_curve_of_lambda(arch, x0 + 0.5_qp*dx, curve, rho)
                 conserved = curve%k
-                call curve_of_lambda(arch, x, solution%curve, rho)
                 solution%arch = mod(arch, near_apse)
                 solution%angle = v0(1) + slopes(1)*dx
                 solution%arclength = v0(2) + slopes(2)*dx
