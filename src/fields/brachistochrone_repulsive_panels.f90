@@ -227,7 +227,7 @@ contains
 
     !> The derivatives of theta and s over the pieces with respect to the solver's
     !! unknown, by the complex step in hardware precision: the curve's numbers `cc`
-    !! (order of `angle_xp`'s c) and the pieces' ends `lower_c`, `upper_c` carry
+    !! (order of `slopes_sum_c`'s c) and the pieces' ends `lower_c`, `upper_c` carry
     !! h d/dlambda in their imaginary parts; the panels and rules are those of the real
     !! pieces, their ends moved with the pieces'. slopes = Im(theta, s)/h, to about the
     !! hardware precision (no cancellation). status as for `panel_integrals`.
@@ -241,8 +241,8 @@ contains
         real(qp), intent(out) :: slopes(2)
         integer, intent(out) :: status
         real(qp) :: lo(max_panels), hi(max_panels), length
-        complex(xp) :: a, b, width, total(2), sum(2)
-        integer :: which(max_panels), count, i, j, m
+        complex(xp) :: a, b, total(2), sum(2)
+        integer :: which(max_panels), count, i, j
         slopes = 0.0_qp
         status = status_ok
         total = (0.0_xp, 0.0_xp)
@@ -250,21 +250,16 @@ contains
             call plan_panels(curve, pieces(i), slope_digits, lo, hi, which, count, status)
             if (status /= status_ok) return
             length = pieces(i)%upper - pieces(i)%lower
+            sum = (0.0_xp, 0.0_xp)
             do j = 1, count
                 a = lower_c(i) + real((lo(j) - pieces(i)%lower)/length, xp)* &
                     (upper_c(i) - lower_c(i))
                 b = lower_c(i) + real((hi(j) - pieces(i)%lower)/length, xp)* &
                     (upper_c(i) - lower_c(i))
-                width = b - a
-                sum = (0.0_xp, 0.0_xp)
-                associate (r => rules%rule(which(j)))
-                    do m = 1, r%n
-                        sum = sum + r%weight_xp(m)*angle_length_c(cc, pieces(i)%kind, &
-                                  pieces(i)%stretched, a + width*r%node_xp(m))
-                    end do
-                end associate
-                total = total + width*sum
+                sum = sum + slopes_sum_c(cc, pieces(i)%kind, pieces(i)%stretched, a, b - a, &
+                                         rules%rule(which(j)))
             end do
+            total = total + slope_factors(cc, pieces(i)%kind, pieces(i)%stretched)*sum
         end do
         slopes = real(aimag(total)/h, qp)
     end subroutine panel_slopes_xp
@@ -283,53 +278,70 @@ contains
         r = r*(1.5_qp - scale(x, -1)*(r*r))
     end function rsqrt
 
-    !> theta's and s's integrands in complex hardware precision (the maps of
-    !! `integrands`); c = [K, P, a, beta, span, R - 1, d].
-    pure function angle_length_c(c, kind, stretched, v) result(y)
-        complex(xp), intent(in) :: c(7)
+    !> The weighted sums of theta's and s's integrands over one panel [a, a + width] in
+    !! complex hardware precision (the maps of `integrands`), without the piece's
+    !! constant factors (`slope_factors`); c = [K, P, a, beta, span, R - 1, d].
+    pure function slopes_sum_c(c, kind, stretched, a, width, r) result(total)
+        complex(xp), intent(in) :: c(7), a, width
         integer, intent(in) :: kind
         logical, intent(in) :: stretched
-        complex(xp), intent(in) :: v
-        complex(xp) :: y(2)
-        real(xp), parameter :: root2 = sqrt(2.0_xp)
-        !! (sqrt below: `dual_sqrt`)
-        complex(xp) :: point, xm1, h, jac, sn, cs, inv, one_minus, rq
+        type(panel_rule), intent(in) :: r
+        complex(xp) :: total(2)
+        complex(xp) :: v, x, xm1, h, inv, sn, cs, rq, sum(2), root_beta4, am1, ratio2, z
+        integer :: m
+        sum = (0.0_xp, 0.0_xp)
         select case (kind)
         case (piece_start)
-            xm1 = c(5)*v*v
-            point = 1.0_xp + xm1
-            rq = 1.0_xp/dual_sqrt((point + c(2))*((point - c(3))**2 + c(4)))
-            y(1) = c(1)*root2*2.0_xp*c(5)*dual_sqrt(c(5))*v*v/point*rq
-            y(2) = 2.0_xp*c(5)*v*point*dual_sqrt(point)*rq
+            do m = 1, r%n
+                v = a + width*r%node_xp(m)
+                x = 1.0_xp + c(5)*(v*v)
+                rq = r%weight_xp(m)/dual_sqrt((x + c(2))*((x - c(3))**2 + c(4)))
+                sum(1) = sum(1) + (v*v)*rq/x
+                sum(2) = sum(2) + v*x*dual_sqrt(x)*rq
+            end do
         case (piece_below, piece_above)
-            if (stretched) then
-                one_minus = (1.0_xp - v)*(1.0_xp + v)
-                h = dual_sqrt(c(4))*4.0_xp*v*(1.0_xp + v*v)/(one_minus*one_minus)
-                jac = 4.0_xp/one_minus
-            else
-                h = v
-                jac = 1.0_xp/dual_sqrt(h*h + c(4))
-            end if
-            if (kind == piece_below) h = -h
-            point = c(3) + h
-            xm1 = (c(3) - 1.0_xp) + h
-            rq = jac/dual_sqrt(point + c(2))
-            y(1) = c(1)*root2*dual_sqrt(xm1)/point*rq
-            y(2) = point*dual_sqrt(point)*rq
+            root_beta4 = 4.0_xp*dual_sqrt(c(4))
+            am1 = c(3) - 1.0_xp
+            do m = 1, r%n
+                v = a + width*r%node_xp(m)
+                if (stretched) then
+                    inv = 1.0_xp/((1.0_xp - v)*(1.0_xp + v))
+                    h = root_beta4*(v*(1.0_xp + v*v))*(inv*inv)
+                    z = inv*inv
+                else
+                    h = v
+                    z = 1.0_xp/(v*v + c(4))
+                end if
+                if (kind == piece_below) h = -h
+                x = c(3) + h
+                xm1 = am1 + h
+                rq = r%weight_xp(m)*dual_sqrt(z/(x + c(2)))
+                sum(1) = sum(1) + dual_sqrt(xm1)*rq/x
+                sum(2) = sum(2) + x*dual_sqrt(x)*rq
+            end do
         case (piece_far)
-            point = 4.0_xp/v
-            rq = 4.0_xp/(v*v)/dual_sqrt((point + c(2))*((point - c(3))**2 + c(4)))
-            y(1) = c(1)*root2*dual_sqrt(point - 1.0_xp)/point*rq
-            y(2) = point*dual_sqrt(point)*rq
-        case default
-            if (kind == piece_apse) then
-                one_minus = (1.0_xp - v)*(1.0_xp + v)
-                sn = dual_sqrt(c(7)/c(6))*2.0_xp*v/one_minus
+            do m = 1, r%n
+                v = a + width*r%node_xp(m)
+                x = 4.0_xp/v
+                rq = r%weight_xp(m)/((v*v)*dual_sqrt((x + c(2))*((x - c(3))**2 + c(4))))
+                sum(1) = sum(1) + dual_sqrt(x - 1.0_xp)*rq/x
+                sum(2) = sum(2) + x*dual_sqrt(x)*rq
+            end do
+        case (piece_apse)
+            ratio2 = 2.0_xp*dual_sqrt(c(7)/c(6))
+            do m = 1, r%n
+                v = a + width*r%node_xp(m)
+                inv = 1.0_xp/((1.0_xp - v)*(1.0_xp + v))
+                sn = ratio2*v*inv
                 cs = dual_sqrt((1.0_xp - sn)*(1.0_xp + sn))
-                xm1 = c(6)*cs*cs
-                point = 1.0_xp + xm1
-                rq = 4.0_xp/(dual_sqrt(c(6))*cs*one_minus)/dual_sqrt(point + c(2))
-            else
+                x = 1.0_xp + c(6)*(cs*cs)
+                rq = r%weight_xp(m)*inv/dual_sqrt(x + c(2))
+                sum(1) = sum(1) + cs*rq/x
+                sum(2) = sum(2) + x*dual_sqrt(x)*rq
+            end do
+        case default
+            do m = 1, r%n
+                v = a + width*r%node_xp(m)
                 inv = 1.0_xp/(1.0_xp + v*v)
                 sn = 2.0_xp*v*inv
                 cs = (1.0_xp - v)*(1.0_xp + v)*inv
@@ -338,14 +350,38 @@ contains
                     sn = cs
                     cs = h
                 end if
-                xm1 = c(6)*cs*cs
-                point = 1.0_xp + xm1
-                rq = 4.0_xp*inv/dual_sqrt((c(7) + c(6)*sn*sn)*(point + c(2)))
-            end if
-            y(1) = c(1)*root2*xm1/point*rq
-            y(2) = point*dual_sqrt(point)*(dual_sqrt(c(6))*cs)*rq
+                xm1 = c(6)*(cs*cs)
+                x = 1.0_xp + xm1
+                rq = r%weight_xp(m)*inv/dual_sqrt((c(7) + c(6)*(sn*sn))*(x + c(2)))
+                sum(1) = sum(1) + xm1*rq/x
+                sum(2) = sum(2) + x*dual_sqrt(x)*cs*rq
+            end do
         end select
-    end function angle_length_c
+        total = width*sum
+    end function slopes_sum_c
+
+    !> The constant factors of `slopes_sum_c`'s sums on a piece of this kind.
+    pure function slope_factors(c, kind, stretched) result(f)
+        complex(xp), intent(in) :: c(7)
+        integer, intent(in) :: kind
+        logical, intent(in) :: stretched
+        complex(xp) :: f(2)
+        complex(xp) :: k_root2
+        k_root2 = c(1)*sqrt(2.0_xp)
+        select case (kind)
+        case (piece_start)
+            f = [k_root2*2.0_xp*c(5)*dual_sqrt(c(5)), 2.0_xp*c(5)]
+        case (piece_below, piece_above)
+            f = [k_root2, (1.0_xp, 0.0_xp)]
+            if (stretched) f = 4.0_xp*f
+        case (piece_far)
+            f = [4.0_xp*k_root2, (4.0_xp, 0.0_xp)]
+        case (piece_apse)
+            f = [4.0_xp*k_root2*dual_sqrt(c(6)), (4.0_xp, 0.0_xp)]
+        case default
+            f = [4.0_xp*k_root2, 4.0_xp*dual_sqrt(c(6))]
+        end select
+    end function slope_factors
 
     !> sqrt(z) for the complex step: z = x + i y with x > 0 and |y| far below x (y is
     !! h = 1e-40 times a derivative), sqrt(x) + i y/(2 sqrt(x)), exact to first order
