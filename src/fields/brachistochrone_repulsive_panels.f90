@@ -838,7 +838,8 @@ contains
                 r1 = r%weight(m)*refine(q, 1.0_xp/sqrt(qx))
                 r2 = refine(x, 1.0_xp/sqrt(xx))
                 u = (x*x)*r1
-                sums(1) = sums(1) + a*(r2*(r2*r1))
+                ! (r2^2 = 4/x: one division for two products)
+                sums(1) = sums(1) + (a*r1)/x
                 sums(2) = sums(2) + v*(u*r2)
                 sums(3) = sums(3) + u
                 cycle
@@ -899,7 +900,7 @@ contains
                 r2 = refine(x*q, 1.0_xp/sqrt(xx*qx))
                 u = r1*w
                 x2 = x*x
-                sums(1) = sums(1) + ((pc%c%rm1*b)*u)*(r2*(r2*q))
+                sums(1) = sums(1) + ((pc%c%rm1*b)*u)/x
                 sums(2) = sums(2) + x2*(r2*w)
                 sums(3) = sums(3) + x2*u
                 cycle
@@ -941,7 +942,7 @@ contains
             r2 = refine(q*x, 1.0_xp/sqrt(qx*xx))
             u = r1*w
             x2 = x*x
-            sums(1) = sums(1) + (xm1*u)*(r2*(r2*q))
+            sums(1) = sums(1) + (xm1*u)/x
             sums(2) = sums(2) + x2*(r2*w)
             sums(3) = sums(3) + x2*u
         end do
@@ -958,15 +959,15 @@ contains
         real(qp), parameter :: half_root2 = 0.5_qp*sqrt2
         select case (kind)
         case (piece_start)
-            f = [0.25_qp*pc%k_root2*pc%span_root_span, 0.5_qp*pc%c%span, &
+            f = [pc%k_root2*pc%span_root_span, 0.5_qp*pc%c%span, &
                  half_root2*pc%root_span]
         case (piece_below, piece_above)
-            f = [0.5_qp*pc%k_root2, 2.0_qp, sqrt2]
+            f = [2.0_qp*pc%k_root2, 2.0_qp, sqrt2]
             if (.not. stretched) f = 0.25_qp*f
         case (piece_far)
-            f = [pc%k_root2/32.0_qp, 0.125_qp, sqrt2/16.0_qp]
+            f = [0.125_qp*pc%k_root2, 0.125_qp, sqrt2/16.0_qp]
         case (piece_apse)
-            f = [0.5_qp*pc%k_root2*pc%inverse_root_rm1, 2.0_qp, sqrt2*pc%inverse_root_rm1]
+            f = [2.0_qp*pc%k_root2*pc%inverse_root_rm1, 2.0_qp, sqrt2*pc%inverse_root_rm1]
         case (piece_arch)
             f = [0.5_qp*pc%k_root2, pc%root_rm1, sqrt2]
         case default
