@@ -478,17 +478,6 @@ contains
             end if
         end function rt
 
-        !> a/b (in hardware precision when rough).
-        elemental function ratio(a, b) result(y)
-            real(qp), intent(in) :: a, b
-            real(qp) :: y
-            if (rough .and. range(1.0_xp) >= range(1.0_qp)) then
-                y = real(real(a, xp)/real(b, xp), qp)
-            else
-                y = a/b
-            end if
-        end function ratio
-
         !> `half_tanh` (or in hardware precision when rough).
         elemental function ht(s) result(t)
             real(qp), intent(in) :: s
@@ -502,12 +491,13 @@ contains
             end if
         end function ht
 
-        !> `quarter_tanh` (or in hardware precision when rough).
+        !> `quarter_tanh` in hardware precision (`on_map` then refines it when not
+        !! rough), or in binary128 where the hardware's exponent range is smaller.
         elemental function qt(s) result(t)
             real(qp), intent(in) :: s
             real(qp) :: t
             real(xp) :: sx, ch
-            if (rough .and. range(1.0_xp) >= range(1.0_qp)) then
+            if (range(1.0_xp) >= range(1.0_qp)) then
                 sx = real(s, xp)
                 ch = sqrt(0.5_xp*(1.0_xp + sqrt(1.0_xp + sx*sx)))
                 t = real(0.5_xp*sx/(ch*(1.0_xp + ch)), qp)
@@ -544,9 +534,9 @@ contains
             if (curve%width2 > 0.0_qp .and. h_lo < peak_stretch*width) then
                 h_mid = width*peak_stretch
                 call add(pieces, n, kind, .true., &
-                         on_map(qt(ratio(h_lo, width)), h_lo, width), &
-                         on_map(qt(min(ratio(h_hi, width), peak_stretch)), &
-                                min(h_hi, h_mid), width))
+                         on_map(qt(real(real(h_lo, xp)/real(width, xp), qp)), h_lo, width), &
+                         on_map(qt(min(real(real(h_hi, xp)/real(width, xp), qp), &
+                                       peak_stretch)), min(h_hi, h_mid), width))
                 if (h_hi > h_mid) call add(pieces, n, kind, .false., h_mid, h_hi)
             else
                 call add(pieces, n, kind, .false., h_lo, h_hi)
