@@ -962,9 +962,11 @@ contains
 
     !> d theta/d lambda and d s/d lambda at radius r (second half-arch: 2 F(R) - F(r))
     !! on the curve of lambda, by the complex step in hardware precision (about 18
-    !! digits; `panel_slopes_xp`), and theta, s, t there in binary128
-    !! (`panel_values`' values, on the same pieces). status, value_status: status_ok or
-    !! a failure of the slopes, of the values.
+    !! digits; `panel_slopes_xp`), and theta, s, t there in binary128 on the same
+    !! pieces; on the second half-arch as F(r) + 2 (F(R) - F(r)), the difference
+    !! integrated on its own pieces (`complement_pieces`: no cancellation next to the
+    !! apse, and fewer nodes than F(R)). status, value_status: status_ok or a failure
+    !! of the slopes, of the values.
     pure subroutine lambda_slopes(arch, curve, r, rules, slopes, status, values, &
                                   value_status)
         integer, intent(in) :: arch
@@ -973,36 +975,77 @@ contains
         type(panel_rules), intent(in) :: rules
         real(qp), intent(out) :: slopes(2), values(3)
         integer, intent(out) :: status, value_status
-        real(qp) :: apse(2), apse_values(3)
-        integer :: stat(2)
-        call one_end(r, slopes, status, values, value_status)
+        real(qp) :: apse(2), rest(3)
+        type(panel_piece) :: pieces(max_pieces), apse_pieces(max_pieces), &
+                             between(max_pieces)
+        type(panel_curve) :: c
+        integer :: stat, n, n_apse, n_between
+        c = panel_curve(bounded=curve%bounded, k=curve%k, p=curve%p, a=curve%centre, &
+                        beta=curve%width2, rm1=curve%apse_m1, d=curve%split)
+        call one_end(r, c, slopes, status, pieces, n)
+        call panel_integrals(rules, c, pieces(1:n), values, value_status)
         if (mod(arch, near_apse) == arch_second) then
-            call one_end(the_apse, apse, stat(1), apse_values, stat(2))
-            call keep_first(status, stat(1))
-            call keep_first(value_status, stat(2))
+            call one_end(the_apse, c, apse, stat, apse_pieces, n_apse)
+            call keep_first(status, stat)
             slopes = 2.0_qp*apse - slopes
-            values = 2.0_qp*apse_values - values
+            call complement_pieces(pieces(1:n), apse_pieces(1:n_apse), between, n_between)
+            call panel_integrals(rules, c, between(1:n_between), rest, stat)
+            call keep_first(value_status, stat)
+            values = values + 2.0_qp*rest
         end if
     contains
-        pure subroutine one_end(radius, v, st, w, st_w)
+        pure subroutine one_end(radius, c, v, st, pieces, n)
             real(qp), intent(in) :: radius
-            real(qp), intent(out) :: v(2), w(3)
-            integer, intent(out) :: st, st_w
+            type(panel_curve), intent(inout) :: c
+            real(qp), intent(out) :: v(2)
+            integer, intent(out) :: st
+            type(panel_piece), intent(out) :: pieces(max_pieces)
+            integer, intent(out) :: n
             real(xp), parameter :: h = 1.0e-40_xp
-            type(panel_piece) :: pieces(max_pieces)
-            type(panel_curve) :: c
             complex(xp) :: cc(7), lower_c(max_pieces), upper_c(max_pieces)
-            integer :: n
             v = 0.0_qp
-            c = panel_curve(bounded=curve%bounded, k=curve%k, p=curve%p, a=curve%centre, &
-                            beta=curve%width2, rm1=curve%apse_m1, d=curve%split)
             call plan_pieces(curve, radius, .false., pieces, n, c%span)
-            call panel_integrals(rules, c, pieces(1:n), w, st_w)
             call complex_step(curve, radius, h, c%span, pieces(1:n), cc, lower_c, upper_c)
             call panel_slopes_xp(rules, c, pieces(1:n), lower_c(1:n), upper_c(1:n), cc, h, &
                                  v, st)
         end subroutine one_end
     end subroutine lambda_slopes
+
+    !> The pieces of F(R) - F(r) on a bounded curve (apse R, 1 <= r <= R) from those of
+    !! F(r) and of F(R) (`plan_pieces`): the apse's sinh map from the apse to r's end
+    !! when r's first piece is in it, else the sinh map's whole piece and the nu map
+    !! from its end to r (v_r = tan(nu_r/4) = (1 - m)/(1 + m) from r's piece in
+    !! m = tan(mu_r/4), mu = pi - nu, next to the start).
+    pure subroutine complement_pieces(pieces_r, pieces_apse, between, n)
+        type(panel_piece), intent(in) :: pieces_r(:), pieces_apse(:)
+        type(panel_piece), intent(out) :: between(max_pieces)
+        integer, intent(out) :: n
+        real(qp) :: v_r
+        integer :: i
+        n = 0
+        if (size(pieces_r) == 0) then
+            between(1:size(pieces_apse)) = pieces_apse
+            n = size(pieces_apse)
+            return
+        end if
+        if (pieces_r(1)%kind == piece_apse) then
+            call add(between, n, piece_apse, .false., 0.0_qp, pieces_r(1)%lower)
+            return
+        end if
+        if (pieces_r(1)%kind == piece_arch_start) then
+            v_r = (1.0_qp - pieces_r(1)%upper)/(1.0_qp + pieces_r(1)%upper)
+        else
+            v_r = pieces_r(1)%lower
+        end if
+        do i = 1, size(pieces_apse)
+            if (pieces_apse(i)%kind == piece_apse) then
+                call add(between, n, piece_apse, .false., pieces_apse(i)%lower, &
+                         pieces_apse(i)%upper)
+            else if (pieces_apse(i)%kind == piece_arch) then
+                call add(between, n, piece_arch, .false., pieces_apse(i)%lower, v_r)
+            end if
+        end do
+    end subroutine complement_pieces
 
     !> The curve's numbers [K, P, a, beta, span, R - 1, d] and the ends of its pieces
     !! (`plan_pieces`) at radius r as complex hardware numbers x + i h dx/dlambda, the
