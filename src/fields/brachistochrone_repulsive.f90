@@ -682,32 +682,35 @@ contains
         logical, intent(in) :: angle_only          !! theta in hardware precision only
         real(qp), intent(out) :: values(3)         !! theta, s, t (s, t: 0 if angle_only)
         integer, intent(out) :: status             !! status_ok or the reason
-        real(qp) :: apse(3)
-        integer :: stat
-        call one_end(r, values, status)
+        type(panel_piece) :: pieces(max_pieces), apse_pieces(max_pieces), &
+                             between(max_pieces)
+        type(panel_curve) :: c
+        real(qp) :: rest(3), span
+        integer :: stat, n, n_apse, n_between
+        c = panel_curve(bounded=curve%bounded, k=curve%k, p=curve%p, a=curve%centre, &
+                        beta=curve%width2, rm1=curve%apse_m1, d=curve%split)
+        call plan_pieces(curve, r, angle_only, pieces, n, c%span)
+        call integrate(pieces(1:n), values, status)
         if (second) then
-            call one_end(the_apse, apse, stat)
+            ! 2 F(R) - F(r) = F(r) + 2 (F(R) - F(r)), the difference on its own pieces
+            call plan_pieces(curve, the_apse, angle_only, apse_pieces, n_apse, span)
+            call complement_pieces(pieces(1:n), apse_pieces(1:n_apse), between, n_between)
+            call integrate(between(1:n_between), rest, stat)
             call keep_first(status, stat)
-            values = 2.0_qp*apse - values
+            values = values + 2.0_qp*rest
         end if
     contains
-        pure subroutine one_end(radius, v, st)
-            real(qp), intent(in) :: radius
+        pure subroutine integrate(some, v, st)
+            type(panel_piece), intent(in) :: some(:)
             real(qp), intent(out) :: v(3)
             integer, intent(out) :: st
-            type(panel_piece) :: pieces(max_pieces)
-            type(panel_curve) :: c
-            integer :: n
             v = 0.0_qp
-            c = panel_curve(bounded=curve%bounded, k=curve%k, p=curve%p, a=curve%centre, &
-                            beta=curve%width2, rm1=curve%apse_m1, d=curve%split)
-            call plan_pieces(curve, radius, angle_only, pieces, n, c%span)
             if (angle_only) then
-                call panel_angle_xp(rules, c, pieces(1:n), v(1), st)
+                call panel_angle_xp(rules, c, some, v(1), st)
             else
-                call panel_integrals(rules, c, pieces(1:n), v, st)
+                call panel_integrals(rules, c, some, v, st)
             end if
-        end subroutine one_end
+        end subroutine integrate
     end subroutine panel_values
 
     !> The critical brachistochrone K^2 = 27/8, Q = (x - 3/2)^2 (x + 3), in closed form
