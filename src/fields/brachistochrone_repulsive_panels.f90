@@ -21,7 +21,7 @@ module brachistochrone_repulsive_panels
     use brachistochrone_kinds, only: qp, xp
     use brachistochrone_status, only: status_ok, status_no_convergence
     use brachistochrone_quadrature, only: gauss_legendre_rule, gauss_legendre
-    use brachistochrone_fast_math, only: inverse_sqrt
+    use brachistochrone_fast_math, only: inverse_sqrt, hardware_real
     use, intrinsic :: iso_fortran_env, only: real64, int64
     implicit none
     private
@@ -198,7 +198,7 @@ contains
         integer :: which(max_panels), count, i, j
         value = 0.0_qp
         status = status_ok
-        c = real([curve%k, curve%p, curve%a, curve%beta, curve%span, curve%rm1, curve%d], xp)
+        c = hardware_real([curve%k, curve%p, curve%a, curve%beta, curve%span, curve%rm1, curve%d])
         total = 0.0_xp
         do i = 1, size(pieces)
             call plan_panels_xp(curve, pieces(i), hardware_digits, lo, hi, which, count, status)
@@ -462,8 +462,8 @@ contains
         if (.not. (piece%upper > piece%lower)) return
         call singular_points(curve, piece, points, np)
         top = 1
-        stack_lo(1) = real(piece%lower, xp)
-        stack_hi(1) = real(piece%upper, xp)
+        stack_lo(1) = hardware_real(piece%lower)
+        stack_hi(1) = hardware_real(piece%upper)
         do while (top > 0)
             a = stack_lo(top)
             b = stack_hi(top)
@@ -822,8 +822,8 @@ contains
         real(xp) :: lo_x, width_x, vx, xx, xm1x, qx, hx, invx, ax, bx
         integer :: m
         width = hi - lo
-        lo_x = real(lo, xp)
-        width_x = real(width, xp)
+        lo_x = hardware_real(lo)
+        width_x = hardware_real(width)
         sums = 0.0_qp
         do m = 1, r%n
             v = lo + width*r%node(m)
