@@ -80,7 +80,10 @@
 !! (R - rho below 1e-4 of 3 - 2 rho and rho - 1) the unknown is u = sqrt(R - rho)
 !! instead: theta is linear in u there (theta = Theta(rho, rho) -+ 2 A u, A =
 !! sqrt((rho - 1)/(rho (3 - 2 rho)))), and the curve keeps R - rho = u^2 exactly
-!! (`r_gap`), which lambda would form by cancellation.
+!! (`r_gap`), which lambda would form by cancellation. On the second half-arch the
+!! values 2 F(R) - F(r) are taken as F(r) + 2 (F(R) - F(r)), the difference integrated
+!! on its own pieces (`complement_pieces`): no cancellation next to the apse, and
+!! fewer nodes than the whole half-arch.
 module brachistochrone_repulsive
     use brachistochrone_kinds, only: qp, pi, eps_qp, xp
     use brachistochrone_status, only: status_ok, status_psi_out_of_range, &
@@ -122,7 +125,7 @@ module brachistochrone_repulsive
     !> Breakpoints of the unbounded integrals: start piece up to x = 5/4, far piece beyond 4.
     real(qp), parameter :: start_end = 1.25_qp, far_start = 4.0_qp
     integer, parameter :: max_steps = 300
-    !> The sinh maps reach `stretch` widths from the near-double root; they are taken in
+    !> The apse's sinh map reaches `stretch` widths from the near-double root, in
     !! t = tanh(xi/2), where 1 - t (rounded absolutely) stays above 1/9, so that a node
     !! costs a few eps at most
     real(qp), parameter :: stretch = 8.0_qp

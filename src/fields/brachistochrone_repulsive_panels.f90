@@ -14,9 +14,16 @@
 !! at one end this makes a geometric mesh. More than `max_panels` panels for one integral
 !! is a failure (the caller then integrates adaptively).
 !!
-!! Two precisions: all three integrals (theta, s, t) in binary128 aiming at 36 digits,
-!! and theta alone in the widest hardware precision (`xp`, x87 extended where there is
-!! one) aiming at 20 digits, for the root finder's early phase.
+!! Two precisions: all three integrals (theta, s, t) in binary128 aiming at 35 digits
+!! (37 on the peak's sinh map), and theta alone in the widest hardware precision (`xp`,
+!! x87 extended where there is one) aiming at 20 digits, for the root finder's early
+!! phase. The binary128 loop (`panel_sums`, one piece kind at a time) forms each node's
+!! geometry in binary128 and, in parallel, in `xp` for the seeds of its two inverse
+!! square roots, each then one Newton step (`refine`: three products, one difference;
+!! no binary128 number converted per node); the pieces' constant factors are applied
+!! once per piece (`piece_factors`). The hardware-precision loops likewise take the
+!! curve's square roots and constants out of the node loop (`angle_sum_xp`,
+!! `slopes_sum_c`).
 module brachistochrone_repulsive_panels
     use brachistochrone_kinds, only: qp, xp
     use brachistochrone_status, only: status_ok, status_no_convergence
@@ -810,7 +817,7 @@ contains
     !! constant factor (`piece_factors`). The node's geometry is formed in binary128 and,
     !! in parallel, in hardware precision for the seeds of the inverse square roots
     !! (`refine`: three products and a difference each), so that no binary128 number is
-    !! converted per node.
+    !! converted per node. One loop per piece kind.
     pure subroutine panel_sums(pc, r, kind, stretched, lo, hi, sums)
         type(prepared_curve), intent(in) :: pc
         type(panel_rule), intent(in) :: r
@@ -818,126 +825,106 @@ contains
         logical, intent(in) :: stretched
         real(qp), intent(in) :: lo, hi
         real(qp), intent(out) :: sums(3)
-        real(qp) :: width, v, w, x, xm1, q, h, inv, u, r1, r2, x2, a, b
-        real(xp) :: lo_x, width_x, vx, xx, xm1x, qx, hx, invx, ax, bx
-        integer :: m
+        real(qp) :: width
+        real(xp) :: lo_x, width_x
         width = hi - lo
         lo_x = hardware_real(lo)
         width_x = hardware_real(width)
+        select case (kind)
+        case (piece_start)
+            call start_sums(pc, r, lo, width, lo_x, width_x, sums)
+        case (piece_below, piece_above, piece_far)
+            call peak_sums(pc, r, kind, stretched, lo, width, lo_x, width_x, sums)
+        case (piece_apse)
+            call apse_sums(pc, r, lo, width, lo_x, width_x, sums)
+        case default
+            call arch_sums(pc, r, kind, lo, width, lo_x, width_x, sums)
+        end select
+        sums = width*sums
+    end subroutine panel_sums
+
+    !> `panel_sums` on the start piece (unbounded): x - 1 = span sigma^2.
+    pure subroutine start_sums(pc, r, lo, width, lo_x, width_x, sums)
+        type(prepared_curve), intent(in) :: pc
+        type(panel_rule), intent(in) :: r
+        real(qp), intent(in) :: lo, width
+        real(xp), intent(in) :: lo_x, width_x
+        real(qp), intent(out) :: sums(3)
+        real(qp) :: v, a, x, q, r1, r2, u
+        real(xp) :: vx, xx, qx
+        integer :: m
         sums = 0.0_qp
         do m = 1, r%n
             v = lo + width*r%node(m)
             vx = lo_x + width_x*r%node_xp(m)
-            select case (kind)
-            case (piece_start)
-                a = v*v
-                x = 1.0_qp + pc%c%span*a
+            a = v*v
+            x = 1.0_qp + pc%c%span*a
+            q = (x + pc%c%p)*((x - pc%c%a)**2 + pc%c%beta)
+            xx = 1.0_xp + pc%span_x*(vx*vx)
+            qx = (xx + pc%p_x)*((xx - pc%a_x)**2 + pc%beta_x)
+            r1 = r%weight(m)*refine(q, 1.0_xp/sqrt(qx))
+            r2 = refine(x, 1.0_xp/sqrt(xx))
+            u = (x*x)*r1
+            ! (r2^2 = 4/x: one division for two products)
+            sums(1) = sums(1) + (a*r1)/x
+            sums(2) = sums(2) + v*(u*r2)
+            sums(3) = sums(3) + u
+        end do
+    end subroutine start_sums
+
+    !> `panel_sums` on the unbounded curve's pieces beyond the start: below or above the
+    !! peak (h = -+(x - a), in the sinh map when stretched) and far out (x = 4/z).
+    pure subroutine peak_sums(pc, r, kind, stretched, lo, width, lo_x, width_x, sums)
+        type(prepared_curve), intent(in) :: pc
+        type(panel_rule), intent(in) :: r
+        integer, intent(in) :: kind
+        logical, intent(in) :: stretched
+        real(qp), intent(in) :: lo, width
+        real(xp), intent(in) :: lo_x, width_x
+        real(qp), intent(out) :: sums(3)
+        real(qp) :: v, w, x, xm1, q, h, inv, u, r1, r2, x2
+        real(xp) :: vx, xx, xm1x, qx, hx, invx
+        integer :: m
+        sums = 0.0_qp
+        do m = 1, r%n
+            v = lo + width*r%node(m)
+            vx = lo_x + width_x*r%node_xp(m)
+            if (kind == piece_far) then
+                x = far_start/v
+                xm1 = x - 1.0_qp
+                w = r%weight(m)*(x*x)
                 q = (x + pc%c%p)*((x - pc%c%a)**2 + pc%c%beta)
-                xx = 1.0_xp + pc%span_x*(vx*vx)
+                xx = 4.0_xp/vx
+                xm1x = xx - 1.0_xp
                 qx = (xx + pc%p_x)*((xx - pc%a_x)**2 + pc%beta_x)
-                r1 = r%weight(m)*refine(q, 1.0_xp/sqrt(qx))
-                r2 = refine(x, 1.0_xp/sqrt(xx))
-                u = (x*x)*r1
-                ! (r2^2 = 4/x: one division for two products)
-                sums(1) = sums(1) + (a*r1)/x
-                sums(2) = sums(2) + v*(u*r2)
-                sums(3) = sums(3) + u
-                cycle
-            case (piece_below, piece_above, piece_far)
-                if (kind == piece_far) then
-                    x = far_start/v
-                    xm1 = x - 1.0_qp
-                    w = r%weight(m)*(x*x)
-                    q = (x + pc%c%p)*((x - pc%c%a)**2 + pc%c%beta)
-                    xx = 4.0_xp/vx
-                    xm1x = xx - 1.0_xp
-                    qx = (xx + pc%p_x)*((xx - pc%a_x)**2 + pc%beta_x)
+            else
+                if (stretched) then
+                    ! h = sqrt(beta) 4t (1 + t^2)/(1 - t^2)^2, dxi = 4 dt/(1 - t^2)
+                    inv = 1.0_qp/((1.0_qp - v)*(1.0_qp + v))
+                    h = pc%root_beta4*(v*(1.0_qp + v*v))*(inv*inv)
+                    w = r%weight(m)*inv
+                    invx = 1.0_xp/((1.0_xp - vx)*(1.0_xp + vx))
+                    hx = pc%root_beta4_x*(vx*(1.0_xp + vx*vx))*(invx*invx)
                 else
-                    if (stretched) then
-                        ! h = sqrt(beta) 4t (1 + t^2)/(1 - t^2)^2, dxi = 4 dt/(1 - t^2)
-                        inv = 1.0_qp/((1.0_qp - v)*(1.0_qp + v))
-                        h = pc%root_beta4*(v*(1.0_qp + v*v))*(inv*inv)
-                        w = r%weight(m)*inv
-                        invx = 1.0_xp/((1.0_xp - vx)*(1.0_xp + vx))
-                        hx = pc%root_beta4_x*(vx*(1.0_xp + vx*vx))*(invx*invx)
-                    else
-                        h = v
-                        w = r%weight(m)
-                        hx = vx
-                    end if
-                    if (kind == piece_below) then
-                        h = -h
-                        hx = -hx
-                    end if
-                    x = pc%c%a + h
-                    xm1 = pc%a_m1 + h
-                    q = x + pc%c%p
-                    xx = pc%a_x + hx
-                    xm1x = pc%a_m1_x + hx
-                    qx = xx + pc%p_x
-                    if (.not. stretched) then
-                        q = (v*v + pc%c%beta)*q
-                        qx = (vx*vx + pc%beta_x)*qx
-                    end if
+                    h = v
+                    w = r%weight(m)
+                    hx = vx
                 end if
-            case (piece_apse)
-                inv = 1.0_qp/((1.0_qp - v)*(1.0_qp + v))
-                a = pc%root_ratio2*v*inv
-                b = (1.0_qp - a)*(1.0_qp + a)
-                xm1 = pc%c%rm1*b
-                x = 1.0_qp + xm1
+                if (kind == piece_below) then
+                    h = -h
+                    hx = -hx
+                end if
+                x = pc%c%a + h
+                xm1 = pc%a_m1 + h
                 q = x + pc%c%p
-                w = r%weight(m)*inv
-                invx = 1.0_xp/((1.0_xp - vx)*(1.0_xp + vx))
-                ax = pc%root_ratio2_x*vx*invx
-                bx = (1.0_xp - ax)*(1.0_xp + ax)
-                xx = 1.0_xp + pc%rm1_x*bx
+                xx = pc%a_x + hx
+                xm1x = pc%a_m1_x + hx
                 qx = xx + pc%p_x
-                ! 1/sqrt((1 - sn^2) q) in place of 1/sqrt(q (x - 1)) (x - 1 = rm1 (1 - sn^2))
-                xm1 = b
-                xm1x = bx
-                r1 = refine(b*q, 1.0_xp/sqrt(bx*qx))
-                r2 = refine(x*q, 1.0_xp/sqrt(xx*qx))
-                u = r1*w
-                x2 = x*x
-                sums(1) = sums(1) + ((pc%c%rm1*b)*u)/x
-                sums(2) = sums(2) + x2*(r2*w)
-                sums(3) = sums(3) + x2*u
-                cycle
-            case default
-                inv = 1.0_qp/(1.0_qp + v*v)
-                a = v*inv
-                b = (1.0_qp - v)*(1.0_qp + v)*inv
-                invx = 1.0_xp/(1.0_xp + vx*vx)
-                ax = vx*invx
-                bx = (1.0_xp - vx)*(1.0_xp + vx)*invx
-                if (kind == piece_arch) then
-                    xm1 = pc%c%rm1*(b*b)
-                    q = pc%c%d + pc%rm1_4*(a*a)
-                    xm1x = pc%rm1_x*(bx*bx)
-                    qx = pc%d_x + pc%rm1_4_x*(ax*ax)
-                else
-                    xm1 = pc%rm1_4*(a*a)
-                    q = pc%c%d + pc%c%rm1*(b*b)
-                    xm1x = pc%rm1_4_x*(ax*ax)
-                    qx = pc%d_x + pc%rm1_x*(bx*bx)
-                    b = a
+                if (.not. stretched) then
+                    q = (v*v + pc%c%beta)*q
+                    qx = (vx*vx + pc%beta_x)*qx
                 end if
-                x = 1.0_qp + xm1
-                xx = 1.0_xp + xm1x
-                q = q*(x + pc%c%p)
-                qx = qx*(xx + pc%p_x)
-                r1 = refine(q, 1.0_xp/sqrt(qx))
-                r2 = refine(x, 1.0_xp/sqrt(xx))
-                u = (r%weight(m)*inv)*r1
-                h = r2*u
-                x2 = x*x
-                sums(1) = sums(1) + xm1*(r2*h)
-                sums(2) = sums(2) + b*(x2*h)
-                sums(3) = sums(3) + x2*u
-                cycle
-            end select
-            ! the pieces of unbounded curves beyond the start
+            end if
             r1 = refine(q*xm1, 1.0_xp/sqrt(qx*xm1x))
             r2 = refine(q*x, 1.0_xp/sqrt(qx*xx))
             u = r1*w
@@ -946,8 +933,92 @@ contains
             sums(2) = sums(2) + x2*(r2*w)
             sums(3) = sums(3) + x2*u
         end do
-        sums = width*sums
-    end subroutine panel_sums
+    end subroutine peak_sums
+
+    !> `panel_sums` on the apse's sinh map (bounded): sin(nu/2) = c 2w/(1 - w^2);
+    !! 1/sqrt((1 - sn^2) q) in place of 1/sqrt(q (x - 1)), x - 1 = rm1 (1 - sn^2).
+    pure subroutine apse_sums(pc, r, lo, width, lo_x, width_x, sums)
+        type(prepared_curve), intent(in) :: pc
+        type(panel_rule), intent(in) :: r
+        real(qp), intent(in) :: lo, width
+        real(xp), intent(in) :: lo_x, width_x
+        real(qp), intent(out) :: sums(3)
+        real(qp) :: v, w, x, q, inv, u, r1, r2, x2, a, b
+        real(xp) :: vx, xx, qx, invx, ax, bx
+        integer :: m
+        sums = 0.0_qp
+        do m = 1, r%n
+            v = lo + width*r%node(m)
+            vx = lo_x + width_x*r%node_xp(m)
+            inv = 1.0_qp/((1.0_qp - v)*(1.0_qp + v))
+            a = pc%root_ratio2*v*inv
+            b = (1.0_qp - a)*(1.0_qp + a)
+            x = 1.0_qp + pc%c%rm1*b
+            q = x + pc%c%p
+            w = r%weight(m)*inv
+            invx = 1.0_xp/((1.0_xp - vx)*(1.0_xp + vx))
+            ax = pc%root_ratio2_x*vx*invx
+            bx = (1.0_xp - ax)*(1.0_xp + ax)
+            xx = 1.0_xp + pc%rm1_x*bx
+            qx = xx + pc%p_x
+            r1 = refine(b*q, 1.0_xp/sqrt(bx*qx))
+            r2 = refine(x*q, 1.0_xp/sqrt(xx*qx))
+            u = r1*w
+            x2 = x*x
+            sums(1) = sums(1) + ((pc%c%rm1*b)*u)/x
+            sums(2) = sums(2) + x2*(r2*w)
+            sums(3) = sums(3) + x2*u
+        end do
+    end subroutine apse_sums
+
+    !> `panel_sums` on the nu map (bounded): v = tan(nu/4), or tan(mu/4), mu = pi - nu,
+    !! next to the start (piece_arch_start).
+    pure subroutine arch_sums(pc, r, kind, lo, width, lo_x, width_x, sums)
+        type(prepared_curve), intent(in) :: pc
+        type(panel_rule), intent(in) :: r
+        integer, intent(in) :: kind
+        real(qp), intent(in) :: lo, width
+        real(xp), intent(in) :: lo_x, width_x
+        real(qp), intent(out) :: sums(3)
+        real(qp) :: v, x, xm1, q, h, inv, u, r1, r2, x2, a, b
+        real(xp) :: vx, xx, xm1x, qx, invx, ax, bx
+        integer :: m
+        sums = 0.0_qp
+        do m = 1, r%n
+            v = lo + width*r%node(m)
+            vx = lo_x + width_x*r%node_xp(m)
+            inv = 1.0_qp/(1.0_qp + v*v)
+            a = v*inv
+            b = (1.0_qp - v)*(1.0_qp + v)*inv
+            invx = 1.0_xp/(1.0_xp + vx*vx)
+            ax = vx*invx
+            bx = (1.0_xp - vx)*(1.0_xp + vx)*invx
+            if (kind == piece_arch) then
+                xm1 = pc%c%rm1*(b*b)
+                q = pc%c%d + pc%rm1_4*(a*a)
+                xm1x = pc%rm1_x*(bx*bx)
+                qx = pc%d_x + pc%rm1_4_x*(ax*ax)
+            else
+                xm1 = pc%rm1_4*(a*a)
+                q = pc%c%d + pc%c%rm1*(b*b)
+                xm1x = pc%rm1_4_x*(ax*ax)
+                qx = pc%d_x + pc%rm1_x*(bx*bx)
+                b = a
+            end if
+            x = 1.0_qp + xm1
+            xx = 1.0_xp + xm1x
+            q = q*(x + pc%c%p)
+            qx = qx*(xx + pc%p_x)
+            r1 = refine(q, 1.0_xp/sqrt(qx))
+            r2 = refine(x, 1.0_xp/sqrt(xx))
+            u = (r%weight(m)*inv)*r1
+            h = r2*u
+            x2 = x*x
+            sums(1) = sums(1) + xm1*(r2*h)
+            sums(2) = sums(2) + b*(x2*h)
+            sums(3) = sums(3) + x2*u
+        end do
+    end subroutine arch_sums
 
     !> The constant factors of theta's, s's and t's integrands taken out of
     !! `panel_sums`' terms on a piece of this kind.
