@@ -294,7 +294,21 @@ contains
         logical, intent(in) :: stretched
         type(panel_rule), intent(in) :: r
         complex(xp) :: total(2)
-        complex(xp) :: v, x, xm1, h, inv, sn, cs, rq, sum(2), root_beta4, am1, ratio2, z
+        if (kind == piece_apse .or. kind == piece_arch .or. kind == piece_arch_start) then
+            total = slopes_sum_c_arch(c, kind, a, width, r)
+        else
+            total = slopes_sum_c_open(c, kind, stretched, a, width, r)
+        end if
+    end function slopes_sum_c
+
+    !> `slopes_sum_c` on the unbounded curves' pieces.
+    pure function slopes_sum_c_open(c, kind, stretched, a, width, r) result(total)
+        complex(xp), intent(in) :: c(7), a, width
+        integer, intent(in) :: kind
+        logical, intent(in) :: stretched
+        type(panel_rule), intent(in) :: r
+        complex(xp) :: total(2)
+        complex(xp) :: v, x, xm1, h, inv, rq, sum(2), root_beta4, am1, z
         integer :: m
         sum = (0.0_xp, 0.0_xp)
         select case (kind)
@@ -334,6 +348,20 @@ contains
                 sum(1) = sum(1) + dual_sqrt(x - 1.0_xp)*rq/x
                 sum(2) = sum(2) + x*dual_sqrt(x)*rq
             end do
+        end select
+        total = width*sum
+    end function slopes_sum_c_open
+
+    !> `slopes_sum_c` on the bounded curves' pieces.
+    pure function slopes_sum_c_arch(c, kind, a, width, r) result(total)
+        complex(xp), intent(in) :: c(7), a, width
+        integer, intent(in) :: kind
+        type(panel_rule), intent(in) :: r
+        complex(xp) :: total(2)
+        complex(xp) :: v, x, xm1, h, inv, sn, cs, rq, sum(2), ratio2
+        integer :: m
+        sum = (0.0_xp, 0.0_xp)
+        select case (kind)
         case (piece_apse)
             ratio2 = 2.0_xp*dual_sqrt(c(7)/c(6))
             do m = 1, r%n
@@ -365,7 +393,7 @@ contains
             end do
         end select
         total = width*sum
-    end function slopes_sum_c
+    end function slopes_sum_c_arch
 
     !> The constant factors of `slopes_sum_c`'s sums on a piece of this kind.
     pure function slope_factors(c, kind, stretched) result(f)
@@ -1089,7 +1117,21 @@ contains
         logical, intent(in) :: stretched
         type(panel_rule), intent(in) :: r
         real(xp) :: total
-        real(xp) :: v, x, xm1, h, inv, sn, b, z, sum, root_beta4, am1, ratio2, rm1_4
+        if (kind == piece_apse .or. kind == piece_arch .or. kind == piece_arch_start) then
+            total = angle_sum_xp_arch(c, kind, start, width, r)
+        else
+            total = angle_sum_xp_open(c, kind, stretched, start, width, r)
+        end if
+    end function angle_sum_xp
+
+    !> `angle_sum_xp` on the unbounded curves' pieces.
+    pure function angle_sum_xp_open(c, kind, stretched, start, width, r) result(total)
+        real(xp), intent(in) :: c(7), start, width
+        integer, intent(in) :: kind
+        logical, intent(in) :: stretched
+        type(panel_rule), intent(in) :: r
+        real(xp) :: total
+        real(xp) :: v, x, xm1, h, inv, z, sum, root_beta4, am1
         integer :: m
         sum = 0.0_xp
         select case (kind)
@@ -1124,6 +1166,20 @@ contains
                 sum = sum + r%weight_xp(m)*sqrt((x - 1.0_xp)/((x + c(2))* &
                       ((x - c(3))**2 + c(4))*(v*v)))
             end do
+        end select
+        total = width*sum
+    end function angle_sum_xp_open
+
+    !> `angle_sum_xp` on the bounded curves' pieces.
+    pure function angle_sum_xp_arch(c, kind, start, width, r) result(total)
+        real(xp), intent(in) :: c(7), start, width
+        integer, intent(in) :: kind
+        type(panel_rule), intent(in) :: r
+        real(xp) :: total
+        real(xp) :: v, x, xm1, inv, sn, b, z, sum, ratio2, rm1_4
+        integer :: m
+        sum = 0.0_xp
+        select case (kind)
         case (piece_apse)
             ratio2 = 2.0_xp*sqrt(c(7)/c(6))
             do m = 1, r%n
@@ -1153,7 +1209,7 @@ contains
             end do
         end select
         total = width*sum
-    end function angle_sum_xp
+    end function angle_sum_xp_arch
 
 
 end module brachistochrone_repulsive_panels
