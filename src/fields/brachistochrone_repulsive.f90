@@ -103,6 +103,7 @@ module brachistochrone_repulsive
             piece_below, piece_above, piece_far, piece_arch, piece_apse, piece_arch_start
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan, ieee_value, &
                                              ieee_positive_inf
+    use, intrinsic :: iso_fortran_env, only: real64
     implicit none
     private
 
@@ -144,6 +145,10 @@ module brachistochrone_repulsive
     !> Added to arch_first, arch_second: the solver's unknown is u = sqrt(R - rho) (next
     !! to the apse, where R - rho would be formed by cancellation from lambda)
     integer, parameter :: near_apse = 100
+    !> More digits asked of the panels of F(R) - F(r) on the second half-arch when they
+    !! end at r (counted twice; at 35 digits measured up to 7 eps off mpmath at R - 1 =
+    !! 1e-20); none for a complete arch (r = 1: the difference is F(R) itself)
+    real(real64), parameter :: complement_digits = 2.0_real64
 
     !> One brachistochrone from A, by its parameter. Build it with a `curve_from_*`.
     type :: repulsive_curve
@@ -693,25 +698,27 @@ contains
         c = panel_curve(bounded=curve%bounded, k=curve%k, p=curve%p, a=curve%centre, &
                         beta=curve%width2, rm1=curve%apse_m1, d=curve%split)
         call plan_pieces(curve, r, angle_only, pieces, n, c%span)
-        call integrate(pieces(1:n), values, status)
+        call integrate(pieces(1:n), 0.0_real64, values, status)
         if (second) then
             ! 2 F(R) - F(r) = F(r) + 2 (F(R) - F(r)), the difference on its own pieces
             call plan_pieces(curve, the_apse, angle_only, apse_pieces, n_apse, span)
             call complement_pieces(pieces(1:n), apse_pieces(1:n_apse), between, n_between)
-            call integrate(between(1:n_between), rest, stat)
+            call integrate(between(1:n_between), merge(complement_digits, 0.0_real64, &
+                           n > 0), rest, stat)
             call keep_first(status, stat)
             values = values + 2.0_qp*rest
         end if
     contains
-        pure subroutine integrate(some, v, st)
+        pure subroutine integrate(some, extra, v, st)
             type(panel_piece), intent(in) :: some(:)
+            real(real64), intent(in) :: extra
             real(qp), intent(out) :: v(3)
             integer, intent(out) :: st
             v = 0.0_qp
             if (angle_only) then
                 call panel_angle_xp(rules, c, some, v(1), st)
             else
-                call panel_integrals(rules, c, some, v, st)
+                call panel_integrals(rules, c, some, v, st, extra)
             end if
         end subroutine integrate
     end subroutine panel_values
@@ -995,7 +1002,8 @@ contains
             call keep_first(status, stat)
             slopes = 2.0_qp*apse - slopes
             call complement_pieces(pieces(1:n), apse_pieces(1:n_apse), between, n_between)
-            call panel_integrals(rules, c, between(1:n_between), rest, stat)
+            call panel_integrals(rules, c, between(1:n_between), rest, stat, &
+                                 merge(complement_digits, 0.0_real64, n > 0))
             call keep_first(value_status, stat)
             values = values + 2.0_qp*rest
         end if

@@ -166,20 +166,25 @@ contains
 
     !> theta, s, t (values(1:3)) over the pieces, in binary128. status: status_ok, or
     !! status_no_convergence when a piece needs more than `max_panels` panels.
-    pure subroutine panel_integrals(rules, curve, pieces, values, status)
+    pure subroutine panel_integrals(rules, curve, pieces, values, status, extra_digits)
         type(panel_rules), intent(in) :: rules
         type(panel_curve), intent(in) :: curve
         type(panel_piece), intent(in) :: pieces(:)
         real(qp), intent(out) :: values(3)
         integer, intent(out) :: status
+        !> digits asked beyond `quad_digits` (default 0)
+        real(real64), intent(in), optional :: extra_digits
         real(qp) :: lo(max_panels), hi(max_panels), sums(3), piece_sums(3)
+        real(real64) :: digits
         type(prepared_curve) :: pc
         integer :: which(max_panels), count, i, j
         values = 0.0_qp
         status = status_ok
         pc = prepare(curve)
+        digits = quad_digits
+        if (present(extra_digits)) digits = digits + extra_digits
         do i = 1, size(pieces)
-            call plan_panels(curve, pieces(i), quad_digits + merge(stretched_extra, &
+            call plan_panels(curve, pieces(i), digits + merge(stretched_extra, &
                              0.0_real64, pieces(i)%stretched), lo, hi, which, count, status)
             if (status /= status_ok) return
             piece_sums = 0.0_qp
