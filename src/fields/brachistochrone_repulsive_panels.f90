@@ -323,8 +323,9 @@ contains
             do m = 1, r%n
                 v = a + width*r%node_xp(m)
                 x = 1.0_xp + c(5)*(v*v)
-                rq = r%weight_xp(m)/dual_sqrt((x + c(2))*((x - c(3))**2 + c(4)))
-                sum(1) = sum(1) + (v*v)*rq/x
+                rq = r%weight_xp(m)*dual_inverse(dual_sqrt((x + c(2))*((x - c(3))**2 + &
+                                                                  c(4))))
+                sum(1) = sum(1) + dual_divide((v*v)*rq, x)
                 sum(2) = sum(2) + v*x*dual_sqrt(x)*rq
             end do
         case (piece_below, piece_above)
@@ -333,26 +334,27 @@ contains
             do m = 1, r%n
                 v = a + width*r%node_xp(m)
                 if (stretched) then
-                    inv = 1.0_xp/((1.0_xp - v)*(1.0_xp + v))
+                    inv = dual_inverse((1.0_xp - v)*(1.0_xp + v))
                     h = root_beta4*(v*(1.0_xp + v*v))*(inv*inv)
                     z = inv*inv
                 else
                     h = v
-                    z = 1.0_xp/(v*v + c(4))
+                    z = dual_inverse(v*v + c(4))
                 end if
                 if (kind == piece_below) h = -h
                 x = c(3) + h
                 xm1 = am1 + h
-                rq = r%weight_xp(m)*dual_sqrt(z/(x + c(2)))
-                sum(1) = sum(1) + dual_sqrt(xm1)*rq/x
+                rq = r%weight_xp(m)*dual_sqrt(dual_divide(z, x + c(2)))
+                sum(1) = sum(1) + dual_divide(dual_sqrt(xm1)*rq, x)
                 sum(2) = sum(2) + x*dual_sqrt(x)*rq
             end do
         case (piece_far)
             do m = 1, r%n
                 v = a + width*r%node_xp(m)
-                x = 4.0_xp/v
-                rq = r%weight_xp(m)/((v*v)*dual_sqrt((x + c(2))*((x - c(3))**2 + c(4))))
-                sum(1) = sum(1) + dual_sqrt(x - 1.0_xp)*rq/x
+                x = 4.0_xp*dual_inverse(v)
+                rq = r%weight_xp(m)*dual_inverse((v*v)*dual_sqrt((x + c(2))* &
+                                                                  ((x - c(3))**2 + c(4))))
+                sum(1) = sum(1) + dual_divide(dual_sqrt(x - 1.0_xp)*rq, x)
                 sum(2) = sum(2) + x*dual_sqrt(x)*rq
             end do
         end select
@@ -373,18 +375,18 @@ contains
             ratio2 = 2.0_xp*dual_sqrt(c(7)/c(6))
             do m = 1, r%n
                 v = a + width*r%node_xp(m)
-                inv = 1.0_xp/((1.0_xp - v)*(1.0_xp + v))
+                inv = dual_inverse((1.0_xp - v)*(1.0_xp + v))
                 sn = ratio2*v*inv
                 cs = dual_sqrt((1.0_xp - sn)*(1.0_xp + sn))
                 x = 1.0_xp + c(6)*(cs*cs)
-                rq = r%weight_xp(m)*inv/dual_sqrt(x + c(2))
-                sum(1) = sum(1) + cs*rq/x
+                rq = dual_divide(r%weight_xp(m)*inv, dual_sqrt(x + c(2)))
+                sum(1) = sum(1) + dual_divide(cs*rq, x)
                 sum(2) = sum(2) + x*dual_sqrt(x)*rq
             end do
         case default
             do m = 1, r%n
                 v = a + width*r%node_xp(m)
-                inv = 1.0_xp/(1.0_xp + v*v)
+                inv = dual_inverse(1.0_xp + v*v)
                 sn = 2.0_xp*v*inv
                 cs = (1.0_xp - v)*(1.0_xp + v)*inv
                 if (kind == piece_arch_start) then
@@ -394,8 +396,9 @@ contains
                 end if
                 xm1 = c(6)*(cs*cs)
                 x = 1.0_xp + xm1
-                rq = r%weight_xp(m)*inv/dual_sqrt((c(7) + c(6)*(sn*sn))*(x + c(2)))
-                sum(1) = sum(1) + xm1*rq/x
+                rq = dual_divide(r%weight_xp(m)*inv, dual_sqrt((c(7) + c(6)*(sn*sn))* &
+                                                                (x + c(2))))
+                sum(1) = sum(1) + dual_divide(xm1*rq, x)
                 sum(2) = sum(2) + x*dual_sqrt(x)*cs*rq
             end do
         end select
@@ -439,6 +442,27 @@ contains
             r = sqrt(z)
         end if
     end function dual_sqrt
+
+    !> 1/z for the complex step (z = x + i y, |y| far below |x|): 1/x - i y/x^2, exact
+    !! to first order in y (one division, not the three of a complex division).
+    elemental function dual_inverse(z) result(r)
+        complex(xp), intent(in) :: z
+        complex(xp) :: r
+        real(xp) :: inverse
+        inverse = 1.0_xp/real(z)
+        r = cmplx(inverse, -(aimag(z)*inverse)*inverse, xp)
+    end function dual_inverse
+
+    !> p/q for the complex step (imaginary parts far below the real ones), exact to
+    !! first order in them: one division.
+    elemental function dual_divide(p, q) result(r)
+        complex(xp), intent(in) :: p, q
+        complex(xp) :: r
+        real(xp) :: inverse, re
+        inverse = 1.0_xp/real(q)
+        re = real(p)*inverse
+        r = cmplx(re, (aimag(p) - re*aimag(q))*inverse, xp)
+    end function dual_divide
 
     !> The panels of one piece and the rule (index into the ladder) of each, aiming at
     !! `digits`: bisection until every panel's Bernstein ellipse allows the digits with
