@@ -960,8 +960,10 @@ contains
             else
                 if (stretched) then
                     ! h = sqrt(beta) 4t (1 + t^2)/(1 - t^2)^2, dxi = 4 dt/(1 - t^2)
-                    inv = 1.0_qp/((1.0_qp - v)*(1.0_qp + v))
-                    h = pc%root_beta4*(v*(1.0_qp + v*v))*(inv*inv)
+                    h = (1.0_qp - v)*(1.0_qp + v)
+                    inv = 1.0_qp/h
+                    ! 1 + v^2 = 2 - (1 - v^2)
+                    h = pc%root_beta4*(v*(2.0_qp - h))*(inv*inv)
                     w = r%weight(m)*inv
                     invx = 1.0_xp/((1.0_xp - vx)*(1.0_xp + vx))
                     hx = pc%root_beta4_x*(vx*(1.0_xp + vx*vx))*(invx*invx)
@@ -1041,16 +1043,18 @@ contains
         real(qp), intent(in) :: lo, width
         real(xp), intent(in) :: lo_x, width_x
         real(qp), intent(out) :: sums(3)
-        real(qp) :: v, x, xm1, q, inv, g, t, a, b
+        real(qp) :: v, x, xm1, q, inv, g, t, a, b, vv
         real(xp) :: vx, xx, xm1x, qx, invx, ax, bx
         integer :: m
         sums = 0.0_qp
         do m = 1, r%n
             v = lo + width*r%node(m)
             vx = lo_x + width_x*r%node_xp(m)
-            inv = 1.0_qp/(1.0_qp + v*v)
+            vv = v*v
+            inv = 1.0_qp/(1.0_qp + vv)
             a = v*inv
-            b = (1.0_qp - v)*(1.0_qp + v)*inv
+            ! (1 - v^2 to a rounding of 1 where v -> 1: b then weights the terms)
+            b = (1.0_qp - vv)*inv
             invx = 1.0_xp/(1.0_xp + vx*vx)
             ax = vx*invx
             bx = (1.0_xp - vx)*(1.0_xp + vx)*invx
