@@ -671,10 +671,21 @@ contains
                            split_root(a%delta_r/c), a)
         else
             meet = max(b, min(a%big_lambda - c, a%big_lambda*b/(b + c)))
-            ! apse side: lambda = b s^2 on [0, b], then [b, 4b], [4b, 16b], ... to meet
-            call add_split(panels, count, kind_apse_root, 0.0_qp, 1.0_qp, b, &
-                           split_root(a%lambda_r/b), a)
-            lo = b
+            if (a%weight_below == 0.0_qp .and. a%lambda_r >= 0.25_qp*b .and. &
+                a%lambda_r < meet) then
+                ! an integral from an endpoint on the apse side: the root variable
+                ! continued from it to meet, or ladder sigma_apse further (the apse's
+                ! singularities stay away in s: fewer nodes than the root panel's piece
+                ! and the ladder's first panels)
+                lo = min(meet, a%lambda_r + ladder*model%sigma_apse)
+                call push(panels, count, panel(kind_apse_root, split_root(a%lambda_r/b), &
+                          split_root(lo/b), b, a%weight_above, 1.0_real64))
+            else
+                ! apse side: lambda = b s^2 on [0, b], then [b, 8b], [8b, 64b], ... to meet
+                call add_split(panels, count, kind_apse_root, 0.0_qp, 1.0_qp, b, &
+                               split_root(a%lambda_r/b), a)
+                lo = b
+            end if
             ! where the integrated region starts (the apse unless its weight is 0)
             origin = merge(0.0_qp, a%lambda_r, a%weight_below > 0.0_qp)
             decay_rate = pi/model%sigma_apse
@@ -883,13 +894,19 @@ contains
         end if
     end function rule_for
 
-    !> kappa h of a plain panel (0 for the root panels), kappa the decay rate.
+    !> kappa h of a plain panel, kappa the decay rate; the same for the length in lambda of a
+    !! root panel continued past s = 1 (0 for the other root panels).
     pure function panel_growth(p, kappa) result(growth)
         type(panel), intent(in) :: p
         real(qp), intent(in) :: kappa
         real(real64) :: growth
         if (p%kind == kind_apse .or. p%kind == kind_start) then
             growth = real(kappa*0.5_qp*(p%hi - p%lo), real64)
+        else if (p%hi > 1.0_qp) then
+            ! a root panel continued past s = 1 (from an endpoint): on an ellipse about
+            ! [lo, hi] staying in Re s >= 0, Re(lambda) falls by at most (cosh - 1) times
+            ! half its length in lambda below that at lo
+            growth = real(kappa*0.5_qp*panel_length(p), real64)
         else
             growth = 0.0_real64
         end if
