@@ -645,7 +645,7 @@ contains
         type(arch_setup), intent(in) :: a
         type(panel), intent(out) :: panels(max_panels)
         integer, intent(out) :: count
-        real(qp) :: b, c, meet, lo, hi, origin, decay_rate
+        real(qp) :: b, c, meet, lo, hi, origin, decay_rate, top
         type(panel) :: start_side(max_panels)
         integer :: n_start, k
         count = 0
@@ -702,9 +702,15 @@ contains
             ! start side, in delta, from meet down to the start
             n_start = 0
             if (decay_rate*(meet - origin) > 300.0_qp) return
-            call add_split(start_side, n_start, kind_start_root, 0.0_qp, 1.0_qp, c, &
-                           split_root(a%delta_r/c), a)
-            lo = c
+            ! delta = c s^2 on [0, top], top up to 2 ladder c (s = 4: the start's
+            ! singularities stay away in s; fewer nodes than the root panel and the
+            ! ladder's first panels; to meet if that is at most 2.5 ladder c away), then
+            ! the ladder
+            top = a%big_lambda - meet
+            if (top > 2.5_qp*ladder*c) top = 2.0_qp*ladder*c
+            call add_split(start_side, n_start, kind_start_root, 0.0_qp, split_root(top/c), &
+                           c, split_root(a%delta_r/c), a)
+            lo = top
             do while (lo < a%big_lambda - meet)
                 hi = min(ladder*lo, lo + ladder*model%sigma_start, a%big_lambda - meet)
                 if (hi > 0.75_qp*(a%big_lambda - meet) .and. &
@@ -894,19 +900,31 @@ contains
         end if
     end function rule_for
 
-    !> kappa h of a plain panel, kappa the decay rate; the same for the length in lambda of a
-    !! root panel continued past s = 1 (0 for the other root panels).
+    !> kappa h of a plain panel, kappa the decay rate; its equivalent for a root panel
+    !! continued past s = 1 (`log_rho` set; 0 for the other root panels).
     pure function panel_growth(p, kappa) result(growth)
         type(panel), intent(in) :: p
         real(qp), intent(in) :: kappa
         real(real64) :: growth
+        real(real64) :: h, mid, most
         if (p%kind == kind_apse .or. p%kind == kind_start) then
             growth = real(kappa*0.5_qp*(p%hi - p%lo), real64)
         else if (p%hi > 1.0_qp) then
-            ! a root panel continued past s = 1 (from an endpoint): on an ellipse about
-            ! [lo, hi] staying in Re s >= 0, Re(lambda) falls by at most (cosh - 1) times
-            ! half its length in lambda below that at lo
-            growth = real(kappa*0.5_qp*panel_length(p), real64)
+            ! a root panel continued past s = 1: on the ellipse s = mid + h cos(z), Im z
+            ! = l <= log_rho (cosh l <= most), the integrands' exponent kappa Re(lambda)
+            ! (kappa Re(delta)) strays from its value at the panel's end nearest the apse
+            ! by at most (cosh l - 1) times the growth below (the apse side: scale h (2
+            ! mid + h max(0, most - mid/h)), the second term where the ellipse passes
+            ! s = 0; the start side: scale h (2 mid + h (1 + most)))
+            h = real(0.5_qp*(p%hi - p%lo), real64)
+            mid = real(0.5_qp*(p%hi + p%lo), real64)
+            most = cosh(p%log_rho)
+            if (p%kind == kind_apse_root) then
+                growth = real(kappa*p%scale, real64)*h*(2.0_real64*mid + &
+                         h*max(0.0_real64, most - mid/h))
+            else
+                growth = real(kappa*p%scale, real64)*h*(2.0_real64*mid + h*(1.0_real64 + most))
+            end if
         else
             growth = 0.0_real64
         end if
