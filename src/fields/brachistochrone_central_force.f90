@@ -15,16 +15,19 @@
 !!
 !! Quadrature: fixed Gauss-Legendre rules on panels chosen once per R. The integrands
 !! have square-root end singularities at the apse (lambda = 0) and at the start
-!! (delta = 0), removed by lambda = b s^2, delta = c s^2 on the end panels (two such
-!! panels meeting in between when Lambda is small), and complex singularities at
-!! distance sigma_apse, sigma_start from the ends (`log_scales`); the point x = 0 is at
-!! lambda = -infinity. Between the end panels the panels grow geometrically (ratio 8,
-!! length at most 8 sigma) away from both ends, so the count is O(log log(1/R)); an
-!! integral that ends at the endpoint inside the first of them takes one end panel up to
-!! it instead. The node count of each panel comes from the Bernstein ellipse through the
+!! (delta = 0), removed by lambda = b s^2, delta = c s^2 on the end panels (the start's
+!! up to delta = 16 c; two such panels meeting in between when Lambda is small; one
+!! panel lambda = Lambda s^2 (3 - 2 s), s in [0, 1], removing both when Lambda <= (b +
+!! c)/8, R -> 1), and complex singularities at distance sigma_apse, sigma_start from the
+!! ends (`log_scales`); the point x = 0 is at lambda = -infinity. Between the end panels
+!! the panels grow geometrically (ratio 8, length at most 8 sigma) away from both ends,
+!! so the count is O(log log(1/R)); an integral that ends at the endpoint inside the
+!! first of them takes one end panel up to it instead, and one that starts at an
+!! endpoint on the apse side the root variable continued from it (up to 8 sigma_apse
+!! further). The node count of each panel comes from the Bernstein ellipse through the
 !! nearest singularity (as on the inverse-square fast path), each singularity counted by
 !! the integrands' size there (`bernstein_log`), and the growth of the integrands off
-!! the real axis (`rule_for`). Away from the apse the integrands decay like
+!! the real axis (`rule_for`, `panel_growth`). Away from the apse the integrands decay like
 !! exp(-(n+1) lambda/2) or faster: each panel is asked only for the digits its share of
 !! the running sum needs, and panels below 1e-40 of it are skipped. Transcendentals:
 !! one or two fast exp/expm1 per node (`brachistochrone_fast_exp`; one for n = 2, 3),
@@ -97,9 +100,10 @@ module brachistochrone_central_force
     !> A panel whose bound is below this share of the running sum is skipped.
     real(qp), parameter :: negligible = 1.0e-40_qp
     !> Panel kinds: lambda = b s^2 (from the apse), lambda, delta, delta = c s^2 (from
-    !! the start).
+    !! the start), lambda = Lambda s^2 (3 - 2 s) (s in [0, 1]: the whole of a short arch,
+    !! both roots removed; scale Lambda).
     integer, parameter :: kind_apse_root = 1, kind_apse = 2, kind_start = 3, &
-                          kind_start_root = 4
+                          kind_start_root = 4, kind_full = 5
     !> Most panels for one integral.
     integer, parameter :: max_panels = 160
     !> Lowest log R searched (R above the smallest normal binary128 number).
@@ -651,6 +655,16 @@ contains
         count = 0
         b = min(1.0_qp, 0.5_qp*model%sigma_apse)
         c = min(1.0_qp, 0.5_qp*model%sigma_start)
+        if (a%big_lambda <= 0.125_qp*(b + c)) then
+            ! a short arch: one panel lambda = Lambda s^2 (3 - 2 s), delta = Lambda (1 -
+            ! s)^2 (1 + 2 s), both end singularities removed (about half the nodes of two
+            ! root panels meeting in between: the other preimages of the ends, s = 3/2
+            ! and -1/2, are the nearest singularities; those of the complex ones stay
+            ! far while Lambda <= (b + c)/8)
+            call add_split(panels, count, kind_full, 0.0_qp, 1.0_qp, a%big_lambda, &
+                           split_full(a%lambda_r, a%delta_r, a%big_lambda), a)
+            return
+        end if
         ! an integral that ends at the endpoint (weight 0 beyond it) inside the first
         ! ladder panel: one root panel up to it (fewer nodes than the root panel and the
         ! piece of the ladder panel)
@@ -743,6 +757,38 @@ contains
         s = s + real(real(z - s*s, xp)/(2.0_xp*s0), qp)
     end function split_root
 
+    !> The split s of a `kind_full` panel at lambda_r (delta_r = Lambda - lambda_r): w^2
+    !! (3 - 2 w) = t for the nearer end's offset t = min(lambda_r, delta_r)/Lambda <= 1/2
+    !! (s = w or 1 - w), by Newton steps in the hardware kind from w = sqrt(t/3) (below
+    !! the root; the cubic is convex there), then two corrections in binary128.
+    elemental function split_full(lambda_r, delta_r, big_lambda) result(s)
+        real(qp), intent(in) :: lambda_r, delta_r, big_lambda
+        real(qp) :: s, t, w
+        real(xp) :: tx, wx
+        integer :: k
+        t = min(lambda_r, delta_r)/big_lambda
+        if (.not. (t > 0.0_qp)) then
+            w = 0.0_qp
+        else
+            tx = real(t, xp)
+            if (.not. (tx > 0.0_xp)) then
+                ! below the hardware kind's range: the cubic term is negligible
+                s = merge(sqrt(t/3.0_qp), 1.0_qp - sqrt(t/3.0_qp), lambda_r <= delta_r)
+                return
+            end if
+            wx = sqrt(tx/3.0_xp)
+            do k = 1, 8
+                wx = wx - (wx*wx*(3.0_xp - 2.0_xp*wx) - tx)/(6.0_xp*wx*(1.0_xp - wx))
+            end do
+            w = real(wx, qp)
+            do k = 1, 2
+                w = w - real(real(w*w*(3.0_qp - 2.0_qp*w) - t, xp)/ &
+                             (6.0_xp*wx*(1.0_xp - wx)), qp)
+            end do
+        end if
+        s = merge(w, 1.0_qp - w, lambda_r <= delta_r)
+    end function split_full
+
     !> Add the panel [lo, hi] of `kind`, split at `split` (in the panel's variable) into
     !! the parts below and above the endpoint, with their weights; zero weights dropped.
     !! The parts in the order of the variable (`arch_panels` reverses the start side's
@@ -796,7 +842,7 @@ contains
         logical, intent(in), optional :: unweighted
         real(real64) :: log_rho
         real(real64), parameter :: reach = 35.0_real64*log(10.0_real64), most = 8.0_real64
-        complex(real64) :: zeta(8), point, image(2)
+        complex(real64) :: zeta(8), point, image(3), t, arc
         real(real64) :: lo, hi, big, sa, ss, log_min, kappa, near, w, lr
         integer :: k, m, images
         lo = real(p%lo, real64)
@@ -812,7 +858,7 @@ contains
         ! (+-2i: not a singularity but the growth of the factors exp(-+lambda),
         ! exp(-delta) off the real axis, which fewer nodes would not resolve)
         select case (p%kind)
-        case (kind_apse_root, kind_apse)
+        case (kind_apse_root, kind_apse, kind_full)
             zeta = [(0.0_real64, 0.0_real64), cmplx(0.0_real64, sa, real64), &
                     cmplx(0.0_real64, -sa, real64), cmplx(big, 0.0_real64, real64), &
                     cmplx(big, ss, real64), cmplx(big, -ss, real64), &
@@ -831,6 +877,8 @@ contains
             near = lo
         case (kind_start)
             near = -hi
+        case (kind_full)
+            near = real(p%scale, real64)*lo*lo*(3.0_real64 - 2.0_real64*lo)
         case default
             near = -real(p%scale, real64)*hi*hi
         end select
@@ -840,11 +888,28 @@ contains
             ! largest (the offsets on the start side count toward the start)
             w = 0.0_real64
             if (k <= 6) w = min(0.0_real64, -kappa*(merge(1.0_real64, -1.0_real64, &
-                p%kind <= kind_apse)*real(zeta(k)) - near))
+                p%kind <= kind_apse .or. p%kind == kind_full)*real(zeta(k)) - near))
             if (w <= -reach) cycle
             if (p%kind == kind_apse .or. p%kind == kind_start) then
                 images = 1
                 image(1) = zeta(k)
+            else if (p%kind == kind_full) then
+                ! the preimages of lambda = zeta: s^2 (3 - 2 s) = t at s = 1/2 - sin((asin(1
+                ! - 2 t) + 2 pi m)/3), m = 0, 1, 2; the ends' double ones (s = 0 of the
+                ! apse, s = 1 of the start) removed by the substitution, none near the
+                ! panel for |t| > 1e6
+                t = zeta(k)/real(p%scale, real64)
+                if (abs(t) > 1.0e6_real64) cycle
+                arc = asin(1.0_real64 - 2.0_real64*t)
+                images = 0
+                do m = 0, 2
+                    point = 0.5_real64 - sin((arc + real(2*m, real64)* &
+                                              acos(-1.0_real64))/3.0_real64)
+                    if ((k == 1 .and. abs(point) < 1.0e-6_real64) .or. &
+                        (k == 4 .and. abs(1.0_real64 - point) < 1.0e-6_real64)) cycle
+                    images = images + 1
+                    image(images) = point
+                end do
             else
                 if (k == 1) cycle    ! removed by the substitution
                 point = sqrt(zeta(k)/real(p%scale, real64))
@@ -948,6 +1013,10 @@ contains
             delta = v
             lambda = big_lambda - v
             jacobian = 1.0_qp
+        case (kind_full)
+            lambda = scale*(v*v*(3.0_qp - 2.0_qp*v))
+            delta = scale*((1.0_qp - v)**2*(1.0_qp + 2.0_qp*v))
+            jacobian = 6.0_qp*scale*(v*(1.0_qp - v))
         case default
             delta = scale*v*v
             lambda = big_lambda - delta
@@ -1242,6 +1311,8 @@ contains
         select case (p%kind)
         case (kind_apse_root, kind_start_root)
             length = p%scale*(p%hi**2 - p%lo**2)
+        case (kind_full)
+            length = p%scale*(p%hi**2*(3.0_qp - 2.0_qp*p%hi) - p%lo**2*(3.0_qp - 2.0_qp*p%lo))
         case default
             length = p%hi - p%lo
         end select
@@ -1293,6 +1364,10 @@ contains
                     delta = v
                     lambda = big - v
                     jacobian = 1.0_real64
+                case (kind_full)
+                    lambda = scale*(v*v*(3.0_real64 - 2.0_real64*v))
+                    delta = scale*((1.0_real64 - v)**2*(1.0_real64 + 2.0_real64*v))
+                    jacobian = 6.0_real64*scale*(v*(1.0_real64 - v))
                 case default
                     delta = scale*v*v
                     lambda = big - delta
@@ -1749,6 +1824,10 @@ contains
             delta = v
             lambda = big_lambda - v
             jacobian = 1.0_xp
+        case (kind_full)
+            lambda = scale*(v*v*(3.0_xp - 2.0_xp*v))
+            delta = scale*((1.0_xp - v)**2*(1.0_xp + 2.0_xp*v))
+            jacobian = 6.0_xp*scale*(v*(1.0_xp - v))
         case default
             delta = scale*v*v
             lambda = big_lambda - delta
