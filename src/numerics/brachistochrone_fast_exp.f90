@@ -13,7 +13,7 @@
 !! units in the last place.
 module brachistochrone_fast_exp
     use brachistochrone_kinds, only: qp, xp
-    use brachistochrone_fast_math, only: hardware_real
+    use brachistochrone_fast_math, only: hardware_real, quad_real
     use, intrinsic :: iso_fortran_env, only: real64
     implicit none
     private
@@ -114,15 +114,16 @@ contains
             rt = to_tail(r)
             tail = 1.0_tail_kind/24 + rt*(1.0_tail_kind/120 + rt*(1.0_tail_kind/720 &
                    + rt*(1.0_tail_kind/5040)))
-            series = r*(1.0_qp + r*(1.0_qp/2 + r*(1.0_qp/6 + r*real(tail, qp))))
+            series = r*(1.0_qp + r*(1.0_qp/2 + r*(1.0_qp/6 + r*to_quad(tail))))
         else
             series = r*(1.0_qp + r*(1.0_qp/2 + r*(1.0_qp/6 + r*(1.0_qp/24 + r*(1.0_qp/120 &
                      + r*(1.0_qp/720 + r*(1.0_qp/5040)))))))
         end if
     end subroutine reduce_series
 
-    !> exp(x) for |x| < 1: 1 + expm1(x) for x >= 0; for x < 0 e^a1 (1 + expm1(a2 + r))
-    !! (1 + expm1(x) would lose up to a bit next to x = -1), within 1.5 ulp.
+    !> exp(x) for |x| < 1: 1 + expm1(x) for x >= -1/4 (|expm1| < 1/4 where it is negative),
+    !! e^a1 (1 + expm1(a2 + r)) below (1 + expm1(x) would lose up to a bit next to
+    !! x = -1); within an ulp.
     elemental function table_exp(x) result(y)
         real(qp), intent(in) :: x
         real(qp) :: y
@@ -134,8 +135,12 @@ contains
             y = 1.0_qp + y
         else
             if (j2 > 0) y = exp_fine_minus(j2)*y + expm1_fine_minus(j2)
-            y = 1.0_qp + y
-            if (j1 > 0) y = exp_table_minus(j1)*y
+            if (j1 > 64) then
+                y = exp_table_minus(j1)*(1.0_qp + y)
+            else
+                if (j1 > 0) y = exp_table_minus(j1)*y + expm1_table_minus(j1)
+                y = 1.0_qp + y
+            end if
         end if
     end function table_exp
 
@@ -154,6 +159,17 @@ contains
             if (j1 > 0) y = exp_table_minus(j1)*y + expm1_table_minus(j1)
         end if
     end function small_expm1
+
+    !> The series' tail in binary128 (x87 extended: on the bits).
+    elemental function to_quad(t) result(r)
+        real(tail_kind), intent(in) :: t
+        real(qp) :: r
+        if (tail_kind == xp) then
+            r = quad_real(real(t, xp))
+        else
+            r = real(t, qp)
+        end if
+    end function to_quad
 
     !> r in the hardware kind of the series' tail (x87 extended: on the bits).
     elemental function to_tail(r) result(t)
