@@ -1003,8 +1003,9 @@ contains
         if (pan%kind == kind_start) side = 2
         mid = pan%lo + 0.5_qp*width
         if (side == 0) then
+            ! (the offsets from mid are not used on the root panels)
             v(1:n) = pan%lo + width*model%gauss(j)%offset
-            t(1:n) = v(1:n) - mid
+            t(1:n) = 0.0_qp
         else
             do k = 1, n/2
                 t(k) = width*(model%gauss(j)%offset(k) - 0.5_qp)

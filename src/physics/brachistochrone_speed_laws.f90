@@ -824,7 +824,7 @@ contains
     pure subroutine pair_exps(s, mid, offset, ev, em1v)
         real(qp), intent(in) :: s, mid, offset(:)
         real(qp), intent(out) :: ev(:), em1v(:)
-        real(qp) :: centre, centre_m1, x, y, inverse_y, w
+        real(qp) :: centre, centre_m1, x, y, w
         integer :: k, n, far, near
         n = size(offset)
         if (abs(s*mid) < 0.5_qp) then
@@ -845,11 +845,10 @@ contains
             end if
             far = merge(k, n + 1 - k, s*offset(k) <= 0.0_qp)
             near = n + 1 - far
-            inverse_y = 1.0_qp/y
             ev(far) = centre*y
             em1v(far) = centre_m1 + centre*x
-            ev(near) = centre*inverse_y
-            em1v(near) = centre_m1 - centre*(x*inverse_y)
+            ev(near) = centre/y
+            em1v(near) = centre_m1 - ev(near)*x
         end do
     end subroutine pair_exps
 
@@ -1079,10 +1078,22 @@ contains
         real(qp), intent(in) :: offset(:), lambda(:), delta(:)
         real(qp), intent(out) :: q(:), one_minus_q(:), q_over_v(:), r_over_x(:), root_q(:)
         real(xp), intent(out), optional :: log_slope(:)
-        real(qp), dimension(size(lambda)) :: e1, em1, e2
+        real(qp), dimension(size(lambda)) :: e1, em1, e2, om1, om2
+        real(xp) :: inverse_lambda
+        integer :: k
+        inverse_lambda = 1.0_xp/hardware_real(c(1))
         if (.not. pair_terms_apply([c(1:2), 1.0_qp, 1.0_qp, c(5:8)], side, lambda, delta)) then
-            call default_panel_terms(self, c, side, mid, offset, lambda, delta, q, &
-                                     one_minus_q, q_over_v, r_over_x, root_q, log_slope)
+            ! node by node (the root panels above all), as logarithmic_arch_terms
+            do k = 1, size(lambda)
+                call exp_pair(lambda(k), delta(k), c(5), e1(k), om1(k), om2(k), e2(k))
+            end do
+            root_q = e1*root(delta*c(6))
+            q = root_q*root_q
+            one_minus_q = om2 + e2*lambda*c(6)
+            q_over_v = root_q*e1*c(7)
+            r_over_x = e1
+            if (present(log_slope)) log_slope = hardware_real(lambda)*inverse_lambda/ &
+                                                hardware_real(delta)
             return
         end if
         if (side == 1) then
@@ -1099,8 +1110,8 @@ contains
         one_minus_q = -em1*(2.0_qp + em1) + e2*lambda*c(6)
         q_over_v = root_q*e1*c(7)
         r_over_x = e1
-        if (present(log_slope)) log_slope = real(lambda, xp)/(real(delta, xp)* &
-                                                              real(c(1), xp))
+        if (present(log_slope)) log_slope = hardware_real(lambda)*inverse_lambda/ &
+                                            hardware_real(delta)
     end subroutine logarithmic_panel_terms
 
     pure function logarithmic_inverse_speed(self, delta) result(w)
