@@ -1,16 +1,17 @@
 !> exp and expm1 in binary128, several times faster than libquadmath's, for the general
 !! engine's integrands (one or two per quadrature node).
 !!
-!! |x| = j1/256 + j2/65536 + r (j1, j2 from one double-precision index, |r| < 2^-16,
-!! the subtraction exact) for |x| < 1, and for larger x after x = k log 2 + x' (k from
-!! double precision: only near x/log 2; k log 2 subtracted in two parts, log 2 split into
-!! 60 + 113 bits, so the reduction is exact to about 2^-170 for |k| < 2^14):
-!! exp(x) = 2^k e^a1 e^a2 (1 + expm1(r)), and expm1(a + r) = e^a expm1(r) + expm1(a) for
-!! each table step a (both terms of one sign: no cancellation). The tables e^a and
-!! expm1(a) are constant expressions (rounded by the compiler); expm1(r) is its Taylor
-!! series to r^7/7!, the terms from r^4/24 on (below 2^-52 of r) in hardware extended
-!! precision where there is one (r converted on the bits, `hardware_real`). Errors: a few
-!! units in the last place.
+!! exp(x) = 2^k (1 + expm1(x - k log 2)), |x - k log 2| <= log(2)/2 (k = +-1 by
+!! constants; other k from double precision: only near x/log 2; k log 2 subtracted in two
+!! parts, log 2 split into 60 + 113 bits, so the reduction is exact to about 2^-170 for
+!! |k| < 2^14); expm1(x) = exp(x) - 1 for |x| >= 1/2. Below (and for the reduced
+!! argument): |x| = j1/256 + j2/65536 + r (j1, j2 from one
+!! double-precision index, |r| < 2^-16, the subtraction exact) and expm1(a + r) =
+!! e^a expm1(r) + expm1(a) for each table step a (both terms of one sign: no
+!! cancellation). The tables e^a and expm1(a) are constant expressions (rounded by the
+!! compiler); expm1(r) is its Taylor series to r^7/7!, the terms from r^4/24 on (below
+!! 2^-52 of r) in hardware extended precision where there is one (converted on the bits,
+!! `hardware_real`, `quad_real`). Errors: a few units in the last place.
 module brachistochrone_fast_exp
     use brachistochrone_kinds, only: qp, xp
     use brachistochrone_fast_math, only: hardware_real, quad_real
@@ -48,6 +49,8 @@ module brachistochrone_fast_exp
     !> log 2 - ln2_high to full precision (mpmath): ln2 - ln2_high would carry the
     !! rounding of ln2 (2^-114), k times, into the reduced argument
     real(qp), parameter :: ln2_low = 6.39062950764503927593536380659998906464430009e-19_qp
+    !> log(2)/2: below it no reduction
+    real(qp), parameter :: half_ln2 = 0.5_qp*ln2
     !> 1/log 2 (k needs only to be near x/log 2: the reduction is exact for any k)
     real(qp), parameter :: inverse_ln2 = 1.0_qp/ln2
     !> The widest hardware kind (x87 extended, 64-bit significand) for the series' tail:
@@ -70,22 +73,30 @@ contains
             y = exp(x)
             return
         end if
-        if (abs(x) < 1.0_qp) then
-            ! inside the tables' range: no reduction, no scaling
-            y = table_exp(x)
+        if (abs(x) < half_ln2) then
+            ! |x| below log(2)/2: no reduction, no scaling
+            y = 1.0_qp + small_expm1(x)
+            return
+        else if (abs(x) < 3.0_qp*half_ln2) then
+            ! k = +-1: the reduction by constants (the same values as below)
+            if (x > 0.0_qp) then
+                y = 2.0_qp*(1.0_qp + small_expm1((x - ln2_high) - ln2_low))
+            else
+                y = 0.5_qp*(1.0_qp + small_expm1((x + ln2_high) + ln2_low))
+            end if
             return
         end if
         ! k need only be near x/log 2 (the reduction below is exact for any k)
         k = nint(real(x, real64)*real(inverse_ln2, real64))
         reduced = (x - real(k, qp)*ln2_high) - real(k, qp)*ln2_low
-        y = scale(table_exp(reduced), k)
+        y = scale(1.0_qp + small_expm1(reduced), k)
     end function fast_exp
 
     !> expm1(x) = exp(x) - 1 to full relative precision.
     elemental function fast_expm1(x) result(y)
         real(qp), intent(in) :: x !! argument
         real(qp) :: y
-        if (abs(x) < 1.0_qp) then
+        if (abs(x) < 0.5_qp) then
             y = small_expm1(x)
         else
             y = fast_exp(x) - 1.0_qp
@@ -120,29 +131,6 @@ contains
                      + r*(1.0_qp/720 + r*(1.0_qp/5040)))))))
         end if
     end subroutine reduce_series
-
-    !> exp(x) for |x| < 1: 1 + expm1(x) for x >= -1/4 (|expm1| < 1/4 where it is negative),
-    !! e^a1 (1 + expm1(a2 + r)) below (1 + expm1(x) would lose up to a bit next to
-    !! x = -1); within an ulp.
-    elemental function table_exp(x) result(y)
-        real(qp), intent(in) :: x
-        real(qp) :: y
-        integer :: j1, j2
-        call reduce_series(x, j1, j2, y)
-        if (x >= 0.0_qp) then
-            if (j2 > 0) y = exp_fine(j2)*y + expm1_fine(j2)
-            if (j1 > 0) y = exp_table(j1)*y + expm1_table(j1)
-            y = 1.0_qp + y
-        else
-            if (j2 > 0) y = exp_fine_minus(j2)*y + expm1_fine_minus(j2)
-            if (j1 > 64) then
-                y = exp_table_minus(j1)*(1.0_qp + y)
-            else
-                if (j1 > 0) y = exp_table_minus(j1)*y + expm1_table_minus(j1)
-                y = 1.0_qp + y
-            end if
-        end if
-    end function table_exp
 
     !> expm1 for |x| < 1: expm1(a + r) = e^a expm1(r) + expm1(a) for
     !! a = a2, then a1 (the terms of one sign: no cancellation).
