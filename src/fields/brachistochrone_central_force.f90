@@ -71,7 +71,7 @@ module brachistochrone_central_force
                                       status_no_convergence, argument_status, &
                                       status_parameter_out_of_range
     use brachistochrone_quad_math, only: log1p
-    use brachistochrone_fast_math, only: inverse_sqrt, hardware_real
+    use brachistochrone_fast_math, only: hardware_real, fast_sqrt
     use brachistochrone_fast_exp, only: fast_exp
     use brachistochrone_quadrature, only: gauss_legendre_rule, gauss_legendre
     use brachistochrone_speed_laws, only: speed_law
@@ -962,7 +962,7 @@ contains
         logical, intent(in), optional :: every_panel
         type(panel) :: panels(max_panels)
         real(qp) :: part(3), last(3), share, jacobian, q, omq, qv, rx
-        real(qp) :: inverse_root, common, g(3), root_q, weighted, width, terms(max_nodes, 6)
+        real(qp) :: root_omq, common, g(3), root_q, weighted, width, terms(max_nodes, 6)
         real(xp) :: part_xp(2), carry(2), carry_all(2), log_slope, g_xp, slopes_k(max_nodes)
         integer :: count, p, k, j
         logical :: all_panels
@@ -996,20 +996,25 @@ contains
             width = pan%hi - pan%lo
             call panel_nodes(model, a, pan, j, present(slopes), terms, slopes_k)
             do k = 1, model%gauss(j)%n
-                jacobian = terms(k, 1)
+                ! the Gauss weight folded into the Jacobian (1 on the linear panels)
+                if (pan%kind == kind_apse .or. pan%kind == kind_start) then
+                    jacobian = model%gauss(j)%weight(k)
+                else
+                    jacobian = terms(k, 1)*model%gauss(j)%weight(k)
+                end if
                 q = terms(k, 2)
                 omq = terms(k, 3)
                 qv = terms(k, 4)
                 rx = terms(k, 5)
                 root_q = terms(k, 6)
                 if (present(slopes)) log_slope = slopes_k(k)
-                ! 1/sqrt(1 - q) and sqrt(q/(1 - q)) by a double seed and Newton steps;
-                ! the Gauss weight folded into the Jacobian (g: weighted integrands)
-                inverse_root = inverse_sqrt(omq)
-                weighted = inverse_root*(jacobian*model%gauss(j)%weight(k))
+                ! sqrt(1 - q) by a hardware root and one correction, then two divisions
+                ! (g: weighted integrands)
+                root_omq = fast_sqrt(omq)
+                weighted = jacobian/root_omq
                 g(1) = root_q*weighted
                 if (want_length_time) then
-                    common = weighted/(rx*(1.0_qp + omq*inverse_root))
+                    common = weighted/(rx*(1.0_qp + root_omq))
                     g(2) = q*common
                     g(3) = qv*common
                 else
@@ -1026,8 +1031,7 @@ contains
                 end if
                 ! the node nearest the next panel
                 if (k == merge(1, model%gauss(j)%n, pan%kind >= kind_start .and. &
-                               pan%kind <= kind_start_root)) &
-                    last = abs(g/(jacobian*model%gauss(j)%weight(k)))
+                               pan%kind <= kind_start_root)) last = abs(g/jacobian)
             end do
             sums = sums + pan%weight*(pan%hi - pan%lo)*part
             if (present(slopes)) call add_compensated(slopes, carry_all, &
@@ -1057,8 +1061,9 @@ contains
         if (pan%kind == kind_start) side = 2
         mid = pan%lo + 0.5_qp*width
         if (side == 0) then
+            ! (the offsets from mid are not used on the root panels)
             v(1:n) = pan%lo + width*model%gauss(j)%offset
-            t(1:n) = v(1:n) - mid
+            t(1:n) = 0.0_qp
         else
             do k = 1, n/2
                 t(k) = width*(model%gauss(j)%offset(k) - 0.5_qp)
