@@ -32,6 +32,7 @@ contains
         call critical_closed_form()
         call mpmath_reference()
         call fixed_panels()
+        call second_half_panels()
         call branch_structure()
         call two_point()
         call two_point_mpmath()
@@ -273,6 +274,44 @@ contains
         call check(all(worst <= 8.0_qp), 'fixed panels = adaptive to 8 eps')
         call check(worst_xp <= 1.0e-17_qp, 'hardware-precision panels to 1e-17')
     end subroutine fixed_panels
+
+    !> The fixed panels on the second half-arch, taken as F(r) + 2 (F(R) - F(r)) with the
+    !! difference on its own pieces, against the adaptive 2 F(R) - F(r): r from next to
+    !! the start (1 + (R - 1) 2^-100) to next to the apse (R - (R - 1) 2^-100, where the
+    !! difference is in the apse's sinh map), apse R = 1 + 1e-20 .. 3/2 - 1e-20.
+    subroutine second_half_panels()
+        real(qp), parameter :: apses(5) = [1.0_qp + 1.0e-20_qp, 1.001_qp, 1.25_qp, &
+                                           1.49_qp, 1.5_qp - 1.0e-20_qp]
+        integer, parameter :: powers(7) = [1, 3, 10, 30, 60, 100, 0]
+        type(panel_rules) :: rules
+        type(repulsive_curve) :: curve
+        real(qp) :: a(3), b(3), r, worst(3)
+        integer :: i, j, side, stat(3)
+        call section('repulsive: second half-arch panels, F(r) + 2 (F(R) - F(r))')
+        rules = new_panel_rules()
+        worst = 0.0_qp
+        do i = 1, size(apses)
+            call curve_from_apse(apses(i), curve, stat(1))
+            do j = 1, size(powers)
+                do side = 0, 1
+                    ! powers 0: r = R itself (the second half-arch's start)
+                    if (side == 0) then
+                        r = curve%apse - curve%apse_m1*2.0_qp**(-powers(j))
+                    else
+                        r = 1.0_qp + curve%apse_m1*2.0_qp**(-powers(j))
+                    end if
+                    if (powers(j) == 0) r = curve%apse
+                    call repulsive_values(curve, r, .true., a(1), a(2), a(3), stat(2))
+                    call panel_values(curve, r, .true., rules, .false., b, stat(3))
+                    call check(all(stat == status_ok), 'second half-arch panels: status ok')
+                    worst = max(worst, abs(a - b)/max(abs(a), tiny(1.0_qp))/eps_qp)
+                end do
+            end do
+        end do
+        write (output_unit, '(a,3f7.2)') '   panels vs adaptive, worst theta, s, t in eps: ', &
+            worst
+        call check(all(worst <= 8.0_qp), 'second half-arch panels = adaptive to 8 eps')
+    end subroutine second_half_panels
 
     !> theta(rho) along the branch of curves through rho is increasing: unbounded (g from 3
     !! down to 0), then for rho < 3/2 first half-arches (R from 3/2 down to rho) and second

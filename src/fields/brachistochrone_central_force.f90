@@ -53,7 +53,8 @@
 !! below (tiny R-bar keeps its relative precision, down to the binary128 range).
 !! Laws with hardware-precision terms (`speed_law%has_terms_xp`: power and logarithmic)
 !! take an early phase in the widest hardware kind (x87 extended; `hardware_phase`):
-!! safeguarded Newton steps on Theta and its analytic slope d Theta/d Lambda (the
+!! safeguarded Newton steps (inverse Hermite steps through the last two evaluations
+!! where there are two) on Theta and its analytic slope d Theta/d Lambda (the
 !! integrand's derivative at fixed lambda, g q'/(2 q (1 - q)) with q' = d q/d Lambda
 !! from the law, summed on the same nodes, plus the jump of the weights times g at the
 !! endpoint), first on 12-digit rules with double-precision transcendentals, then on
@@ -73,7 +74,7 @@ module brachistochrone_central_force
                                       status_no_convergence, argument_status, &
                                       status_parameter_out_of_range
     use brachistochrone_quad_math, only: log1p
-    use brachistochrone_fast_math, only: inverse_sqrt, hardware_real
+    use brachistochrone_fast_math, only: hardware_real, fast_sqrt
     use brachistochrone_fast_exp, only: fast_exp
     use brachistochrone_quadrature, only: gauss_legendre_rule, gauss_legendre
     use brachistochrone_speed_laws, only: speed_law
@@ -613,14 +614,17 @@ contains
         call finish_setup(model, a, rho - a%big_r, delta_r, second, .false.)
     end function setup_arch_log
 
-    pure subroutine finish_setup(model, a, d, delta_r, second, whole)
+    pure subroutine finish_setup(model, a, d, delta_r, second, whole, lambda_r)
         type(central_force_model), intent(in) :: model
         type(arch_setup), intent(inout) :: a
         real(qp), intent(in) :: d, delta_r
         logical, intent(in) :: second, whole
+        real(qp), intent(in), optional :: lambda_r  !! log(1 + d/R) where known
         a%c = model%law%apse_constants(a%big_r, a%one_minus_big_r, a%big_lambda)
         a%cx = model%law%apse_constants_xp(real(a%big_lambda, xp))
-        if (a%big_r > 0.0_qp .and. d < a%big_r) then
+        if (present(lambda_r)) then
+            a%lambda_r = lambda_r
+        else if (a%big_r > 0.0_qp .and. d < a%big_r) then
             a%lambda_r = log1p(d/a%big_r)
         else
             a%lambda_r = a%big_lambda - delta_r
@@ -653,27 +657,16 @@ contains
         type(panel) :: start_side(max_panels)
         integer :: n_start, k
         count = 0
-        b = min(1.0_qp, 0.5_qp*model%sigma_apse)
-        c = min(1.0_qp, 0.5_qp*model%sigma_start)
+        call root_scales(model, a, b, c)
         if (a%big_lambda <= 0.125_qp*(b + c)) then
             ! a short arch: one panel lambda = Lambda s^2 (3 - 2 s), delta = Lambda (1 -
             ! s)^2 (1 + 2 s), both end singularities removed (about half the nodes of two
             ! root panels meeting in between: the other preimages of the ends, s = 3/2
             ! and -1/2, are the nearest singularities; those of the complex ones stay
-            ! far while Lambda <= (b + c)/8)
+            ! far while Lambda <= (b + c)/8; the root scales are the plain ones there)
             call add_split(panels, count, kind_full, 0.0_qp, 1.0_qp, a%big_lambda, &
                            split_full(a%lambda_r, a%delta_r, a%big_lambda), a)
             return
-        end if
-        ! an integral that ends at the endpoint (weight 0 beyond it) inside the first
-        ! ladder panel: one root panel up to it (fewer nodes than the root panel and the
-        ! piece of the ladder panel)
-        if (a%weight_above == 0.0_qp .and. a%lambda_r > b .and. a%lambda_r <= 4.0_qp*b &
-            .and. a%lambda_r + c < a%big_lambda) then
-            b = a%lambda_r
-        else if (a%weight_below == 0.0_qp .and. a%delta_r > c .and. &
-                 a%delta_r <= 4.0_qp*c .and. a%delta_r + b < a%big_lambda) then
-            c = a%delta_r
         end if
         if (a%big_lambda <= b + c) then
             ! two root panels meeting in between: lambda = b' s^2 and delta = c' s^2
@@ -685,8 +678,7 @@ contains
                            split_root(a%delta_r/c), a)
         else
             meet = max(b, min(a%big_lambda - c, a%big_lambda*b/(b + c)))
-            if (a%weight_below == 0.0_qp .and. a%lambda_r >= 0.25_qp*b .and. &
-                a%lambda_r < meet) then
+            if (continued_root(a, b, c)) then
                 ! an integral from an endpoint on the apse side: the root variable
                 ! continued from it to meet, or ladder sigma_apse further (the apse's
                 ! singularities stay away in s: fewer nodes than the root panel's piece
@@ -740,6 +732,36 @@ contains
             end do
         end if
     end subroutine arch_panels
+
+    !> The scales of the root panels, lambda = b s^2 and delta = c s^2: half the
+    !! singularities' distances (at most 1), except for an integral that ends at the
+    !! endpoint (weight 0 beyond it) inside the first ladder panel, which gets one root
+    !! panel up to it (fewer nodes than the root panel and the piece of the ladder panel).
+    pure subroutine root_scales(model, a, b, c)
+        type(central_force_model), intent(in) :: model
+        type(arch_setup), intent(in) :: a
+        real(qp), intent(out) :: b, c
+        b = min(1.0_qp, 0.5_qp*model%sigma_apse)
+        c = min(1.0_qp, 0.5_qp*model%sigma_start)
+        if (a%weight_above == 0.0_qp .and. a%lambda_r > b .and. a%lambda_r <= 4.0_qp*b &
+            .and. a%lambda_r + c < a%big_lambda) then
+            b = a%lambda_r
+        else if (a%weight_below == 0.0_qp .and. a%delta_r > c .and. &
+                 a%delta_r <= 4.0_qp*c .and. a%delta_r + b < a%big_lambda) then
+            c = a%delta_r
+        end if
+    end subroutine root_scales
+
+    !> Whether `arch_panels` takes the root variable continued from the endpoint (an
+    !! integral from it, weights 0 and 1, the endpoint on the apse side: lambda_r in
+    !! [b/4, meet)), b and c the root scales.
+    pure logical function continued_root(a, b, c)
+        type(arch_setup), intent(in) :: a
+        real(qp), intent(in) :: b, c
+        continued_root = a%weight_below == 0.0_qp .and. a%lambda_r >= 0.25_qp*b .and. &
+            a%lambda_r < max(b, min(a%big_lambda - c, a%big_lambda*b/(b + c))) .and. &
+            a%big_lambda > b + c
+    end function continued_root
 
     !> sqrt(z) for the root panels' splits, within an ulp: the hardware kind's square root
     !! and one correction (z - s^2)/(2 s) in it (libquadmath's sqrtq costs about ten
@@ -1054,7 +1076,7 @@ contains
         logical, intent(in), optional :: every_panel
         type(panel) :: panels(max_panels)
         real(qp) :: part(3), last(3), share, jacobian, q, omq, qv, rx
-        real(qp) :: inverse_root, common, g(3), root_q, weighted, width, terms(max_nodes, 6)
+        real(qp) :: root_omq, common, g(3), root_q, weighted, width, terms(max_nodes, 6)
         real(xp) :: part_xp(2), carry(2), carry_all(2), log_slope, g_xp, slopes_k(max_nodes)
         integer :: count, p, k, j
         logical :: all_panels
@@ -1088,20 +1110,25 @@ contains
             width = pan%hi - pan%lo
             call panel_nodes(model, a, pan, j, present(slopes), terms, slopes_k)
             do k = 1, model%gauss(j)%n
-                jacobian = terms(k, 1)
+                ! the Gauss weight folded into the Jacobian (1 on the linear panels)
+                if (pan%kind == kind_apse .or. pan%kind == kind_start) then
+                    jacobian = model%gauss(j)%weight(k)
+                else
+                    jacobian = terms(k, 1)*model%gauss(j)%weight(k)
+                end if
                 q = terms(k, 2)
                 omq = terms(k, 3)
                 qv = terms(k, 4)
                 rx = terms(k, 5)
                 root_q = terms(k, 6)
                 if (present(slopes)) log_slope = slopes_k(k)
-                ! 1/sqrt(1 - q) and sqrt(q/(1 - q)) by a double seed and Newton steps;
-                ! the Gauss weight folded into the Jacobian (g: weighted integrands)
-                inverse_root = inverse_sqrt(omq)
-                weighted = inverse_root*(jacobian*model%gauss(j)%weight(k))
+                ! sqrt(1 - q) by a hardware root and one correction, then two divisions
+                ! (g: weighted integrands)
+                root_omq = fast_sqrt(omq)
+                weighted = jacobian/root_omq
                 g(1) = root_q*weighted
                 if (want_length_time) then
-                    common = weighted/(rx*(1.0_qp + omq*inverse_root))
+                    common = weighted/(rx*(1.0_qp + root_omq))
                     g(2) = q*common
                     g(3) = qv*common
                 else
@@ -1118,8 +1145,7 @@ contains
                 end if
                 ! the node nearest the next panel
                 if (k == merge(1, model%gauss(j)%n, pan%kind >= kind_start .and. &
-                               pan%kind <= kind_start_root)) &
-                    last = abs(g/(jacobian*model%gauss(j)%weight(k)))
+                               pan%kind <= kind_start_root)) last = abs(g/jacobian)
             end do
             sums = sums + pan%weight*(pan%hi - pan%lo)*part
             if (present(slopes)) call add_compensated(slopes, carry_all, &
@@ -1149,8 +1175,9 @@ contains
         if (pan%kind == kind_start) side = 2
         mid = pan%lo + 0.5_qp*width
         if (side == 0) then
+            ! (the offsets from mid are not used on the root panels)
             v(1:n) = pan%lo + width*model%gauss(j)%offset
-            t(1:n) = v(1:n) - mid
+            t(1:n) = 0.0_qp
         else
             do k = 1, n/2
                 t(k) = width*(model%gauss(j)%offset(k) - 0.5_qp)
@@ -1191,32 +1218,33 @@ contains
         type(arch_setup) :: below, above
         type(panel) :: panels_below(max_panels), panels_above(max_panels)
         real(qp) :: whole(5), part(3), w_sign, p_sign, sizes(3)
-        real(xp) :: part_slopes(2)
+        real(xp) :: part_slopes(2), whole_hw(2)
         integer :: n_below, n_above
         logical :: found, use_below
-        ! the slopes' tables only for the slopes
-        call whole_lookup(model, a%big_lambda, whole, found, merge(5, 3, present(slopes)))
+        ! whether the tables apply, and W for the choice, from Theta's table in hardware
+        ! precision; the binary128 tables only where W enters the sums
+        call whole_lookup_xp(model, real(a%big_lambda, xp), whole_hw, found)
         found = found .and. a%weight_above == 1.0_qp .and. &
                 (a%weight_below == 0.0_qp .or. a%weight_below == 2.0_qp)
         if (.not. found) then
-            if (present(slopes)) then
-                call arch_sums(model, a, fine_digits, .true., sums, slopes)
-                magnitude = abs(slopes)
-            else
-                call arch_sums(model, a, fine_digits, .true., sums)
-            end if
+            call all_panels(sums, slopes, magnitude)
             return
         end if
-        below = a
-        below%weight_below = 1.0_qp
-        below%weight_above = 0.0_qp
-        above = a
-        above%weight_below = 0.0_qp
-        call arch_panels(model, below, panels_below, n_below)
-        call arch_panels(model, above, panels_above, n_above)
+        call split_panels(model, a, below, panels_below, n_below, above, panels_above, &
+                          n_above)
         use_below = n_below <= n_above
         if (present(expected) .and. a%weight_below == 0.0_qp) &
-            use_below = use_below .and. expected >= 0.5_qp*whole(1)
+            use_below = use_below .and. expected >= 0.5_qp*real(whole_hw(1), qp)
+        whole = 0.0_qp
+        if (use_below .or. a%weight_below == 2.0_qp) then
+            ! the slopes' tables only for the slopes
+            call whole_lookup(model, a%big_lambda, whole, found, merge(5, 3, present(slopes)))
+            if (.not. found) then
+                ! (the two lookups disagree at the edge of a piece)
+                call all_panels(sums, slopes, magnitude)
+                return
+            end if
+        end if
         if (a%weight_below == 2.0_qp) then
             w_sign = merge(1.0_qp, 2.0_qp, use_below)
             p_sign = merge(1.0_qp, -1.0_qp, use_below)
@@ -1250,6 +1278,18 @@ contains
             magnitude = abs(real(w_sign*whole(4:5), xp)) + abs(part_slopes)
         end if
     contains
+        !> Every panel (`arch_sums` without the tables).
+        pure subroutine all_panels(sums, slopes, magnitude)
+            real(qp), intent(out) :: sums(3)
+            real(xp), intent(out), optional :: slopes(2), magnitude(2)
+            if (present(slopes)) then
+                call arch_sums(model, a, fine_digits, .true., sums, slopes)
+                magnitude = abs(slopes)
+            else
+                call arch_sums(model, a, fine_digits, .true., sums)
+            end if
+        end subroutine all_panels
+
         pure subroutine part_sums(b, pans, n_pans, part, part_slopes)
             type(arch_setup), intent(in) :: b
             type(panel), intent(in) :: pans(max_panels)
@@ -1265,6 +1305,60 @@ contains
             end if
         end subroutine part_sums
     end subroutine table_sums
+
+    !> The apse data and panels of the integrals below the endpoint (weights 1, 0) and
+    !! above it (0, 1), as `arch_panels` gives them, from one layout (weights 1, 2, the
+    !! panels told apart by their weights) where the two are parts of it: the layout
+    !! does not depend on the weights but for the cut of the panels past exp(-300) of
+    !! the integrands where the weighted region starts, which the cut never reaches
+    !! where the decay rate pi/sigma_apse times Lambda is below 250 (the tables' range
+    !! but for the steepest laws), and for the root panel up to an endpoint inside the
+    !! first ladder panel (`root_scales`). Elsewhere two layouts.
+    pure subroutine split_panels(model, a, below, panels_below, n_below, above, &
+                                 panels_above, n_above)
+        type(central_force_model), intent(in) :: model
+        type(arch_setup), intent(in) :: a
+        type(arch_setup), intent(out) :: below, above
+        type(panel), intent(out) :: panels_below(max_panels), panels_above(max_panels)
+        integer, intent(out) :: n_below, n_above
+        type(arch_setup) :: both
+        type(panel) :: panels(max_panels)
+        real(qp) :: b(3), c(3)
+        integer :: count, p
+        below = a
+        below%weight_below = 1.0_qp
+        below%weight_above = 0.0_qp
+        above = a
+        above%weight_below = 0.0_qp
+        above%weight_above = 1.0_qp
+        count = max_panels
+        both = a
+        both%weight_below = 1.0_qp
+        both%weight_above = 2.0_qp
+        call root_scales(model, both, b(1), c(1))
+        call root_scales(model, below, b(2), c(2))
+        call root_scales(model, above, b(3), c(3))
+        if (pi/model%sigma_apse*a%big_lambda <= 250.0_qp .and. all(b == b(1)) .and. &
+            all(c == c(1)) .and. .not. continued_root(above, b(3), c(3))) &
+            call arch_panels(model, both, panels, count)
+        if (count >= max_panels) then
+            call arch_panels(model, below, panels_below, n_below)
+            call arch_panels(model, above, panels_above, n_above)
+            return
+        end if
+        n_below = 0
+        n_above = 0
+        do p = 1, count
+            if (panels(p)%weight == 1.0_qp) then
+                n_below = n_below + 1
+                panels_below(n_below) = panels(p)
+            else
+                n_above = n_above + 1
+                panels_above(n_above) = panels(p)
+                panels_above(n_above)%weight = 1.0_qp
+            end if
+        end do
+    end subroutine split_panels
 
     !> Whether the first half-arch (weights 0, 1) must be int_lambda_r^Lambda in the early
     !! phase, W - int_0^lambda_r being bound to fail its check in `theta_xp`
@@ -1579,11 +1673,16 @@ contains
         type(endpoint_problem), intent(in) :: prob
         real(qp), intent(in) :: x
         type(arch_setup) :: a
-        real(qp) :: d
+        real(qp) :: d, lambda_r
         if (prob%use_u) then
+            ! Lambda = delta_rho + lambda_r, lambda_r = log(1 + u^2/R) (R >= u^2): one
+            ! logarithm
             d = x*x
-            a = setup_arch(model, prob%rho - d, prob%one_minus_rho + d, d, prob%delta_rho, &
-                           prob%second, .false.)
+            a%big_r = prob%rho - d
+            a%one_minus_big_r = prob%one_minus_rho + d
+            lambda_r = log1p(d/a%big_r)
+            a%big_lambda = prob%delta_rho + lambda_r
+            call finish_setup(model, a, d, prob%delta_rho, prob%second, .false., lambda_r)
         else if (prob%use_r) then
             a = setup_arch(model, x, 1.0_qp - x, prob%rho - x, prob%delta_rho, &
                            prob%second, .false.)
@@ -1701,13 +1800,8 @@ contains
         if (found) then
             ! as `table_sums`, Theta scaled by exp(shift)
             whole = whole*exp(shift)
-            below = a
-            below%weight_below = 1.0_qp
-            below%weight_above = 0.0_qp
-            above = a
-            above%weight_below = 0.0_qp
-            call arch_panels(model, below, panels_below, n_below)
-            call arch_panels(model, above, panels_above, n_above)
+            call split_panels(model, a, below, panels_below, n_below, above, panels_above, &
+                              n_above)
             ! (the hardware-precision evaluations straight to int_lambda_r^Lambda where the
             ! check below is bound to fail)
             use_below = n_below <= n_above .and. &
@@ -1835,6 +1929,18 @@ contains
         end select
     end subroutine node_point_xp
 
+    !> log(ratio) in hardware precision to its relative precision, for a binary128 ratio
+    !! (log1p of ratio - 1, exact in binary128, next to 1).
+    elemental function log_of_ratio(ratio) result(l)
+        real(qp), intent(in) :: ratio
+        real(xp) :: l
+        if (abs(ratio - 1.0_qp) < 0.5_qp) then
+            l = log1p_xp(real(ratio - 1.0_qp, xp))
+        else
+            l = log(real(ratio, xp))
+        end if
+    end function log_of_ratio
+
     !> log(1 + z) in hardware precision (Kahan's correction of log(1 + z)).
     elemental function log1p_xp(z) result(l)
         real(xp), intent(in) :: z
@@ -1896,7 +2002,7 @@ contains
             if (prob%use_u) then
                 f = log(scaled*exp(-shift)/real(prob%psi, xp))
             else
-                f = log(max(scaled, tiny(1.0_xp))) - shift - real(log(prob%psi), xp)
+                f = log(max(scaled, tiny(1.0_xp))) - shift - log(real(prob%psi, xp))
             end if
             slope = scaled_slope/scaled*lambda_slope
         case (2)
@@ -1912,14 +2018,19 @@ contains
 
     !> The early phase in hardware precision: Newton steps on the analytic slope, kept in
     !! the bracket [lo, hi] (f of opposite signs at its ends; regula falsi with the
-    !! Anderson-Bjorck correction where a Newton step would leave it). First `rough`
+    !! Anderson-Bjorck correction where a Newton step would leave it), and where the
+    !! previous evaluation of the same precision is at hand the root of the inverse
+    !! cubic Hermite interpolant through both (`hermite_step`). First `rough`
     !! evaluations (12-digit rules, transcendentals in double precision) until a step is
-    !! below 1e-5 of the unknown (the next iterate then within about 1e-10), then
-    !! hardware-precision ones (20-digit rules)
-    !! until a step is below 1e-12, or its own error by the measured curvature below 1e-20
-    !! of the unknown: by the quadratic convergence the root is then within
-    !! the rounding of the hardware kind (usually one such evaluation). x the root, slope
-    !! f'(x) (the form's), curvature |f''/2f'| measured between the iterates (0 if not).
+    !! below 1e-5 of the unknown or the Newton point within 1e-10 of the Hermite point
+    !! (the next iterate then within about 1e-10), then hardware-precision ones (20-digit
+    !! rules) until a step is below 1e-12, or its own error by the measured curvature
+    !! below 1e-20 of the unknown, or f is within its rounding: by the quadratic
+    !! convergence the root is then within the rounding of the hardware kind (usually
+    !! one such evaluation; the last Newton step is taken even within the rounding: it
+    !! halves the early root's error on average, and the certified step fails less
+    !! often). x the root, slope f'(x) (the form's), curvature |f''/2f'| measured
+    !! between the iterates (0 if not).
     pure subroutine hardware_phase(model, prob, lo, f_lo, hi, f_hi, x, slope, curvature, &
                                    steps, slope_hi)
         type(central_force_model), intent(in) :: model
@@ -1932,6 +2043,7 @@ contains
         !! through f(lo), f(hi), f'(hi) rather than regula falsi
         real(real64), intent(in), optional :: slope_hi
         real(xp) :: a, b, fa, fb, xk, fk, dk, x_new, x_prev, d_prev, floor, noise
+        real(xp) :: point(3), newton_error
         integer :: iteration
         logical :: rough
         call first_bracket(lo, f_lo, hi, f_hi, a, fa, b, fb)
@@ -1939,11 +2051,18 @@ contains
         curvature = 0.0_qp
         x_prev = a
         d_prev = 0.0_xp
+        ! the previous evaluation of the same precision (x, f, f'; f' = 0: none), for
+        ! the inverse Hermite step
+        point = 0.0_xp
         rough = .true.
         xk = falsi()
         if (present(slope_hi) .and. prob%use_u .and. prob%form == 0) then
             if (slope_hi /= 0.0_real64) xk = hermite(real(slope_hi, xp))
         end if
+        ! steep laws (logarithmic forms): f about linear in lambda_r ~ u^2/R near the
+        ! root, from f(0) at u = 0: regula falsi in u^2
+        if (prob%use_u .and. prob%form /= 0 .and. a == 0.0_xp .and. &
+            ((fa < 0.0_xp) .neqv. (fb < 0.0_xp))) xk = b*sqrt(fa/(fa - fb))
         ! rho next to 1 (second half-arch): Upsilon - Theta(rho,rho) ~ c u^2 but for the
         ! smallest u (falsi would start far below the root; f of opposite signs at a = 0
         ! and b)
@@ -1964,24 +2083,38 @@ contains
                 ! 1e-18): on to the hardware-precision rules, or to the full-precision
                 ! steps
                 x_new = xk
-                if (.not. rough) exit
+                if (.not. rough) then
+                    ! the Newton step within the rounding all the same (the root as
+                    ! close as this precision places it)
+                    if (xk - fk/dk > min(a, b) .and. xk - fk/dk < max(a, b)) &
+                        x_new = xk - fk/dk
+                    exit
+                end if
                 ! with the first bracket again (the rough signs are not sure within
                 ! their rounding)
                 rough = .false.
+                point = 0.0_xp
                 call first_bracket(lo, f_lo, hi, f_hi, a, fa, b, fb)
                 cycle
             else
                 call keep_bracket(xk, fk, a, fa, b, fb)
                 x_new = xk - fk/dk
+                newton_error = huge(1.0_xp)
+                call hermite_step(x_new, newton_error)
                 ! (a Newton step below xk's rounding lands on xk, an end of the bracket:
                 ! the root as close as this precision places it, not a step for falsi)
                 if (.not. (x_new > min(a, b) .and. x_new < max(a, b)) .and. &
                     x_new /= xk) x_new = falsi()
             end if
-            if (rough .and. abs(x_new - xk) <= 1.0e-5_xp*max(abs(xk), floor)) then
-                ! the rough root (the next iterate within about 1e-10): on to the
-                ! hardware-precision rules
+            point = [xk, fk, dk]
+            ! the rough root: the Newton step below 1e-5 (the next iterate within about
+            ! 1e-10), or the inverse Hermite step's distance from it (the Newton step's
+            ! error, which the Hermite step's is far below) below 1e-10
+            if (rough .and. (abs(x_new - xk) <= 1.0e-5_xp*max(abs(xk), floor) .or. &
+                             newton_error <= 1.0e-10_xp*max(abs(xk), floor))) then
+                ! on to the hardware-precision rules
                 rough = .false.
+                point = 0.0_xp
                 call first_bracket(lo, f_lo, hi, f_hi, a, fa, b, fb)
             else if (.not. rough .and. &
                      (abs(x_new - xk) <= 1.0e-12_xp*max(abs(xk), floor) .or. &
@@ -1999,6 +2132,26 @@ contains
         slope = real(dk, qp)
         curvature = 0.5_qp*curvature
     contains
+        !> The root of the cubic x(f) through the previous evaluation of the same
+        !! precision and this one (values and slopes: inverse Hermite interpolation)
+        !! where f is monotone between them and the root is in the bracket; then the
+        !! Newton point's distance from it as `newton_error` (the Newton step errs by
+        !! about |f''/2f'| step^2, the Hermite step by far less: the two evaluations'
+        !! slopes measure f'').
+        pure subroutine hermite_step(x_new, newton_error)
+            real(xp), intent(inout) :: x_new, newton_error
+            real(xp) :: h, s, x_h
+            if (point(3) == 0.0_xp .or. (point(3) > 0.0_xp .neqv. dk > 0.0_xp)) return
+            h = fk - point(2)
+            if (h == 0.0_xp) return
+            s = -point(2)/h
+            x_h = xk + (2.0_xp*s + 1.0_xp)*(s - 1.0_xp)**2*(point(1) - xk) + &
+                  h*s*(s - 1.0_xp)*((s - 1.0_xp)/point(3) + s/dk)
+            if (.not. (x_h > min(a, b) .and. x_h < max(a, b))) return
+            newton_error = abs(x_h - x_new)
+            x_new = x_h
+        end subroutine hermite_step
+
         pure real(xp) function falsi()
             falsi = b - fb*(b - a)/(fb - fa)
             if (.not. (falsi > min(a, b) .and. falsi < max(a, b))) falsi = 0.5_xp*(a + b)
@@ -2467,6 +2620,7 @@ contains
         real(qp), intent(out) :: apse_angle_rho    !! Theta(rho, rho) (0 when rho = 1)
         type(arch_setup) :: a
         real(qp) :: sums(3), whole(5)
+        real(xp) :: whole_xp(2)
         real(real64) :: scaled, shift
         logical :: found
         prob%rho = rho
@@ -2475,10 +2629,19 @@ contains
         prob%delta_rho = minus_log(rho, prob%one_minus_rho)
         prob%limit = 2.0_qp*limit
         apse_angle_rho = 0.0_qp
-        call whole_lookup(self, prob%delta_rho, whole, found, 1)
-        if (rho < 1.0_qp .and. found) then
-            apse_angle_rho = whole(1)
-        else if (rho < 1.0_qp) then
+        found = .false.
+        if (rho < 1.0_qp) then
+            ! the hardware-precision table first (no binary128 logarithm); the full
+            ! table where psi is within 1e-12 of it (the half-arch, `at_the_apse`,
+            ! `apse_start` need it to the last bits there)
+            call whole_lookup_xp(self, real(prob%delta_rho, xp), whole_xp, found)
+            apse_angle_rho = real(whole_xp(1), qp)
+            if (.not. found .or. abs(apse_angle_rho - psi) <= 1.0e-12_qp*psi) then
+                call whole_lookup(self, prob%delta_rho, whole, found, 1)
+                apse_angle_rho = whole(1)
+            end if
+        end if
+        if (rho < 1.0_qp .and. .not. found) then
             a = setup_arch(self, rho, prob%one_minus_rho, 0.0_qp, prob%delta_rho, &
                            .false., .true.)
             call theta64(self, a, scaled, shift)
@@ -2640,14 +2803,16 @@ contains
             end if
         end subroutine bracket_residual
 
-        !> Upsilon - psi in the problem's form.
+        !> Upsilon - psi in the problem's form (the logarithms of ratios formed in
+        !! binary128, in hardware precision: `log_of_ratio`).
         pure real(real64) function form_of(upsilon)
             real(qp), intent(in) :: upsilon
             select case (prob%form)
             case (1)
-                form_of = real(log(upsilon/prob%psi), real64)
+                form_of = real(log_of_ratio(upsilon/prob%psi), real64)
             case (2)
-                form_of = real(log((prob%limit - upsilon)/(prob%limit - prob%psi)), real64)
+                form_of = real(log_of_ratio((prob%limit - upsilon)/(prob%limit - prob%psi)), &
+                               real64)
             case default
                 form_of = real(upsilon - prob%psi, real64)
             end select

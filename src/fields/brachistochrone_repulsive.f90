@@ -80,7 +80,10 @@
 !! (R - rho below 1e-4 of 3 - 2 rho and rho - 1) the unknown is u = sqrt(R - rho)
 !! instead: theta is linear in u there (theta = Theta(rho, rho) -+ 2 A u, A =
 !! sqrt((rho - 1)/(rho (3 - 2 rho)))), and the curve keeps R - rho = u^2 exactly
-!! (`r_gap`), which lambda would form by cancellation.
+!! (`r_gap`), which lambda would form by cancellation. On the second half-arch the
+!! values 2 F(R) - F(r) are taken as F(r) + 2 (F(R) - F(r)), the difference integrated
+!! on its own pieces (`complement_pieces`): no cancellation next to the apse, and
+!! fewer nodes than the whole half-arch.
 module brachistochrone_repulsive
     use brachistochrone_kinds, only: qp, pi, eps_qp, xp
     use brachistochrone_status, only: status_ok, status_psi_out_of_range, &
@@ -100,6 +103,7 @@ module brachistochrone_repulsive
             piece_below, piece_above, piece_far, piece_arch, piece_apse, piece_arch_start
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan, ieee_value, &
                                              ieee_positive_inf
+    use, intrinsic :: iso_fortran_env, only: real64
     implicit none
     private
 
@@ -122,10 +126,15 @@ module brachistochrone_repulsive
     !> Breakpoints of the unbounded integrals: start piece up to x = 5/4, far piece beyond 4.
     real(qp), parameter :: start_end = 1.25_qp, far_start = 4.0_qp
     integer, parameter :: max_steps = 300
-    !> The sinh maps reach `stretch` widths from the near-double root; they are taken in
+    !> The apse's sinh map reaches `stretch` widths from the near-double root, in
     !! t = tanh(xi/2), where 1 - t (rounded absolutely) stays above 1/9, so that a node
     !! costs a few eps at most
     real(qp), parameter :: stretch = 8.0_qp
+    !> The peak's sinh map (unbounded curves) reaches `peak_stretch` widths, in
+    !! t = tanh(xi/4) (h/sqrt(beta) = sinh(xi) = 4t (1 + t^2)/(1 - t^2)^2): its poles
+    !! t = +-1 stay twice as far (in xi) from the piece as in tanh(xi/2), so a piece
+    !! needs about half the nodes, and 1 - t stays above 1/6
+    real(qp), parameter :: peak_stretch = 32.0_qp
     !> sin(nu/2) where the apse's sinh map hands over to the nu map (the map's own
     !! singularity is at sin(nu/2) = 1: at 1/2 its rule needs a third fewer nodes)
     real(qp), parameter :: apse_split = 0.5_qp
@@ -136,6 +145,10 @@ module brachistochrone_repulsive
     !> Added to arch_first, arch_second: the solver's unknown is u = sqrt(R - rho) (next
     !! to the apse, where R - rho would be formed by cancellation from lambda)
     integer, parameter :: near_apse = 100
+    !> More digits asked of the panels of F(R) - F(r) on the second half-arch when they
+    !! end at r (counted twice; at 35 digits measured up to 7 eps off mpmath at R - 1 =
+    !! 1e-20); none for a complete arch (r = 1: the difference is F(R) itself)
+    real(real64), parameter :: complement_digits = 2.0_real64
 
     !> One brachistochrone from A, by its parameter. Build it with a `curve_from_*`.
     type :: repulsive_curve
@@ -415,6 +428,10 @@ contains
                 r_gap = curve%apse_m1 - (r - 1.0_qp)
             end if
             r_gap = max(r_gap, 0.0_qp)
+            if (rough .and. range(1.0_xp) >= range(1.0_qp)) then
+                call bounded_pieces_xp(curve, r, r_gap, pieces, n)
+                return
+            end if
             ! nu from nu_r to pi (x from r down to 1), in v = tan(nu/4) from v_r to 1;
             ! within `stretch` widths sqrt(d) of the apse (and nu < pi/3) the sinh map
             ! sin(nu/2) = c sinh(xi), c = sqrt(d/(R-1)), in w = tanh(xi/2), split where
@@ -482,8 +499,37 @@ contains
             end if
         end function ht
 
+        !> `quarter_tanh` in hardware precision (`on_map` then refines it when not
+        !! rough), or in binary128 where the hardware's exponent range is smaller.
+        elemental function qt(s) result(t)
+            real(qp), intent(in) :: s
+            real(qp) :: t
+            real(xp) :: sx, ch
+            if (range(1.0_xp) >= range(1.0_qp)) then
+                sx = real(s, xp)
+                ch = sqrt(0.5_xp*(1.0_xp + sqrt(1.0_xp + sx*sx)))
+                t = real(0.5_xp*sx/(ch*(1.0_xp + ch)), qp)
+            else
+                t = quarter_tanh(s)
+            end if
+        end function qt
+
+        !> t moved (one Newton step) so that the map's h = sqrt(beta) 4t (1 + t^2)/(1 -
+        !! t^2)^2, formed as the integrands form it, is h to a few roundings: an error
+        !! of t itself would move h by up to 8 times more (not when rough).
+        elemental function on_map(t, h, width) result(t_new)
+            real(qp), intent(in) :: t, h, width
+            real(qp) :: t_new, inv, h_t, slope
+            t_new = t
+            if (rough .or. .not. t > 0.0_qp) return
+            inv = 1.0_qp/((1.0_qp - t)*(1.0_qp + t))
+            h_t = (4.0_qp*width)*(t*(1.0_qp + t*t))*(inv*inv)
+            slope = h_t*(1.0_qp/t + 2.0_qp*t/(1.0_qp + t*t) + 4.0_qp*t*inv)
+            t_new = t - (h_t - h)/slope
+        end function on_map
+
         !> h from h_lo to h_hi (distance to the peak at a): in the sinh map
-        !! h = sqrt(beta) sinh(xi), in t = tanh(xi/2), up to `stretch` widths
+        !! h = sqrt(beta) sinh(xi), in t = tanh(xi/4), up to `peak_stretch` widths
         !! sqrt(beta), plain h beyond.
         pure subroutine peak_pieces(pieces, n, kind, h_lo, h_hi)
             type(panel_piece), intent(inout) :: pieces(:)
@@ -493,16 +539,69 @@ contains
             real(qp) :: width, h_mid
             if (.not. (h_hi > h_lo)) return
             width = rt(curve%width2)
-            if (curve%width2 > 0.0_qp .and. h_lo < stretch*width) then
-                h_mid = width*stretch
-                call add(pieces, n, kind, .true., ht(h_lo/width), &
-                         ht(min(h_hi/width, stretch)))
+            if (curve%width2 > 0.0_qp .and. h_lo < peak_stretch*width) then
+                h_mid = width*peak_stretch
+                call add(pieces, n, kind, .true., &
+                         on_map(qt(real(real(h_lo, xp)/real(width, xp), qp)), h_lo, width), &
+                         on_map(qt(min(real(real(h_hi, xp)/real(width, xp), qp), &
+                                       peak_stretch)), min(h_hi, h_mid), width))
                 if (h_hi > h_mid) call add(pieces, n, kind, .false., h_mid, h_hi)
             else
                 call add(pieces, n, kind, .false., h_lo, h_hi)
             end if
         end subroutine peak_pieces
     end subroutine plan_pieces
+
+    !> The pieces of `plan_pieces` on a bounded curve (R - r = r_gap given) for the
+    !! hardware-precision integrals: every end in hardware precision (about 1e-19),
+    !! from the curve's numbers rounded once.
+    pure subroutine bounded_pieces_xp(curve, r, r_gap, pieces, n)
+        type(repulsive_curve), intent(in) :: curve
+        real(qp), intent(in) :: r, r_gap
+        type(panel_piece), intent(inout) :: pieces(max_pieces)
+        integer, intent(inout) :: n
+        real(xp) :: gap, rm1, d, c, s_mid, sin_mid, v_mid, v_r, big, r_m1
+        gap = real(r_gap, xp)
+        rm1 = real(curve%apse_m1, xp)
+        d = real(curve%split, xp)
+        r_m1 = real(r - 1.0_qp, xp)
+        c = sqrt(d/rm1)
+        s_mid = min(real(stretch, xp), real(apse_split, xp)/c)
+        sin_mid = min(c*s_mid, 1.0_xp)
+        v_mid = sin_mid/(1.0_xp + sqrt((1.0_xp - sin_mid)*(1.0_xp + sin_mid)))
+        big = 0.0_xp
+        v_r = 0.0_xp
+        if (gap > 0.0_xp) then
+            big = sqrt(gap + r_m1)
+            v_r = sqrt(gap)/(sqrt(r_m1) + big)
+        end if
+        if (v_r < v_mid) then
+            call add(pieces, n, piece_apse, .false., real(half_tanh_xp(sqrt(gap/d)), qp), &
+                     real(half_tanh_xp(s_mid), qp))
+            call add(pieces, n, piece_arch, .false., real(v_mid, qp), 1.0_qp)
+        else if (r_m1 < gap) then
+            call add(pieces, n, piece_arch_start, .false., 0.0_qp, &
+                     real(sqrt(r_m1)/(sqrt(gap) + big), qp))
+        else
+            call add(pieces, n, piece_arch, .false., real(v_r, qp), 1.0_qp)
+        end if
+    end subroutine bounded_pieces_xp
+
+    !> tanh(asinh(s)/2) in hardware precision, s >= 0.
+    elemental function half_tanh_xp(s) result(t)
+        real(xp), intent(in) :: s
+        real(xp) :: t
+        t = s/(1.0_xp + sqrt(1.0_xp + s*s))
+    end function half_tanh_xp
+
+    !> tanh(asinh(s)/4) = sinh(xi/2)/(1 + cosh(xi/2)), cosh(xi/2) = sqrt((1 + sqrt(1 +
+    !! s^2))/2), sinh(xi/2) = s/(2 cosh(xi/2)) (xi = asinh(s)), s >= 0: no cancellation.
+    elemental function quarter_tanh(s) result(t)
+        real(qp), intent(in) :: s
+        real(qp) :: t, ch
+        ch = root(0.5_qp*(1.0_qp + root(1.0_qp + s*s)))
+        t = 0.5_qp*s/(ch*(1.0_qp + ch))
+    end function quarter_tanh
 
     !> tanh(asinh(s)/2) = s/(1 + sqrt(1 + s^2)), s >= 0.
     elemental function half_tanh(s) result(t)
@@ -591,32 +690,37 @@ contains
         logical, intent(in) :: angle_only          !! theta in hardware precision only
         real(qp), intent(out) :: values(3)         !! theta, s, t (s, t: 0 if angle_only)
         integer, intent(out) :: status             !! status_ok or the reason
-        real(qp) :: apse(3)
-        integer :: stat
-        call one_end(r, values, status)
+        type(panel_piece) :: pieces(max_pieces), apse_pieces(max_pieces), &
+                             between(max_pieces)
+        type(panel_curve) :: c
+        real(qp) :: rest(3), span
+        integer :: stat, n, n_apse, n_between
+        c = panel_curve(bounded=curve%bounded, k=curve%k, p=curve%p, a=curve%centre, &
+                        beta=curve%width2, rm1=curve%apse_m1, d=curve%split)
+        call plan_pieces(curve, r, angle_only, pieces, n, c%span)
+        call integrate(pieces(1:n), 0.0_real64, values, status)
         if (second) then
-            call one_end(the_apse, apse, stat)
+            ! 2 F(R) - F(r) = F(r) + 2 (F(R) - F(r)), the difference on its own pieces
+            call plan_pieces(curve, the_apse, angle_only, apse_pieces, n_apse, span)
+            call complement_pieces(pieces(1:n), apse_pieces(1:n_apse), between, n_between)
+            call integrate(between(1:n_between), merge(complement_digits, 0.0_real64, &
+                           n > 0), rest, stat)
             call keep_first(status, stat)
-            values = 2.0_qp*apse - values
+            values = values + 2.0_qp*rest
         end if
     contains
-        pure subroutine one_end(radius, v, st)
-            real(qp), intent(in) :: radius
+        pure subroutine integrate(some, extra, v, st)
+            type(panel_piece), intent(in) :: some(:)
+            real(real64), intent(in) :: extra
             real(qp), intent(out) :: v(3)
             integer, intent(out) :: st
-            type(panel_piece) :: pieces(max_pieces)
-            type(panel_curve) :: c
-            integer :: n
             v = 0.0_qp
-            c = panel_curve(bounded=curve%bounded, k=curve%k, p=curve%p, a=curve%centre, &
-                            beta=curve%width2, rm1=curve%apse_m1, d=curve%split)
-            call plan_pieces(curve, radius, angle_only, pieces, n, c%span)
             if (angle_only) then
-                call panel_angle_xp(rules, c, pieces(1:n), v(1), st)
+                call panel_angle_xp(rules, c, some, v(1), st)
             else
-                call panel_integrals(rules, c, pieces(1:n), v, st)
+                call panel_integrals(rules, c, some, v, st, extra)
             end if
-        end subroutine one_end
+        end subroutine integrate
     end subroutine panel_values
 
     !> The critical brachistochrone K^2 = 27/8, Q = (x - 3/2)^2 (x + 3), in closed form
@@ -681,6 +785,29 @@ contains
         end if
     end subroutine curve_of_lambda
 
+    !> `curve_of_lambda` at x = x0 + dx from the curve at x0 (curve0, made by
+    !! `curve_of_lambda`), |dx| <= 1e-12: exp(x0 + dx) = exp(x0) (1 + dx + dx^2/2) to a
+    !! rounding, no binary128 exponential; next to the apse `curve_of_lambda` at x.
+    pure subroutine curve_after_step(arch, curve0, dx, x, curve, rho)
+        integer, intent(in) :: arch
+        type(repulsive_curve), intent(in) :: curve0
+        real(qp), intent(in) :: dx, x, rho
+        type(repulsive_curve), intent(out) :: curve
+        real(qp) :: step
+        if (arch > near_apse .or. .not. abs(dx) <= 1.0e-12_qp) then
+            call curve_of_lambda(arch, x, curve, rho)
+            return
+        end if
+        ! exp(x) = exp(x0) + exp(x0) expm1(dx), expm1(x) = expm1(x0) + exp(x0) expm1(dx)
+        step = dx*(1.0_qp + 0.5_qp*dx)
+        if (arch == arch_unbounded) then
+            call set_from_gap(curve0%gap + curve0%gap*step, curve)
+        else
+            call set_bounded(curve0%apse_m1 - 0.5_qp*(curve0%apse_gap*step), &
+                             curve0%apse_gap + curve0%apse_gap*step, curve)
+        end if
+    end subroutine curve_after_step
+
     !> The bounded curve with apse R = rho + r_gap, R - rho kept exactly.
     pure subroutine set_near_apse(rho, r_gap, curve)
         real(qp), intent(in) :: rho, r_gap
@@ -706,9 +833,35 @@ contains
             call set_from_gap_rough(e, curve)
         else
             ! expm1(x) = 2 sinh(x/2) exp(x/2), accurate as x -> 0
-            call set_bounded(real(-sinh(0.5_xp*x)*exp(0.5_xp*x), qp), real(e, qp), curve)
+            call set_bounded_rough(-sinh(0.5_xp*x)*exp(0.5_xp*x), e, curve)
         end if
     end subroutine rough_curve_of_lambda
+
+    !> `set_bounded` in hardware precision (R - 1 and 3 - 2R exact as given, the
+    !! curve's other numbers to about 1e-19), no binary128 square root or division.
+    pure subroutine set_bounded_rough(apse_m1, apse_gap, curve)
+        real(xp), intent(in) :: apse_m1, apse_gap
+        type(repulsive_curve), intent(out) :: curve
+        real(xp) :: big_r, s, split, k2
+        if (range(1.0_xp) < range(1.0_qp)) then
+            call set_bounded(real(apse_m1, qp), real(apse_gap, qp), curve)
+            return
+        end if
+        big_r = 1.0_xp + apse_m1
+        s = sqrt((big_r + 3.0_xp)/apse_m1)
+        split = 2.0_xp*big_r*apse_gap/(apse_m1*(s + 3.0_xp))
+        k2 = big_r**3/(2.0_xp*apse_m1)
+        curve%bounded = .true.
+        curve%apse_m1 = real(apse_m1, qp)
+        curve%apse = 1.0_qp + curve%apse_m1
+        curve%apse_gap = real(apse_gap, qp)
+        curve%split = real(split, qp)
+        curve%gap = real(-4.0_xp*apse_gap*apse_gap/(apse_m1*(s + 3.0_xp)* &
+                         (sqrt((big_r + 3.0_xp)*apse_m1) + 3.0_xp - big_r)), qp)
+        curve%p = real(2.0_xp*big_r + split, qp)
+        curve%k2 = real(k2, qp)
+        curve%k = real(sqrt(k2), qp)
+    end subroutine set_bounded_rough
 
     !> `set_from_gap` of an unbounded curve (g > 0) in hardware precision: the
     !! curve's numbers to about 1e-19 (g itself exact), no binary128 square root.
@@ -822,41 +975,91 @@ contains
 
     !> d theta/d lambda and d s/d lambda at radius r (second half-arch: 2 F(R) - F(r))
     !! on the curve of lambda, by the complex step in hardware precision (about 18
-    !! digits; `panel_slopes_xp`). status: status_ok or a failure.
-    pure subroutine lambda_slopes(arch, curve, r, rules, slopes, status)
+    !! digits; `panel_slopes_xp`), and theta, s, t there in binary128 on the same
+    !! pieces; on the second half-arch as F(r) + 2 (F(R) - F(r)), the difference
+    !! integrated on its own pieces (`complement_pieces`: no cancellation next to the
+    !! apse, and fewer nodes than F(R)). status, value_status: status_ok or a failure
+    !! of the slopes, of the values.
+    pure subroutine lambda_slopes(arch, curve, r, rules, slopes, status, values, &
+                                  value_status)
         integer, intent(in) :: arch
         type(repulsive_curve), intent(in) :: curve
         real(qp), intent(in) :: r
         type(panel_rules), intent(in) :: rules
-        real(qp), intent(out) :: slopes(2)
-        integer, intent(out) :: status
-        real(qp) :: apse(2)
-        integer :: stat
-        call one_end(r, slopes, status)
+        real(qp), intent(out) :: slopes(2), values(3)
+        integer, intent(out) :: status, value_status
+        real(qp) :: apse(2), rest(3)
+        type(panel_piece) :: pieces(max_pieces), apse_pieces(max_pieces), &
+                             between(max_pieces)
+        type(panel_curve) :: c
+        integer :: stat, n, n_apse, n_between
+        c = panel_curve(bounded=curve%bounded, k=curve%k, p=curve%p, a=curve%centre, &
+                        beta=curve%width2, rm1=curve%apse_m1, d=curve%split)
+        call one_end(r, c, slopes, status, pieces, n)
+        call panel_integrals(rules, c, pieces(1:n), values, value_status)
         if (mod(arch, near_apse) == arch_second) then
-            call one_end(the_apse, apse, stat)
+            call one_end(the_apse, c, apse, stat, apse_pieces, n_apse)
             call keep_first(status, stat)
             slopes = 2.0_qp*apse - slopes
+            call complement_pieces(pieces(1:n), apse_pieces(1:n_apse), between, n_between)
+            call panel_integrals(rules, c, between(1:n_between), rest, stat, &
+                                 merge(complement_digits, 0.0_real64, n > 0))
+            call keep_first(value_status, stat)
+            values = values + 2.0_qp*rest
         end if
     contains
-        pure subroutine one_end(radius, v, st)
+        pure subroutine one_end(radius, c, v, st, pieces, n)
             real(qp), intent(in) :: radius
+            type(panel_curve), intent(inout) :: c
             real(qp), intent(out) :: v(2)
             integer, intent(out) :: st
+            type(panel_piece), intent(out) :: pieces(max_pieces)
+            integer, intent(out) :: n
             real(xp), parameter :: h = 1.0e-40_xp
-            type(panel_piece) :: pieces(max_pieces)
-            type(panel_curve) :: c
             complex(xp) :: cc(7), lower_c(max_pieces), upper_c(max_pieces)
-            integer :: n
             v = 0.0_qp
-            c = panel_curve(bounded=curve%bounded, k=curve%k, p=curve%p, a=curve%centre, &
-                            beta=curve%width2, rm1=curve%apse_m1, d=curve%split)
             call plan_pieces(curve, radius, .false., pieces, n, c%span)
             call complex_step(curve, radius, h, c%span, pieces(1:n), cc, lower_c, upper_c)
             call panel_slopes_xp(rules, c, pieces(1:n), lower_c(1:n), upper_c(1:n), cc, h, &
                                  v, st)
         end subroutine one_end
     end subroutine lambda_slopes
+
+    !> The pieces of F(R) - F(r) on a bounded curve (apse R, 1 <= r <= R) from those of
+    !! F(r) and of F(R) (`plan_pieces`): the apse's sinh map from the apse to r's end
+    !! when r's first piece is in it, else the sinh map's whole piece and the nu map
+    !! from its end to r (v_r = tan(nu_r/4) = (1 - m)/(1 + m) from r's piece in
+    !! m = tan(mu_r/4), mu = pi - nu, next to the start).
+    pure subroutine complement_pieces(pieces_r, pieces_apse, between, n)
+        type(panel_piece), intent(in) :: pieces_r(:), pieces_apse(:)
+        type(panel_piece), intent(out) :: between(max_pieces)
+        integer, intent(out) :: n
+        real(qp) :: v_r
+        integer :: i
+        n = 0
+        if (size(pieces_r) == 0) then
+            between(1:size(pieces_apse)) = pieces_apse
+            n = size(pieces_apse)
+            return
+        end if
+        if (pieces_r(1)%kind == piece_apse) then
+            call add(between, n, piece_apse, .false., 0.0_qp, pieces_r(1)%lower)
+            return
+        end if
+        if (pieces_r(1)%kind == piece_arch_start) then
+            v_r = (1.0_qp - pieces_r(1)%upper)/(1.0_qp + pieces_r(1)%upper)
+        else
+            v_r = pieces_r(1)%lower
+        end if
+        do i = 1, size(pieces_apse)
+            if (pieces_apse(i)%kind == piece_apse) then
+                call add(between, n, piece_apse, .false., pieces_apse(i)%lower, &
+                         pieces_apse(i)%upper)
+            else if (pieces_apse(i)%kind == piece_arch) then
+                call add(between, n, piece_arch, .false., pieces_apse(i)%lower, v_r)
+            end if
+        end do
+    end subroutine complement_pieces
 
     !> The curve's numbers [K, P, a, beta, span, R - 1, d] and the ends of its pieces
     !! (`plan_pieces`) at radius r as complex hardware numbers x + i h dx/dlambda, the
@@ -973,12 +1176,12 @@ contains
                 h_hi = real_part(-a, (min(r, far_start) - 1.5_qp) + ac)
             end if
             if (stretched) then
-                lower = half_tanh_c(h_lo/width)
+                lower = quarter_tanh_c(h_lo/width)
                 upper = h_hi/width
-                if (real(upper) > real(stretch, xp)) upper = real(stretch, xp)
-                upper = half_tanh_c(upper)
+                if (real(upper) > real(peak_stretch, xp)) upper = real(peak_stretch, xp)
+                upper = quarter_tanh_c(upper)
             else if (after_stretched) then
-                lower = width*real(stretch, xp)
+                lower = width*real(peak_stretch, xp)
                 upper = h_hi
             else
                 lower = h_lo
@@ -994,6 +1197,14 @@ contains
         complex(xp) :: w
         w = cmplx(real(x, xp), aimag(z), xp)
     end function real_part
+
+    !> `quarter_tanh` in complex hardware precision.
+    elemental function quarter_tanh_c(s) result(t)
+        complex(xp), intent(in) :: s
+        complex(xp) :: t, ch
+        ch = sqrt(0.5_xp*(1.0_xp + sqrt(1.0_xp + s*s)))
+        t = 0.5_xp*s/(ch*(1.0_xp + ch))
+    end function quarter_tanh_c
 
     !> tanh(asinh(s)/2) = s/(1 + sqrt(1 + s^2)) in complex hardware precision.
     elemental function half_tanh_c(s) result(t)
@@ -1095,10 +1306,8 @@ contains
         if (any(stat /= status_ok)) return
         ! one binary128 evaluation, the Newton step on the complex-step slopes
         call curve_of_lambda(arch, x0, curve, rho)
-        call panel_values(curve, rho, mod(arch, near_apse) == arch_second, rules, .false., &
-                          v0, stat(1))
+        call lambda_slopes(arch, curve, rho, rules, slopes, stat(2), v0, stat(1))
         f0 = v0(1) - target
-        call lambda_slopes(arch, curve, rho, rules, slopes, stat(2))
         if (any(stat /= status_ok)) return
         steps = steps + 1
         ! the error of x that moves theta, s or t by a rounding (next to the apse, where
@@ -1112,10 +1321,10 @@ contains
             x = x0 + dx
             if (x > lo .and. x < hi .and. 1.0e-17_qp*abs(dx) + curvature*dx*dx <= &
                 2.0_qp*eps_qp*scale) then
+                call curve_after_step(arch, curve, dx, x, solution%curve, rho)
                 ! (K at the midpoint to 1e-19 is ample: it multiplies f0, below 1e-16)
                 call rough_curve_of_lambda(arch, x0 + 0.5_qp*dx, curve, rho)
                 conserved = curve%k
-                call curve_of_lambda(arch, x, solution%curve, rho)
                 solution%arch = mod(arch, near_apse)
                 solution%angle = v0(1) + slopes(1)*dx
                 solution%arclength = v0(2) + slopes(2)*dx

@@ -14,15 +14,22 @@
 !! at one end this makes a geometric mesh. More than `max_panels` panels for one integral
 !! is a failure (the caller then integrates adaptively).
 !!
-!! Two precisions: all three integrals (theta, s, t) in binary128 aiming at 36 digits,
-!! and theta alone in the widest hardware precision (`xp`, x87 extended where there is
-!! one) aiming at 20 digits, for the root finder's early phase.
+!! Two precisions: all three integrals (theta, s, t) in binary128 aiming at 35 digits
+!! (37 on the peak's sinh map), and theta alone in the widest hardware precision (`xp`,
+!! x87 extended where there is one) aiming at 20 digits, for the root finder's early
+!! phase. The binary128 loop (`panel_sums`, one piece kind at a time) forms each node's
+!! geometry in binary128 and, in parallel, in `xp` for the seeds of its two inverse
+!! square roots, each then one Newton step (`refine`: three products, one difference;
+!! no binary128 number converted per node); the pieces' constant factors are applied
+!! once per piece (`piece_factors`). The hardware-precision loops likewise take the
+!! curve's square roots and constants out of the node loop (`angle_sum_xp`,
+!! `slopes_sum_c`).
 module brachistochrone_repulsive_panels
-    use brachistochrone_kinds, only: qp, pi, xp
+    use brachistochrone_kinds, only: qp, xp
     use brachistochrone_status, only: status_ok, status_no_convergence
     use brachistochrone_quadrature, only: gauss_legendre_rule, gauss_legendre
-    use brachistochrone_fast_math, only: inverse_sqrt
-    use, intrinsic :: iso_fortran_env, only: real64
+    use brachistochrone_fast_math, only: inverse_sqrt, hardware_real
+    use, intrinsic :: iso_fortran_env, only: real64, int64
     implicit none
     private
 
@@ -45,6 +52,10 @@ module brachistochrone_repulsive_panels
     integer, parameter :: max_nodes = 48, max_panels = 64
     !> Digits aimed at: binary128 (with a margin over 34) and the hardware phase.
     real(real64), parameter :: quad_digits = 35.0_real64, hardware_digits = 20.5_real64
+    !> More digits asked of the peak's sinh map in binary128 (its integrand grows
+    !! towards the map's poles t = +-1 near the Bernstein ellipse: measured against
+    !! the mpmath references, 35 digits left up to 6 eps)
+    real(real64), parameter :: stretched_extra = 2.0_real64
     !> Digits aimed at by the complex-step slopes (used only through a step below 1e-17 of
     !! lambda, so 1e-17 of relative error would do; the hardware rounding is 1e-19)
     real(real64), parameter :: slope_digits = 19.0_real64
@@ -87,7 +98,22 @@ module brachistochrone_repulsive_panels
         !> the start piece's constant factors of theta, s, t: 2 sqrt2 K span^(3/2),
         !! 2 span, sqrt(2 span)
         real(qp) :: start_factor(3) = 0.0_qp
+        !> `panel_sums`: 4 sqrt(beta), 2 sqrt(d/(R-1)), 4 (R - 1)
+        real(qp) :: root_beta4 = 0.0_qp, root_ratio2 = 0.0_qp, rm1_4 = 0.0_qp
+        !> hardware copies for the seeds of `panel_sums`
+        real(xp) :: p_x = 0.0_xp, a_x = 0.0_xp, beta_x = 0.0_xp, span_x = 0.0_xp, &
+                    a_m1_x = 0.0_xp, rm1_x = 0.0_xp, d_x = 0.0_xp, root_beta4_x = 0.0_xp, &
+                    root_ratio2_x = 0.0_xp, rm1_4_x = 0.0_xp
     end type prepared_curve
+
+    !> The seeds' conversion on the bits (`quad_real`) where `xp` is x87 extended.
+    integer(int64), parameter :: quad_bits(2) = transfer(1.5_qp, [0_int64, 0_int64])
+    integer(int64), parameter :: extended_bits(2) = transfer(1.5_xp, [0_int64, 0_int64])
+    logical, parameter :: x87_layout = xp /= real64 .and. digits(1.0_xp) == 64 .and. &
+        storage_size(1.0_xp) == 128 .and. quad_bits(1) == 0_int64 .and. &
+        quad_bits(2) == ishft(int(z'3FFF8', int64), 44) .and. &
+        extended_bits(1) == ishft(3_int64, 62) .and. &
+        iand(extended_bits(2), int(z'FFFF', int64)) == int(z'3FFF', int64)
 
 contains
 
@@ -108,6 +134,19 @@ contains
             pc%inverse_root_rm1 = 1.0_qp/pc%root_rm1
             pc%root_ratio = sqrt(c%d/c%rm1)
         end if
+        pc%root_beta4 = 4.0_qp*pc%root_beta
+        pc%root_ratio2 = 2.0_qp*pc%root_ratio
+        pc%rm1_4 = 4.0_qp*c%rm1
+        pc%p_x = real(c%p, xp)
+        pc%a_x = real(c%a, xp)
+        pc%beta_x = real(c%beta, xp)
+        pc%span_x = real(c%span, xp)
+        pc%a_m1_x = real(pc%a_m1, xp)
+        pc%rm1_x = real(c%rm1, xp)
+        pc%d_x = real(c%d, xp)
+        pc%root_beta4_x = real(pc%root_beta4, xp)
+        pc%root_ratio2_x = real(pc%root_ratio2, xp)
+        pc%rm1_4_x = real(pc%rm1_4, xp)
     end function prepare
 
     !> The rules of the ladder (about a millisecond: build once, share).
@@ -127,33 +166,35 @@ contains
 
     !> theta, s, t (values(1:3)) over the pieces, in binary128. status: status_ok, or
     !! status_no_convergence when a piece needs more than `max_panels` panels.
-    pure subroutine panel_integrals(rules, curve, pieces, values, status)
+    pure subroutine panel_integrals(rules, curve, pieces, values, status, extra_digits)
         type(panel_rules), intent(in) :: rules
         type(panel_curve), intent(in) :: curve
         type(panel_piece), intent(in) :: pieces(:)
         real(qp), intent(out) :: values(3)
         integer, intent(out) :: status
-        real(qp) :: lo(max_panels), hi(max_panels), width, y(3), sums(3)
+        !> digits asked beyond `quad_digits` (default 0)
+        real(real64), intent(in), optional :: extra_digits
+        real(qp) :: lo(max_panels), hi(max_panels), sums(3), piece_sums(3)
+        real(real64) :: digits
         type(prepared_curve) :: pc
-        integer :: which(max_panels), count, i, j, m
+        integer :: which(max_panels), count, i, j
         values = 0.0_qp
         status = status_ok
         pc = prepare(curve)
+        digits = quad_digits
+        if (present(extra_digits)) digits = digits + extra_digits
         do i = 1, size(pieces)
-            call plan_panels(curve, pieces(i), quad_digits, lo, hi, which, count, status)
+            call plan_panels(curve, pieces(i), digits + merge(stretched_extra, &
+                             0.0_real64, pieces(i)%stretched), lo, hi, which, count, status)
             if (status /= status_ok) return
+            piece_sums = 0.0_qp
             do j = 1, count
-                width = hi(j) - lo(j)
-                sums = 0.0_qp
-                associate (r => rules%rule(which(j)))
-                    do m = 1, r%n
-                        call weighted_integrands(pc, pieces(i)%kind, pieces(i)%stretched, &
-                                                 lo(j) + width*r%node(m), r%weight(m), y)
-                        sums = sums + y
-                    end do
-                end associate
-                values = values + width*sums
+                call panel_sums(pc, rules%rule(which(j)), pieces(i)%kind, &
+                                pieces(i)%stretched, lo(j), hi(j), sums)
+                piece_sums = piece_sums + sums
             end do
+            values = values + piece_factors(pc, pieces(i)%kind, pieces(i)%stretched)* &
+                     piece_sums
         end do
     end subroutine panel_integrals
 
@@ -165,34 +206,40 @@ contains
         type(panel_piece), intent(in) :: pieces(:)
         real(qp), intent(out) :: value
         integer, intent(out) :: status
-        real(xp) :: lo(max_panels), hi(max_panels), c(7), width, start, total, sum
-        integer :: which(max_panels), count, i, j, m
+        real(xp) :: lo(max_panels), hi(max_panels), c(7), total, piece_total, factor
+        integer :: which(max_panels), count, i, j
         value = 0.0_qp
         status = status_ok
-        c = real([curve%k, curve%p, curve%a, curve%beta, curve%span, curve%rm1, curve%d], xp)
+        c = hardware_real([curve%k, curve%p, curve%a, curve%beta, curve%span, curve%rm1, curve%d])
         total = 0.0_xp
         do i = 1, size(pieces)
             call plan_panels_xp(curve, pieces(i), hardware_digits, lo, hi, which, count, status)
             if (status /= status_ok) return
+            piece_total = 0.0_xp
             do j = 1, count
-                start = lo(j)
-                width = hi(j) - lo(j)
-                sum = 0.0_xp
-                associate (r => rules%rule(which(j)))
-                    do m = 1, r%n
-                        sum = sum + r%weight_xp(m)*angle_xp(c, pieces(i)%kind, &
-                                  pieces(i)%stretched, start + width*r%node_xp(m))
-                    end do
-                end associate
-                total = total + width*sum
+                piece_total = piece_total + angle_sum_xp(c, pieces(i)%kind, &
+                    pieces(i)%stretched, lo(j), hi(j) - lo(j), rules%rule(which(j)))
             end do
+            select case (pieces(i)%kind)
+            case (piece_start)
+                factor = 2.0_xp*c(5)*sqrt(c(5))
+            case (piece_below, piece_above)
+                factor = merge(4.0_xp, 1.0_xp, pieces(i)%stretched)
+            case (piece_far)
+                factor = 1.0_xp
+            case (piece_apse)
+                factor = 4.0_xp*sqrt(c(6))
+            case default
+                factor = 4.0_xp
+            end select
+            total = total + factor*piece_total
         end do
-        value = real(total, qp)
+        value = real(c(1)*sqrt(2.0_xp)*total, qp)
     end subroutine panel_angle_xp
 
     !> The derivatives of theta and s over the pieces with respect to the solver's
     !! unknown, by the complex step in hardware precision: the curve's numbers `cc`
-    !! (order of `angle_xp`'s c) and the pieces' ends `lower_c`, `upper_c` carry
+    !! (order of `slopes_sum_c`'s c) and the pieces' ends `lower_c`, `upper_c` carry
     !! h d/dlambda in their imaginary parts; the panels and rules are those of the real
     !! pieces, their ends moved with the pieces'. slopes = Im(theta, s)/h, to about the
     !! hardware precision (no cancellation). status as for `panel_integrals`.
@@ -206,8 +253,8 @@ contains
         real(qp), intent(out) :: slopes(2)
         integer, intent(out) :: status
         real(qp) :: lo(max_panels), hi(max_panels), length
-        complex(xp) :: a, b, width, total(2), sum(2)
-        integer :: which(max_panels), count, i, j, m
+        complex(xp) :: a, b, total(2), sum(2)
+        integer :: which(max_panels), count, i, j
         slopes = 0.0_qp
         status = status_ok
         total = (0.0_xp, 0.0_xp)
@@ -215,21 +262,16 @@ contains
             call plan_panels(curve, pieces(i), slope_digits, lo, hi, which, count, status)
             if (status /= status_ok) return
             length = pieces(i)%upper - pieces(i)%lower
+            sum = (0.0_xp, 0.0_xp)
             do j = 1, count
                 a = lower_c(i) + real((lo(j) - pieces(i)%lower)/length, xp)* &
                     (upper_c(i) - lower_c(i))
                 b = lower_c(i) + real((hi(j) - pieces(i)%lower)/length, xp)* &
                     (upper_c(i) - lower_c(i))
-                width = b - a
-                sum = (0.0_xp, 0.0_xp)
-                associate (r => rules%rule(which(j)))
-                    do m = 1, r%n
-                        sum = sum + r%weight_xp(m)*angle_length_c(cc, pieces(i)%kind, &
-                                  pieces(i)%stretched, a + width*r%node_xp(m))
-                    end do
-                end associate
-                total = total + width*sum
+                sum = sum + slopes_sum_c(cc, pieces(i)%kind, pieces(i)%stretched, a, b - a, &
+                                         rules%rule(which(j)))
             end do
+            total = total + slope_factors(cc, pieces(i)%kind, pieces(i)%stretched)*sum
         end do
         slopes = real(aimag(total)/h, qp)
     end subroutine panel_slopes_xp
@@ -248,52 +290,98 @@ contains
         r = r*(1.5_qp - scale(x, -1)*(r*r))
     end function rsqrt
 
-    !> theta's and s's integrands in complex hardware precision (the maps of
-    !! `integrands`); c = [K, P, a, beta, span, R - 1, d].
-    pure function angle_length_c(c, kind, stretched, v) result(y)
-        complex(xp), intent(in) :: c(7)
+    !> The weighted sums of theta's and s's integrands over one panel [a, a + width] in
+    !! complex hardware precision (the maps of `integrands`), without the piece's
+    !! constant factors (`slope_factors`); c = [K, P, a, beta, span, R - 1, d].
+    pure function slopes_sum_c(c, kind, stretched, a, width, r) result(total)
+        complex(xp), intent(in) :: c(7), a, width
         integer, intent(in) :: kind
         logical, intent(in) :: stretched
-        complex(xp), intent(in) :: v
-        complex(xp) :: y(2)
-        real(xp), parameter :: root2 = sqrt(2.0_xp)
-        complex(xp) :: point, xm1, h, jac, sn, cs, inv, one_minus, rq
+        type(panel_rule), intent(in) :: r
+        complex(xp) :: total(2)
+        if (kind == piece_apse .or. kind == piece_arch .or. kind == piece_arch_start) then
+            total = slopes_sum_c_arch(c, kind, a, width, r)
+        else
+            total = slopes_sum_c_open(c, kind, stretched, a, width, r)
+        end if
+    end function slopes_sum_c
+
+    !> `slopes_sum_c` on the unbounded curves' pieces.
+    pure function slopes_sum_c_open(c, kind, stretched, a, width, r) result(total)
+        complex(xp), intent(in) :: c(7), a, width
+        integer, intent(in) :: kind
+        logical, intent(in) :: stretched
+        type(panel_rule), intent(in) :: r
+        complex(xp) :: total(2)
+        complex(xp) :: v, x, xm1, h, inv, rq, sum(2), root_beta4, am1, z
+        integer :: m
+        sum = (0.0_xp, 0.0_xp)
         select case (kind)
         case (piece_start)
-            xm1 = c(5)*v*v
-            point = 1.0_xp + xm1
-            rq = 1.0_xp/sqrt((point + c(2))*((point - c(3))**2 + c(4)))
-            y(1) = c(1)*root2*2.0_xp*c(5)*sqrt(c(5))*v*v/point*rq
-            y(2) = 2.0_xp*c(5)*v*point*sqrt(point)*rq
+            do m = 1, r%n
+                v = a + width*r%node_xp(m)
+                x = 1.0_xp + c(5)*(v*v)
+                rq = r%weight_xp(m)/dual_sqrt((x + c(2))*((x - c(3))**2 + c(4)))
+                sum(1) = sum(1) + (v*v)*rq/x
+                sum(2) = sum(2) + v*x*dual_sqrt(x)*rq
+            end do
         case (piece_below, piece_above)
-            if (stretched) then
-                one_minus = (1.0_xp - v)*(1.0_xp + v)
-                h = sqrt(c(4))*2.0_xp*v/one_minus
-                jac = 2.0_xp/one_minus
-            else
-                h = v
-                jac = 1.0_xp/sqrt(h*h + c(4))
-            end if
-            if (kind == piece_below) h = -h
-            point = c(3) + h
-            xm1 = (c(3) - 1.0_xp) + h
-            rq = jac/sqrt(point + c(2))
-            y(1) = c(1)*root2*sqrt(xm1)/point*rq
-            y(2) = point*sqrt(point)*rq
+            root_beta4 = 4.0_xp*dual_sqrt(c(4))
+            am1 = c(3) - 1.0_xp
+            do m = 1, r%n
+                v = a + width*r%node_xp(m)
+                if (stretched) then
+                    inv = 1.0_xp/((1.0_xp - v)*(1.0_xp + v))
+                    h = root_beta4*(v*(1.0_xp + v*v))*(inv*inv)
+                    z = inv*inv
+                else
+                    h = v
+                    z = 1.0_xp/(v*v + c(4))
+                end if
+                if (kind == piece_below) h = -h
+                x = c(3) + h
+                xm1 = am1 + h
+                rq = r%weight_xp(m)*dual_sqrt(z/(x + c(2)))
+                sum(1) = sum(1) + dual_sqrt(xm1)*rq/x
+                sum(2) = sum(2) + x*dual_sqrt(x)*rq
+            end do
         case (piece_far)
-            point = 4.0_xp/v
-            rq = 4.0_xp/(v*v)/sqrt((point + c(2))*((point - c(3))**2 + c(4)))
-            y(1) = c(1)*root2*sqrt(point - 1.0_xp)/point*rq
-            y(2) = point*sqrt(point)*rq
+            do m = 1, r%n
+                v = a + width*r%node_xp(m)
+                x = 4.0_xp/v
+                rq = r%weight_xp(m)/((v*v)*dual_sqrt((x + c(2))*((x - c(3))**2 + c(4))))
+                sum(1) = sum(1) + dual_sqrt(x - 1.0_xp)*rq/x
+                sum(2) = sum(2) + x*dual_sqrt(x)*rq
+            end do
+        end select
+        total = width*sum
+    end function slopes_sum_c_open
+
+    !> `slopes_sum_c` on the bounded curves' pieces.
+    pure function slopes_sum_c_arch(c, kind, a, width, r) result(total)
+        complex(xp), intent(in) :: c(7), a, width
+        integer, intent(in) :: kind
+        type(panel_rule), intent(in) :: r
+        complex(xp) :: total(2)
+        complex(xp) :: v, x, xm1, h, inv, sn, cs, rq, sum(2), ratio2
+        integer :: m
+        sum = (0.0_xp, 0.0_xp)
+        select case (kind)
+        case (piece_apse)
+            ratio2 = 2.0_xp*dual_sqrt(c(7)/c(6))
+            do m = 1, r%n
+                v = a + width*r%node_xp(m)
+                inv = 1.0_xp/((1.0_xp - v)*(1.0_xp + v))
+                sn = ratio2*v*inv
+                cs = dual_sqrt((1.0_xp - sn)*(1.0_xp + sn))
+                x = 1.0_xp + c(6)*(cs*cs)
+                rq = r%weight_xp(m)*inv/dual_sqrt(x + c(2))
+                sum(1) = sum(1) + cs*rq/x
+                sum(2) = sum(2) + x*dual_sqrt(x)*rq
+            end do
         case default
-            if (kind == piece_apse) then
-                one_minus = (1.0_xp - v)*(1.0_xp + v)
-                sn = sqrt(c(7)/c(6))*2.0_xp*v/one_minus
-                cs = sqrt((1.0_xp - sn)*(1.0_xp + sn))
-                xm1 = c(6)*cs*cs
-                point = 1.0_xp + xm1
-                rq = 4.0_xp/(sqrt(c(6))*cs*one_minus)/sqrt(point + c(2))
-            else
+            do m = 1, r%n
+                v = a + width*r%node_xp(m)
                 inv = 1.0_xp/(1.0_xp + v*v)
                 sn = 2.0_xp*v*inv
                 cs = (1.0_xp - v)*(1.0_xp + v)*inv
@@ -302,14 +390,53 @@ contains
                     sn = cs
                     cs = h
                 end if
-                xm1 = c(6)*cs*cs
-                point = 1.0_xp + xm1
-                rq = 4.0_xp*inv/sqrt((c(7) + c(6)*sn*sn)*(point + c(2)))
-            end if
-            y(1) = c(1)*root2*xm1/point*rq
-            y(2) = point*sqrt(point)*(sqrt(c(6))*cs)*rq
+                xm1 = c(6)*(cs*cs)
+                x = 1.0_xp + xm1
+                rq = r%weight_xp(m)*inv/dual_sqrt((c(7) + c(6)*(sn*sn))*(x + c(2)))
+                sum(1) = sum(1) + xm1*rq/x
+                sum(2) = sum(2) + x*dual_sqrt(x)*cs*rq
+            end do
         end select
-    end function angle_length_c
+        total = width*sum
+    end function slopes_sum_c_arch
+
+    !> The constant factors of `slopes_sum_c`'s sums on a piece of this kind.
+    pure function slope_factors(c, kind, stretched) result(f)
+        complex(xp), intent(in) :: c(7)
+        integer, intent(in) :: kind
+        logical, intent(in) :: stretched
+        complex(xp) :: f(2)
+        complex(xp) :: k_root2
+        k_root2 = c(1)*sqrt(2.0_xp)
+        select case (kind)
+        case (piece_start)
+            f = [k_root2*2.0_xp*c(5)*dual_sqrt(c(5)), 2.0_xp*c(5)]
+        case (piece_below, piece_above)
+            f = [k_root2, (1.0_xp, 0.0_xp)]
+            if (stretched) f = 4.0_xp*f
+        case (piece_far)
+            f = [4.0_xp*k_root2, (4.0_xp, 0.0_xp)]
+        case (piece_apse)
+            f = [4.0_xp*k_root2*dual_sqrt(c(6)), (4.0_xp, 0.0_xp)]
+        case default
+            f = [4.0_xp*k_root2, 4.0_xp*dual_sqrt(c(6))]
+        end select
+    end function slope_factors
+
+    !> sqrt(z) for the complex step: z = x + i y with x > 0 and |y| far below x (y is
+    !! h = 1e-40 times a derivative), sqrt(x) + i y/(2 sqrt(x)), exact to first order
+    !! in y, as the complex step needs (libm's csqrtl at a fraction of its cost).
+    elemental function dual_sqrt(z) result(r)
+        complex(xp), intent(in) :: z
+        complex(xp) :: r
+        real(xp) :: root
+        root = sqrt(real(z))
+        if (root > 0.0_xp) then
+            r = cmplx(root, 0.5_xp*aimag(z)/root, xp)
+        else
+            r = sqrt(z)
+        end if
+    end function dual_sqrt
 
     !> The panels of one piece and the rule (index into the ladder) of each, aiming at
     !! `digits`: bisection until every panel's Bernstein ellipse allows the digits with
@@ -375,8 +502,8 @@ contains
         if (.not. (piece%upper > piece%lower)) return
         call singular_points(curve, piece, points, np)
         top = 1
-        stack_lo(1) = real(piece%lower, xp)
-        stack_hi(1) = real(piece%upper, xp)
+        stack_lo(1) = hardware_real(piece%lower)
+        stack_hi(1) = hardware_real(piece%upper)
         do while (top > 0)
             a = stack_lo(top)
             b = stack_hi(top)
@@ -443,13 +570,16 @@ contains
     end function nodes_for
 
     !> The singular points of the piece's integrands in its variable (double precision).
+    !! Every map's image of a real point is taken in real arithmetic: tanh(asinh(s)/2) =
+    !! s/(1 + sqrt(1 + s^2)) =: t, and tanh((i pi - asinh(s))/2) = -1/t; for the nu map,
+    !! tan(i asinh(s)/2) = i t and tan(pi/4 + i asinh(s)/2) = (1 + i t)/(1 - i t).
     pure subroutine singular_points(curve, piece, points, np)
         type(panel_curve), intent(in) :: curve
         type(panel_piece), intent(in) :: piece
         complex(real64), intent(out) :: points(16)
         integer, intent(out) :: np
-        complex(real64) :: x(4), c, i1
-        real(real64) :: a, p, w, rm1, d, s(3)
+        complex(real64) :: c, i1, z
+        real(real64) :: a, p, w, rm1, d, s(3), x(3), t, span
         integer :: k
         i1 = (0.0_real64, 1.0_real64)
         np = 0
@@ -458,34 +588,47 @@ contains
         if (.not. curve%bounded) then
             a = real(curve%a, real64)
             w = sqrt(real(curve%beta, real64))
-            ! the zeros of x Q(x)
-            x = [(0.0_real64, 0.0_real64), cmplx(-p, 0.0_real64, real64), a + i1*w, a - i1*w]
             select case (piece%kind)
             case (piece_start)
-                do k = 1, 4
-                    c = sqrt((x(k) - 1.0_real64)/real(curve%span, real64))
+                ! the zeros of x Q(x): 0, -P, a +- i w, at sigma = +-sqrt((x - 1)/span)
+                span = real(curve%span, real64)
+                do k = 1, 2
+                    c = i1*sqrt((merge(0.0_real64, p, k == 1) + 1.0_real64)/span)
                     call add(points, np, c)
                     call add(points, np, -c)
                 end do
+                c = sqrt(cmplx(a - 1.0_real64, w, real64)/span)
+                call add(points, np, c)
+                call add(points, np, -c)
+                call add(points, np, conjg(c))
+                call add(points, np, -conjg(c))
             case (piece_far)
                 call add(points, np, (0.0_real64, 0.0_real64))
                 call add(points, np, cmplx(4.0_real64, 0.0_real64, real64))
-                do k = 2, 4
-                    if (abs(x(k)) > 0.0_real64) call add(points, np, 4.0_real64/x(k))
-                end do
+                call add(points, np, cmplx(-4.0_real64/p, 0.0_real64, real64))
+                if (abs(cmplx(a, w, real64)) > 0.0_real64) then
+                    z = 4.0_real64/cmplx(a, w, real64)
+                    call add(points, np, z)
+                    call add(points, np, conjg(z))
+                end if
             case default
                 ! h = -+(x - a): the zeros 0, -P and x = 1 (sqrt(x - 1)); the pair at
                 ! h = +-i w is cancelled by the sinh map, else a singularity of the jacobian
-                x(4) = (1.0_real64, 0.0_real64)
-                do k = 1, 4
-                    if (k == 3) cycle
-                    c = merge(-1.0_real64, 1.0_real64, piece%kind == piece_below)*(x(k) - a)
+                x = [0.0_real64, -p, 1.0_real64]
+                do k = 1, 3
+                    t = merge(-1.0_real64, 1.0_real64, piece%kind == piece_below)*(x(k) - a)
                     if (piece%stretched) then
-                        c = asinh(c/w)
-                        call add(points, np, tanh(0.5_real64*c))
-                        call add(points, np, tanh(0.5_real64*(i1*pi_64() - c)))
+                        ! t = tanh(xi/4), xi = asinh(u) + 2 pi i m or i pi - asinh(u) +
+                        ! 2 pi i m: t, 1/t, z and conj(z), z = (i - t)/(1 - i t)
+                        t = quarter_tanh_64(t/w)
+                        call add(points, np, cmplx(t, 0.0_real64, real64))
+                        call add(points, np, cmplx(1.0_real64/t, 0.0_real64, real64))
+                        z = cmplx(-2.0_real64*t, (1.0_real64 - t)*(1.0_real64 + t), real64)/ &
+                            (1.0_real64 + t*t)
+                        call add(points, np, z)
+                        call add(points, np, conjg(z))
                     else
-                        call add(points, np, c)
+                        call add(points, np, cmplx(t, 0.0_real64, real64))
                     end if
                 end do
                 if (piece%stretched) then
@@ -504,12 +647,12 @@ contains
         if (piece%kind == piece_apse) then
             ! sin(nu/2) = sqrt(d/(R-1)) sinh(xi) = +-1; x + P = 0; x = 0
             s = [sqrt(rm1/d), sqrt((1.0_real64 + rm1 + p)/d), sqrt((1.0_real64 + rm1)/d)]
-            ! in w = tanh(xi/2); the map's poles w = +-1
+            ! in w = tanh(xi/2): +-t, -1/t; the map's poles w = +-1
             do k = 1, 3
-                c = asinh(cmplx(s(k), 0.0_real64, real64))
-                call add(points, np, tanh(0.5_real64*c))
-                call add(points, np, tanh(-0.5_real64*c))
-                call add(points, np, tanh(0.5_real64*(i1*pi_64() - c)))
+                t = half_tanh_64(s(k))
+                call add(points, np, cmplx(t, 0.0_real64, real64))
+                call add(points, np, cmplx(-t, 0.0_real64, real64))
+                call add(points, np, cmplx(-1.0_real64/t, 0.0_real64, real64))
             end do
             call add(points, np, (1.0_real64, 0.0_real64))
             call add(points, np, (-1.0_real64, 0.0_real64))
@@ -519,20 +662,52 @@ contains
         ! (-(1 + 2 (1 + P)/(R-1))): nu = 2i asinh(sqrt(d/(R-1))) and
         ! pi + 2i asinh(sqrt(1/(R-1))), pi + 2i asinh(sqrt((1 + P)/(R-1)))
         s = [sqrt(d/rm1), sqrt(1.0_real64/rm1), sqrt((1.0_real64 + p)/rm1)]
-        ! in v = tan(nu/4) (or tan(mu/4), mu = pi - nu); the map's poles v = +-i
+        ! in v = tan(nu/4) (or tan(mu/4), mu = pi - nu), each with nu + 2 pi k:
+        ! tan(nu/4) and -cot(nu/4); nu = 2i asinh(s) gives +-i t, +-i/t, and nu = pi +
+        ! 2i asinh(s) gives +-z, +-conj(z), z = (1 + i t)/(1 - i t) (mu = pi - nu swaps
+        ! the two forms); the map's poles v = +-i
         do k = 1, 3
-            c = 2.0_real64*i1*asinh(s(k))
-            if (k > 1) c = c + pi_64()
-            if (piece%kind == piece_arch_start) c = pi_64() - c
-            ! nu + 2 pi k: tan(nu/4) and -cot(nu/4)
-            call add(points, np, tan(0.25_real64*c))
-            call add(points, np, tan(-0.25_real64*c))
-            call add(points, np, -1.0_real64/tan(0.25_real64*c))
-            call add(points, np, 1.0_real64/tan(0.25_real64*c))
+            t = half_tanh_64(s(k))
+            if ((k == 1) .eqv. (piece%kind /= piece_arch_start)) then
+                call add(points, np, cmplx(0.0_real64, t, real64))
+                call add(points, np, cmplx(0.0_real64, -t, real64))
+                call add(points, np, cmplx(0.0_real64, 1.0_real64/t, real64))
+                call add(points, np, cmplx(0.0_real64, -1.0_real64/t, real64))
+            else
+                z = cmplx((1.0_real64 - t)*(1.0_real64 + t), 2.0_real64*t, real64)/ &
+                    (1.0_real64 + t*t)
+                call add(points, np, z)
+                call add(points, np, -z)
+                call add(points, np, conjg(z))
+                call add(points, np, -conjg(z))
+            end if
         end do
         call add(points, np, i1)
         call add(points, np, -i1)
     end subroutine singular_points
+
+    !> tanh(asinh(s)/4) (any real s, finite): sinh(xi/2)/(1 + cosh(xi/2)).
+    elemental function quarter_tanh_64(s) result(t)
+        real(real64), intent(in) :: s
+        real(real64) :: t, ch
+        if (abs(s) < 1.0e150_real64) then
+            ch = sqrt(0.5_real64*(1.0_real64 + sqrt(1.0_real64 + s*s)))
+            t = 0.5_real64*s/(ch*(1.0_real64 + ch))
+        else
+            t = sign(1.0_real64, s)
+        end if
+    end function quarter_tanh_64
+
+    !> tanh(asinh(s)/2) = s/(1 + sqrt(1 + s^2)) (any real s, finite).
+    elemental function half_tanh_64(s) result(t)
+        real(real64), intent(in) :: s
+        real(real64) :: t
+        if (abs(s) < 1.0e150_real64) then
+            t = s/(1.0_real64 + sqrt(1.0_real64 + s*s))
+        else
+            t = sign(1.0_real64, s)
+        end if
+    end function half_tanh_64
 
     !> |z| without hypot's care for overflow and underflow where neither can happen.
     elemental function modulus(z) result(m)
@@ -558,13 +733,10 @@ contains
         end if
     end subroutine add
 
-    pure real(real64) function pi_64()
-        pi_64 = real(pi, real64)
-    end function pi_64
-
     !> theta, s, t integrands (binary128) at the piece variable v; the formulas of
     !! `brachistochrone_repulsive` (see its notes), with the maps in rational form:
-    !! stretched h = sqrt(beta) 2t/(1 - t^2) (t = tanh(xi/2), dxi = 2 dt/(1 - t^2));
+    !! stretched h = sqrt(beta) 4t (1 + t^2)/(1 - t^2)^2 (t = tanh(xi/4), dxi = 4 dt/(1 -
+    !! t^2));
     !! bounded sin(nu/2) = 2v/(1 + v^2), cos(nu/2) = (1 - v^2)/(1 + v^2) (v = tan(nu/4),
     !! dnu = 4 dv/(1 + v^2); swapped for mu = pi - nu); apse sin(nu/2) = c 2w/(1 - w^2).
     !! No elementary function but square roots (`inverse_sqrt`, within 2 ulp).
@@ -603,10 +775,10 @@ contains
         case (piece_below, piece_above)
             if (stretched) then
                 one_minus = (1.0_qp - v)*(1.0_qp + v)
-                inv = 2.0_qp/one_minus
-                h = pc%root_beta*v*inv
+                inv = 1.0_qp/one_minus
+                h = pc%root_beta4*(v*(1.0_qp + v*v))*(inv*inv)
                 point = c%a + merge(-h, h, kind == piece_below)
-                rw = w*inv
+                rw = 4.0_qp*w*inv
                 q = point + c%p
             else
                 h = v
@@ -673,61 +845,376 @@ contains
         end associate
     end subroutine weighted_integrands
 
-    !> theta's integrand in hardware precision (the maps of `integrands`);
-    !! c = [K, P, a, beta, span, R - 1, d].
-    pure function angle_xp(c, kind, stretched, v) result(y)
-        real(xp), intent(in) :: c(7)
+    !> One panel [lo, hi] of a piece for `panel_integrals`: width times the weighted sum
+    !! of theta's, s's and t's integrands over the rule r, each integrand divided by its
+    !! constant factor (`piece_factors`). The node's geometry is formed in binary128 and,
+    !! in parallel, in hardware precision for the seeds of the inverse square roots
+    !! (`refine`: three products and a difference each), so that no binary128 number is
+    !! converted per node. One loop per piece kind.
+    pure subroutine panel_sums(pc, r, kind, stretched, lo, hi, sums)
+        type(prepared_curve), intent(in) :: pc
+        type(panel_rule), intent(in) :: r
         integer, intent(in) :: kind
         logical, intent(in) :: stretched
-        real(xp), intent(in) :: v
-        real(xp) :: y
-        real(xp), parameter :: root2 = sqrt(2.0_xp)
-        real(xp) :: point, xm1, h, jac, sn, cs, inv, one_minus
+        real(qp), intent(in) :: lo, hi
+        real(qp), intent(out) :: sums(3)
+        real(qp) :: width
+        real(xp) :: lo_x, width_x
+        width = hi - lo
+        lo_x = hardware_real(lo)
+        width_x = hardware_real(width)
         select case (kind)
         case (piece_start)
-            xm1 = c(5)*v*v
-            point = 1.0_xp + xm1
-            y = c(1)*root2*2.0_xp*c(5)*sqrt(c(5))*v*v/(point* &
-                sqrt((point + c(2))*((point - c(3))**2 + c(4))))
-        case (piece_below, piece_above)
-            if (stretched) then
-                one_minus = (1.0_xp - v)*(1.0_xp + v)
-                h = sqrt(c(4))*2.0_xp*v/one_minus
-                jac = 2.0_xp/one_minus
-            else
-                h = v
-                jac = 1.0_xp/sqrt(h*h + c(4))
-            end if
-            if (kind == piece_below) h = -h
-            point = c(3) + h
-            xm1 = (c(3) - 1.0_xp) + h
-            y = c(1)*root2*sqrt(xm1)/(point*sqrt(point + c(2)))*jac
-        case (piece_far)
-            point = 4.0_xp/v
-            y = c(1)*root2*sqrt(point - 1.0_xp)/(point* &
-                sqrt((point + c(2))*((point - c(3))**2 + c(4))))*4.0_xp/(v*v)
+            call start_sums(pc, r, lo, width, lo_x, width_x, sums)
+        case (piece_below, piece_above, piece_far)
+            call peak_sums(pc, r, kind, stretched, lo, width, lo_x, width_x, sums)
+        case (piece_apse)
+            call apse_sums(pc, r, lo, width, lo_x, width_x, sums)
         case default
-            if (kind == piece_apse) then
-                one_minus = (1.0_xp - v)*(1.0_xp + v)
-                sn = sqrt(c(7)/c(6))*2.0_xp*v/one_minus
-                cs = sqrt((1.0_xp - sn)*(1.0_xp + sn))
-                xm1 = c(6)*cs*cs
-                point = 1.0_xp + xm1
-                y = c(1)*root2*xm1/(point*sqrt(point + c(2)))*4.0_xp/(sqrt(c(6))*cs*one_minus)
-            else
-                inv = 1.0_xp/(1.0_xp + v*v)
-                sn = 2.0_xp*v*inv
-                cs = (1.0_xp - v)*(1.0_xp + v)*inv
-                if (kind == piece_arch_start) then
-                    h = sn
-                    sn = cs
-                    cs = h
-                end if
-                xm1 = c(6)*cs*cs
-                point = 1.0_xp + xm1
-                y = c(1)*root2*xm1/(point*sqrt((c(7) + c(6)*sn*sn)*(point + c(2))))*4.0_xp*inv
-            end if
+            call arch_sums(pc, r, kind, lo, width, lo_x, width_x, sums)
         end select
-    end function angle_xp
+        sums = width*sums
+    end subroutine panel_sums
+
+    !> `panel_sums` on the start piece (unbounded): x - 1 = span sigma^2.
+    pure subroutine start_sums(pc, r, lo, width, lo_x, width_x, sums)
+        type(prepared_curve), intent(in) :: pc
+        type(panel_rule), intent(in) :: r
+        real(qp), intent(in) :: lo, width
+        real(xp), intent(in) :: lo_x, width_x
+        real(qp), intent(out) :: sums(3)
+        real(qp) :: v, a, x, q, r1, r2, u
+        real(xp) :: vx, xx, qx
+        integer :: m
+        sums = 0.0_qp
+        do m = 1, r%n
+            v = lo + width*r%node(m)
+            vx = lo_x + width_x*r%node_xp(m)
+            a = v*v
+            x = 1.0_qp + pc%c%span*a
+            q = (x + pc%c%p)*((x - pc%c%a)**2 + pc%c%beta)
+            xx = 1.0_xp + pc%span_x*(vx*vx)
+            qx = (xx + pc%p_x)*((xx - pc%a_x)**2 + pc%beta_x)
+            r1 = r%weight(m)*refine(q, 1.0_xp/sqrt(qx))
+            r2 = refine(x, 1.0_xp/sqrt(xx))
+            u = (x*x)*r1
+            ! (r2^2 = 4/x: one division for two products)
+            sums(1) = sums(1) + (a*r1)/x
+            sums(2) = sums(2) + v*(u*r2)
+            sums(3) = sums(3) + u
+        end do
+    end subroutine start_sums
+
+    !> `panel_sums` on the unbounded curve's pieces beyond the start: below or above the
+    !! peak (h = -+(x - a), in the sinh map when stretched) and far out (x = 4/z).
+    pure subroutine peak_sums(pc, r, kind, stretched, lo, width, lo_x, width_x, sums)
+        type(prepared_curve), intent(in) :: pc
+        type(panel_rule), intent(in) :: r
+        integer, intent(in) :: kind
+        logical, intent(in) :: stretched
+        real(qp), intent(in) :: lo, width
+        real(xp), intent(in) :: lo_x, width_x
+        real(qp), intent(out) :: sums(3)
+        real(qp) :: v, w, x, xm1, q, h, inv, u, r1, r2, x2
+        real(xp) :: vx, xx, xm1x, qx, hx, invx
+        integer :: m
+        sums = 0.0_qp
+        do m = 1, r%n
+            v = lo + width*r%node(m)
+            vx = lo_x + width_x*r%node_xp(m)
+            if (kind == piece_far) then
+                x = far_start/v
+                xm1 = x - 1.0_qp
+                w = r%weight(m)*(x*x)
+                q = (x + pc%c%p)*((x - pc%c%a)**2 + pc%c%beta)
+                xx = 4.0_xp/vx
+                xm1x = xx - 1.0_xp
+                qx = (xx + pc%p_x)*((xx - pc%a_x)**2 + pc%beta_x)
+            else
+                if (stretched) then
+                    ! h = sqrt(beta) 4t (1 + t^2)/(1 - t^2)^2, dxi = 4 dt/(1 - t^2)
+                    inv = 1.0_qp/((1.0_qp - v)*(1.0_qp + v))
+                    h = pc%root_beta4*(v*(1.0_qp + v*v))*(inv*inv)
+                    w = r%weight(m)*inv
+                    invx = 1.0_xp/((1.0_xp - vx)*(1.0_xp + vx))
+                    hx = pc%root_beta4_x*(vx*(1.0_xp + vx*vx))*(invx*invx)
+                else
+                    h = v
+                    w = r%weight(m)
+                    hx = vx
+                end if
+                if (kind == piece_below) then
+                    h = -h
+                    hx = -hx
+                end if
+                x = pc%c%a + h
+                xm1 = pc%a_m1 + h
+                q = x + pc%c%p
+                xx = pc%a_x + hx
+                xm1x = pc%a_m1_x + hx
+                qx = xx + pc%p_x
+                if (.not. stretched) then
+                    q = (v*v + pc%c%beta)*q
+                    qx = (vx*vx + pc%beta_x)*qx
+                end if
+            end if
+            r1 = refine(q*xm1, 1.0_xp/sqrt(qx*xm1x))
+            r2 = refine(q*x, 1.0_xp/sqrt(qx*xx))
+            u = r1*w
+            x2 = x*x
+            sums(1) = sums(1) + (xm1*u)/x
+            sums(2) = sums(2) + x2*(r2*w)
+            sums(3) = sums(3) + x2*u
+        end do
+    end subroutine peak_sums
+
+    !> `panel_sums` on the apse's sinh map (bounded): sin(nu/2) = c 2w/(1 - w^2);
+    !! 1/sqrt((1 - sn^2) q) in place of 1/sqrt(q (x - 1)), x - 1 = rm1 (1 - sn^2).
+    pure subroutine apse_sums(pc, r, lo, width, lo_x, width_x, sums)
+        type(prepared_curve), intent(in) :: pc
+        type(panel_rule), intent(in) :: r
+        real(qp), intent(in) :: lo, width
+        real(xp), intent(in) :: lo_x, width_x
+        real(qp), intent(out) :: sums(3)
+        real(qp) :: v, w, x, q, inv, u, r1, r2, x2, a, b
+        real(xp) :: vx, xx, qx, invx, ax, bx
+        integer :: m
+        sums = 0.0_qp
+        do m = 1, r%n
+            v = lo + width*r%node(m)
+            vx = lo_x + width_x*r%node_xp(m)
+            inv = 1.0_qp/((1.0_qp - v)*(1.0_qp + v))
+            a = pc%root_ratio2*v*inv
+            b = (1.0_qp - a)*(1.0_qp + a)
+            x = 1.0_qp + pc%c%rm1*b
+            q = x + pc%c%p
+            w = r%weight(m)*inv
+            invx = 1.0_xp/((1.0_xp - vx)*(1.0_xp + vx))
+            ax = pc%root_ratio2_x*vx*invx
+            bx = (1.0_xp - ax)*(1.0_xp + ax)
+            xx = 1.0_xp + pc%rm1_x*bx
+            qx = xx + pc%p_x
+            r1 = refine(b*q, 1.0_xp/sqrt(bx*qx))
+            r2 = refine(x*q, 1.0_xp/sqrt(xx*qx))
+            u = r1*w
+            x2 = x*x
+            sums(1) = sums(1) + ((pc%c%rm1*b)*u)/x
+            sums(2) = sums(2) + x2*(r2*w)
+            sums(3) = sums(3) + x2*u
+        end do
+    end subroutine apse_sums
+
+    !> `panel_sums` on the nu map (bounded): v = tan(nu/4), or tan(mu/4), mu = pi - nu,
+    !! next to the start (piece_arch_start).
+    pure subroutine arch_sums(pc, r, kind, lo, width, lo_x, width_x, sums)
+        type(prepared_curve), intent(in) :: pc
+        type(panel_rule), intent(in) :: r
+        integer, intent(in) :: kind
+        real(qp), intent(in) :: lo, width
+        real(xp), intent(in) :: lo_x, width_x
+        real(qp), intent(out) :: sums(3)
+        real(qp) :: v, x, xm1, q, h, inv, u, r1, r2, x2, a, b
+        real(xp) :: vx, xx, xm1x, qx, invx, ax, bx
+        integer :: m
+        sums = 0.0_qp
+        do m = 1, r%n
+            v = lo + width*r%node(m)
+            vx = lo_x + width_x*r%node_xp(m)
+            inv = 1.0_qp/(1.0_qp + v*v)
+            a = v*inv
+            b = (1.0_qp - v)*(1.0_qp + v)*inv
+            invx = 1.0_xp/(1.0_xp + vx*vx)
+            ax = vx*invx
+            bx = (1.0_xp - vx)*(1.0_xp + vx)*invx
+            if (kind == piece_arch) then
+                xm1 = pc%c%rm1*(b*b)
+                q = pc%c%d + pc%rm1_4*(a*a)
+                xm1x = pc%rm1_x*(bx*bx)
+                qx = pc%d_x + pc%rm1_4_x*(ax*ax)
+            else
+                xm1 = pc%rm1_4*(a*a)
+                q = pc%c%d + pc%c%rm1*(b*b)
+                xm1x = pc%rm1_4_x*(ax*ax)
+                qx = pc%d_x + pc%rm1_x*(bx*bx)
+                b = a
+            end if
+            x = 1.0_qp + xm1
+            xx = 1.0_xp + xm1x
+            q = q*(x + pc%c%p)
+            qx = qx*(xx + pc%p_x)
+            r1 = refine(q, 1.0_xp/sqrt(qx))
+            r2 = refine(x, 1.0_xp/sqrt(xx))
+            u = (r%weight(m)*inv)*r1
+            h = r2*u
+            x2 = x*x
+            sums(1) = sums(1) + xm1*(r2*h)
+            sums(2) = sums(2) + b*(x2*h)
+            sums(3) = sums(3) + x2*u
+        end do
+    end subroutine arch_sums
+
+    !> The constant factors of theta's, s's and t's integrands taken out of
+    !! `panel_sums`' terms on a piece of this kind.
+    pure function piece_factors(pc, kind, stretched) result(f)
+        type(prepared_curve), intent(in) :: pc
+        integer, intent(in) :: kind
+        logical, intent(in) :: stretched
+        real(qp) :: f(3)
+        real(qp), parameter :: half_root2 = 0.5_qp*sqrt2
+        select case (kind)
+        case (piece_start)
+            f = [pc%k_root2*pc%span_root_span, 0.5_qp*pc%c%span, &
+                 half_root2*pc%root_span]
+        case (piece_below, piece_above)
+            f = [2.0_qp*pc%k_root2, 2.0_qp, sqrt2]
+            if (.not. stretched) f = 0.25_qp*f
+        case (piece_far)
+            f = [0.125_qp*pc%k_root2, 0.125_qp, sqrt2/16.0_qp]
+        case (piece_apse)
+            f = [2.0_qp*pc%k_root2*pc%inverse_root_rm1, 2.0_qp, sqrt2*pc%inverse_root_rm1]
+        case (piece_arch)
+            f = [0.5_qp*pc%k_root2, pc%root_rm1, sqrt2]
+        case default
+            f = [0.5_qp*pc%k_root2, 2.0_qp*pc%root_rm1, sqrt2]
+        end select
+    end function piece_factors
+
+    !> 2/sqrt(x) from a hardware-precision seed of 1/sqrt(x) (relative error about
+    !! 1e-18 on x87): one Newton step s (3 - x s^2), error about 1.5 e^2 (a second
+    !! step where the hardware kind is double); `inverse_sqrt` where the seed is out
+    !! of the hardware's range.
+    elemental function refine(x, seed) result(r)
+        real(qp), intent(in) :: x
+        real(xp), intent(in) :: seed
+        real(qp) :: r
+        if (.not. (seed > 0.0_xp .and. seed < huge(1.0_xp))) then
+            r = 2.0_qp*inverse_sqrt(x)
+            return
+        end if
+        r = quad_real(seed)
+        if (digits(1.0_xp) < 60) r = r*(1.5_qp - 0.5_qp*x*(r*r))
+        r = r*(3.0_qp - x*(r*r))
+    end function refine
+
+    !> A positive normal x87 number in binary128 (exact): the same exponent, the
+    !! significand without its explicit leading bit (`real` where `xp` is not x87).
+    elemental function quad_real(x) result(y)
+        real(xp), intent(in) :: x
+        real(qp) :: y
+        integer(int64), parameter :: low48 = ishft(1_int64, 48) - 1
+        integer(int64) :: bits(2)
+        if (.not. x87_layout) then
+            y = real(x, qp)
+            return
+        end if
+        bits = transfer(x, bits)
+        y = transfer([ishft(bits(1), 49), ior(ishft(iand(bits(2), int(z'FFFF', int64)), &
+                     48), iand(ishft(bits(1), -15), low48))], y)
+    end function quad_real
+
+    !> The weighted sum of theta's integrand over one panel [start, start + width] in
+    !! hardware precision (the maps of `integrands`), without the piece's constant
+    !! factor (`panel_angle_xp`): one square root and one or two divisions a node.
+    !! c = [K, P, a, beta, span, R - 1, d].
+    pure function angle_sum_xp(c, kind, stretched, start, width, r) result(total)
+        real(xp), intent(in) :: c(7), start, width
+        integer, intent(in) :: kind
+        logical, intent(in) :: stretched
+        type(panel_rule), intent(in) :: r
+        real(xp) :: total
+        if (kind == piece_apse .or. kind == piece_arch .or. kind == piece_arch_start) then
+            total = angle_sum_xp_arch(c, kind, start, width, r)
+        else
+            total = angle_sum_xp_open(c, kind, stretched, start, width, r)
+        end if
+    end function angle_sum_xp
+
+    !> `angle_sum_xp` on the unbounded curves' pieces.
+    pure function angle_sum_xp_open(c, kind, stretched, start, width, r) result(total)
+        real(xp), intent(in) :: c(7), start, width
+        integer, intent(in) :: kind
+        logical, intent(in) :: stretched
+        type(panel_rule), intent(in) :: r
+        real(xp) :: total
+        real(xp) :: v, x, xm1, h, inv, z, sum, root_beta4, am1
+        integer :: m
+        sum = 0.0_xp
+        select case (kind)
+        case (piece_start)
+            do m = 1, r%n
+                v = start + width*r%node_xp(m)
+                x = 1.0_xp + c(5)*(v*v)
+                sum = sum + r%weight_xp(m)*(v*v)/(x*sqrt((x + c(2))*((x - c(3))**2 + c(4))))
+            end do
+        case (piece_below, piece_above)
+            root_beta4 = 4.0_xp*sqrt(c(4))
+            am1 = c(3) - 1.0_xp
+            do m = 1, r%n
+                v = start + width*r%node_xp(m)
+                if (stretched) then
+                    inv = 1.0_xp/((1.0_xp - v)*(1.0_xp + v))
+                    h = root_beta4*(v*(1.0_xp + v*v))*(inv*inv)
+                    z = inv*inv
+                else
+                    h = v
+                    z = 1.0_xp/(v*v + c(4))
+                end if
+                if (kind == piece_below) h = -h
+                x = c(3) + h
+                xm1 = am1 + h
+                sum = sum + r%weight_xp(m)*sqrt(z*xm1/((x + c(2))*(x*x)))
+            end do
+        case (piece_far)
+            do m = 1, r%n
+                v = start + width*r%node_xp(m)
+                x = 4.0_xp/v
+                sum = sum + r%weight_xp(m)*sqrt((x - 1.0_xp)/((x + c(2))* &
+                      ((x - c(3))**2 + c(4))*(v*v)))
+            end do
+        end select
+        total = width*sum
+    end function angle_sum_xp_open
+
+    !> `angle_sum_xp` on the bounded curves' pieces.
+    pure function angle_sum_xp_arch(c, kind, start, width, r) result(total)
+        real(xp), intent(in) :: c(7), start, width
+        integer, intent(in) :: kind
+        type(panel_rule), intent(in) :: r
+        real(xp) :: total
+        real(xp) :: v, x, xm1, inv, sn, b, z, sum, ratio2, rm1_4
+        integer :: m
+        sum = 0.0_xp
+        select case (kind)
+        case (piece_apse)
+            ratio2 = 2.0_xp*sqrt(c(7)/c(6))
+            do m = 1, r%n
+                v = start + width*r%node_xp(m)
+                inv = 1.0_xp/((1.0_xp - v)*(1.0_xp + v))
+                sn = ratio2*v*inv
+                b = (1.0_xp - sn)*(1.0_xp + sn)
+                x = 1.0_xp + c(6)*b
+                sum = sum + r%weight_xp(m)*inv*sqrt(b/((x + c(2))*(x*x)))
+            end do
+        case default
+            rm1_4 = 4.0_xp*c(6)
+            do m = 1, r%n
+                v = start + width*r%node_xp(m)
+                inv = 1.0_xp/(1.0_xp + v*v)
+                sn = v*inv
+                b = (1.0_xp - v)*(1.0_xp + v)*inv
+                if (kind == piece_arch) then
+                    xm1 = c(6)*(b*b)
+                    z = c(7) + rm1_4*(sn*sn)
+                else
+                    xm1 = rm1_4*(sn*sn)
+                    z = c(7) + c(6)*(b*b)
+                end if
+                x = 1.0_xp + xm1
+                sum = sum + r%weight_xp(m)*(xm1*inv)/sqrt((x*x)*z*(x + c(2)))
+            end do
+        end select
+        total = width*sum
+    end function angle_sum_xp_arch
+
 
 end module brachistochrone_repulsive_panels

@@ -24,7 +24,7 @@ module brachistochrone_speed_laws
     use brachistochrone_kinds, only: qp, xp
     use brachistochrone_quad_math, only: expm1, log1p
     use brachistochrone_fast_exp, only: fast_exp, fast_expm1
-    use brachistochrone_fast_math, only: inverse_sqrt
+    use brachistochrone_fast_math, only: inverse_sqrt, hardware_real, fast_sqrt
     use brachistochrone_closed_forms, only: radial_time
     use, intrinsic :: iso_fortran_env, only: real64
     implicit none
@@ -583,6 +583,24 @@ contains
         !> d(log q)/d Lambda at fixed lambda in hardware precision (laws with
         !! has_terms_xp; 0 otherwise)
         real(xp), intent(out), optional :: log_slope
+        call power_node_terms(c, power_slope_constants(c), lambda, delta, q, one_minus_q, &
+                              q_over_v, r_over_x, root_q, log_slope)
+    end subroutine power_arch_terms
+
+    !> [a/E(Lambda), R^a] in hardware precision, for the slopes (`power_finish_terms`).
+    pure function power_slope_constants(c) result(cx)
+        real(qp), intent(in) :: c(8)
+        real(xp) :: cx(2)
+        cx = [hardware_real(c(3)*c(6)), hardware_real(c(4))]
+    end function power_slope_constants
+
+    !> `power_arch_terms` at one node (cx: `power_slope_constants`).
+    pure subroutine power_node_terms(c, cx, lambda, delta, q, one_minus_q, q_over_v, &
+                                     r_over_x, root_q, log_slope)
+        real(qp), intent(in) :: c(8), lambda, delta
+        real(xp), intent(in) :: cx(2)
+        real(qp), intent(out) :: q, one_minus_q, q_over_v, r_over_x, root_q
+        real(xp), intent(out), optional :: log_slope
         real(qp) :: a, om1, om2, e1, e2, eam1, ea, e_delta
         logical :: known  ! E(delta) already at hand
         a = c(3)
@@ -627,37 +645,49 @@ contains
             eam1 = fast_expm1(-a*lambda)
             ea = 1.0_qp + eam1
         end if
-        call power_finish_terms(c, lambda, delta, e1, om2, e2, ea, eam1, known, e_delta, &
-                                q, one_minus_q, q_over_v, r_over_x, root_q, log_slope)
-    end subroutine power_arch_terms
+        call power_finish_terms(c, cx, lambda, delta, e1, om2, e2, ea, eam1, known, &
+                                e_delta, q, one_minus_q, q_over_v, r_over_x, root_q, &
+                                log_slope)
+    end subroutine power_node_terms
 
     !> `power_arch_terms` from exp(-lambda) = e1, 1 - exp(-2 lambda) = om2, e2 =
-    !! exp(-2 lambda), ea = exp(-a lambda), eam1 = ea - 1 and, where known, E(delta).
-    pure subroutine power_finish_terms(c, lambda, delta, e1, om2, e2, ea, eam1, known, &
+    !! exp(-2 lambda), ea = exp(-a lambda), eam1 = ea - 1 and, where known, E(delta)
+    !! (cx: `power_slope_constants`; the slope's factors converted on the bits).
+    pure subroutine power_finish_terms(c, cx, lambda, delta, e1, om2, e2, ea, eam1, known, &
                                        e_delta, q, one_minus_q, q_over_v, r_over_x, root_q, &
                                        log_slope)
         real(qp), intent(in) :: c(8), lambda, delta, e1, om2, e2, ea, eam1
+        real(xp), intent(in) :: cx(2)
         logical, intent(in) :: known
         real(qp), intent(inout) :: e_delta
         real(qp), intent(out) :: q, one_minus_q, q_over_v, r_over_x, root_q
         real(xp), intent(out), optional :: log_slope
         real(qp) :: a, ea_e_delta
-        real(xp) :: ratio_xp
+        real(xp) :: ratio_xp, e_delta_xp
         a = c(3)
         if (delta > c(8) .and. c(4) > 0.0_qp) then
             ! exp(-a lambda) E(delta) = exp(-a lambda) - R^a (no division; E(delta) >=
             ! 1 - e^(-1/4): at most two bits cancel, as in 1 - R^a/exp(-a lambda))
             ea_e_delta = ea - c(4)
-            ratio_xp = real(c(4), xp)/real(ea_e_delta, xp)
+            if (present(log_slope)) ratio_xp = cx(2)/hardware_real(ea_e_delta)
         else if (lambda <= delta .and. c(4) > 0.0_qp) then
             ! nearer the apse, a delta <= 1/4: exp(-a lambda) E(delta) = E(Lambda) -
             ! E(lambda) (delta >= Lambda/2: at most two bits cancel; no expm1)
             ea_e_delta = c(2) + eam1
-            ratio_xp = real(c(4), xp)/real(ea_e_delta, xp)
+            if (present(log_slope)) ratio_xp = cx(2)/hardware_real(ea_e_delta)
         else
             if (.not. known) e_delta = decay(a, delta)
             ea_e_delta = ea*e_delta
-            ratio_xp = real(1.0_qp - e_delta, xp)/real(e_delta, xp)
+            if (present(log_slope)) then
+                ! exp(-a delta)/E(delta) (1 - E(delta) in hardware precision where a delta
+                ! <= 1/4, as where c(4) > 0 here)
+                e_delta_xp = hardware_real(e_delta)
+                if (c(4) > 0.0_qp) then
+                    ratio_xp = (1.0_xp - e_delta_xp)/e_delta_xp
+                else
+                    ratio_xp = hardware_real(1.0_qp - e_delta)/e_delta_xp
+                end if
+            end if
         end if
         root_q = e1*root(ea_e_delta*c(6))
         q = root_q*root_q
@@ -665,8 +695,7 @@ contains
         q_over_v = root_q*e1*c(7)
         r_over_x = e1
         ! a E(lambda) exp(-a delta)/(E(Lambda) E(delta)) (see power_theta_terms_xp)
-        if (present(log_slope)) log_slope = real(a, xp)*real(-eam1, xp)* &
-            ratio_xp*real(c(6), xp)
+        if (present(log_slope)) log_slope = cx(1)*(-hardware_real(eam1))*ratio_xp
     end subroutine power_finish_terms
 
     !> `power_arch_terms` on one panel. Where the panel's variable v is lambda (side 1)
@@ -687,14 +716,24 @@ contains
         real(xp), intent(out), optional :: log_slope(:)
         real(qp), dimension(size(lambda)) :: e1, em1, ea, eam1, e_delta
         real(qp) :: a
+        real(xp) :: cx(2)
         integer :: k
         logical :: known
         a = c(3)
         known = .false.
         e_delta = 0.0_qp
+        cx = power_slope_constants(c)
         if (.not. pair_terms_apply(c, side, lambda, delta)) then
-            call default_panel_terms(self, c, side, mid, offset, lambda, delta, q, &
-                                     one_minus_q, q_over_v, r_over_x, root_q, log_slope)
+            ! node by node (the root panels above all)
+            do k = 1, size(lambda)
+                if (present(log_slope)) then
+                    call power_node_terms(c, cx, lambda(k), delta(k), q(k), one_minus_q(k), &
+                                          q_over_v(k), r_over_x(k), root_q(k), log_slope(k))
+                else
+                    call power_node_terms(c, cx, lambda(k), delta(k), q(k), one_minus_q(k), &
+                                          q_over_v(k), r_over_x(k), root_q(k))
+                end if
+            end do
             return
         end if
         if (side == 1) then
@@ -737,12 +776,12 @@ contains
         end if
         do k = 1, size(lambda)
             if (present(log_slope)) then
-                call power_finish_terms(c, lambda(k), delta(k), e1(k), &
+                call power_finish_terms(c, cx, lambda(k), delta(k), e1(k), &
                                         -em1(k)*(2.0_qp + em1(k)), e1(k)*e1(k), ea(k), &
                                         eam1(k), known, e_delta(k), q(k), one_minus_q(k), &
                                         q_over_v(k), r_over_x(k), root_q(k), log_slope(k))
             else
-                call power_finish_terms(c, lambda(k), delta(k), e1(k), &
+                call power_finish_terms(c, cx, lambda(k), delta(k), e1(k), &
                                         -em1(k)*(2.0_qp + em1(k)), e1(k)*e1(k), ea(k), &
                                         eam1(k), known, e_delta(k), q(k), one_minus_q(k), &
                                         q_over_v(k), r_over_x(k), root_q(k))
@@ -785,7 +824,7 @@ contains
     pure subroutine pair_exps(s, mid, offset, ev, em1v)
         real(qp), intent(in) :: s, mid, offset(:)
         real(qp), intent(out) :: ev(:), em1v(:)
-        real(qp) :: centre, centre_m1, x, y, inverse_y, w
+        real(qp) :: centre, centre_m1, x, y, w
         integer :: k, n, far, near
         n = size(offset)
         if (abs(s*mid) < 0.5_qp) then
@@ -806,19 +845,18 @@ contains
             end if
             far = merge(k, n + 1 - k, s*offset(k) <= 0.0_qp)
             near = n + 1 - far
-            inverse_y = 1.0_qp/y
             ev(far) = centre*y
             em1v(far) = centre_m1 + centre*x
-            ev(near) = centre*inverse_y
-            em1v(near) = centre_m1 - centre*(x*inverse_y)
+            ev(near) = centre/y
+            em1v(near) = centre_m1 - ev(near)*x
         end do
     end subroutine pair_exps
 
-    !> sqrt(z) = z/sqrt(z) with the hardware-seeded inverse square root (within 3 ulp).
+    !> sqrt(z): the hardware square root and one correction (`fast_sqrt`, within an ulp).
     elemental function root(z) result(r)
         real(qp), intent(in) :: z
         real(qp) :: r
-        r = z*inverse_sqrt(z)
+        r = fast_sqrt(z)
     end function root
 
     !> 1/v = sqrt(a/2) exp(-a delta/2)/sqrt(E(delta)).
@@ -857,7 +895,8 @@ contains
 
     !> n = 3: t0(x) = sqrt(1 - x^2); n = 2: the inverse-square fall time (Tee eq. 46);
     !! other n: a series of incomplete gamma functions or an incomplete beta function
-    !! (`power_fall_time`).
+    !! (`power_fall_time`). (exp and expm1: `fast_exp`'s, a few units in the last place,
+    !! several times faster than libquadmath's; t0(1) = 0 not evaluated.)
     pure subroutine power_closed_fall(self, delta_lo, delta_hi, t, found)
         class(power_law), intent(in) :: self
         real(qp), intent(in) :: delta_lo, delta_hi
@@ -868,14 +907,29 @@ contains
         found = a > 0.0_qp
         t = 0.0_qp
         if (self%n == 3.0_qp) then
-            t = sqrt(-expm1(-2.0_qp*delta_hi)) - sqrt(-expm1(-2.0_qp*delta_lo))
+            t = sqrt(-fast_expm1(-2.0_qp*delta_hi))
+            if (delta_lo > 0.0_qp) t = t - sqrt(-fast_expm1(-2.0_qp*delta_lo))
         else if (self%n == 2.0_qp) then
-            t = radial_time(exp(-delta_hi), -expm1(-delta_hi)) &
-                - radial_time(exp(-delta_lo), -expm1(-delta_lo))
+            t = inverse_square_fall(delta_hi)
+            if (delta_lo > 0.0_qp) t = t - inverse_square_fall(delta_lo)
         else if (found) then
             t = power_fall_time(a, delta_hi, self%fall_limit)
             if (delta_lo > 0.0_qp) t = t - power_fall_time(a, delta_lo, self%fall_limit)
         end if
+    contains
+        !> The inverse-square fall time to x = exp(-delta), x and 1 - x each from the
+        !! exponential that gives it to its relative precision.
+        pure real(qp) function inverse_square_fall(delta)
+            real(qp), intent(in) :: delta
+            real(qp) :: x, e
+            if (delta < 0.5_qp) then
+                e = fast_expm1(-delta)
+                inverse_square_fall = radial_time(1.0_qp + e, -e)
+            else
+                x = fast_exp(-delta)
+                inverse_square_fall = radial_time(x, 1.0_qp - x)
+            end if
+        end function inverse_square_fall
     end subroutine power_closed_fall
 
     !> The fall time from 1 to x = exp(-delta) of the power law a = n - 1 < 2 where
@@ -940,11 +994,14 @@ contains
     !! (t = y). For y >= 1/2, with 1 - t = w^2, I = 2 sum_k c_k W^(2k+1)/(2k+1), W^2 = 1 - y,
     !! c_k the binomial series of (1 - w^2)^(p-1); below, I = B(p, 1/2) - sum_k d_k
     !! y^(p+k)/(p+k), d_k = (1/2)_k/k!. Both series have ratio at most 1/2 (terms of one
-    !! sign after the first few); about 115 terms for 36 digits.
+    !! sign after the first few); about 115 terms for 36 digits. The terms from where
+    !! they fall below 2^-64 of the sum (the tail, below 2^-63 of it) in hardware
+    !! precision (`series_tail`: an error below 1e-17 of the tail, 1e-36 of the sum).
     pure function power_fall_time(a, delta, limit) result(t)
         real(qp), intent(in) :: a, delta
         real(qp), intent(in) :: limit  !! t0(0) where known (`power_prepare`), else 0
         real(qp) :: t, p, w2, power, c, term, total, y
+        real(qp), parameter :: head = 2.0_qp**(-64)
         integer :: k
         if (a < 2.0_qp .and. a*min(delta, 100.0_qp) <= 2.0_qp*log_two) then
             t = mild_fall_time(a, delta)
@@ -962,6 +1019,11 @@ contains
                 if (abs(term) <= 1.0e-36_qp*abs(total)) exit
                 c = c*(real(k + 1, qp) - p)*inverse_integer(k + 1)
                 power = power*w2
+                ! past the terms of both signs (k + 1 > p - 1)
+                if (abs(term) <= head*abs(total) .and. real(k, qp) > p) then
+                    total = total + series_tail(.true., k + 1, c, power, w2, p, total)
+                    exit
+                end if
             end do
             t = 2.0_qp*total/sqrt(2.0_qp*a)
         else
@@ -974,6 +1036,10 @@ contains
                 if (term <= 1.0e-36_qp*total) exit
                 c = c*half_step(k)
                 power = power*y
+                if (term <= head*total) then
+                    total = total + series_tail(.false., k + 1, c, power, y, p, total)
+                    exit
+                end if
             end do
             if (limit > 0.0_qp) then
                 t = limit - total/sqrt(2.0_qp*a)
@@ -982,6 +1048,37 @@ contains
             end if
         end if
     end function power_fall_time
+
+    !> The tail of `power_fall_time`'s series from term k on (c, power: its coefficient
+    !! and power there, ratio: the power's ratio; `binomial`: the series in W, else the
+    !! one in y), in hardware precision, until the terms fall below 1e-36 of `total`.
+    pure function series_tail(binomial, k, c, power, ratio, p, total) result(tail)
+        logical, intent(in) :: binomial
+        integer, intent(in) :: k
+        real(qp), intent(in) :: c, power, ratio, p, total
+        real(qp) :: tail
+        real(xp) :: c_x, power_x, ratio_x, p_x, term, sum, least
+        integer :: j
+        c_x = real(c, xp)
+        power_x = real(power, xp)
+        ratio_x = real(ratio, xp)
+        p_x = real(p, xp)
+        least = real(1.0e-36_qp*abs(total), xp)
+        sum = 0.0_xp
+        do j = k, max_series_terms
+            if (binomial) then
+                term = c_x*power_x/real(2*j + 1, xp)
+                c_x = c_x*(real(j + 1, xp) - p_x)/real(j + 1, xp)
+            else
+                term = c_x*power_x/(p_x + real(j, xp))
+                c_x = c_x*(real(j, xp) + 0.5_xp)/real(j + 1, xp)
+            end if
+            sum = sum + term
+            if (abs(term) <= least) exit
+            power_x = power_x*ratio_x
+        end do
+        tail = real(sum, qp)
+    end function series_tail
 
     pure function power_conserved(self, c) result(k)
         class(power_law), intent(in) :: self
@@ -1040,10 +1137,22 @@ contains
         real(qp), intent(in) :: offset(:), lambda(:), delta(:)
         real(qp), intent(out) :: q(:), one_minus_q(:), q_over_v(:), r_over_x(:), root_q(:)
         real(xp), intent(out), optional :: log_slope(:)
-        real(qp), dimension(size(lambda)) :: e1, em1, e2
+        real(qp), dimension(size(lambda)) :: e1, em1, e2, om1, om2
+        real(xp) :: inverse_lambda
+        integer :: k
+        inverse_lambda = 1.0_xp/hardware_real(c(1))
         if (.not. pair_terms_apply([c(1:2), 1.0_qp, 1.0_qp, c(5:8)], side, lambda, delta)) then
-            call default_panel_terms(self, c, side, mid, offset, lambda, delta, q, &
-                                     one_minus_q, q_over_v, r_over_x, root_q, log_slope)
+            ! node by node (the root panels above all), as logarithmic_arch_terms
+            do k = 1, size(lambda)
+                call exp_pair(lambda(k), delta(k), c(5), e1(k), om1(k), om2(k), e2(k))
+            end do
+            root_q = e1*root(delta*c(6))
+            q = root_q*root_q
+            one_minus_q = om2 + e2*lambda*c(6)
+            q_over_v = root_q*e1*c(7)
+            r_over_x = e1
+            if (present(log_slope)) log_slope = hardware_real(lambda)*inverse_lambda/ &
+                                                hardware_real(delta)
             return
         end if
         if (side == 1) then
@@ -1060,8 +1169,8 @@ contains
         one_minus_q = -em1*(2.0_qp + em1) + e2*lambda*c(6)
         q_over_v = root_q*e1*c(7)
         r_over_x = e1
-        if (present(log_slope)) log_slope = real(lambda, xp)/(real(delta, xp)* &
-                                                              real(c(1), xp))
+        if (present(log_slope)) log_slope = hardware_real(lambda)*inverse_lambda/ &
+                                            hardware_real(delta)
     end subroutine logarithmic_panel_terms
 
     pure function logarithmic_inverse_speed(self, delta) result(w)
