@@ -15,16 +15,19 @@
 !!
 !! Quadrature: fixed Gauss-Legendre rules on panels chosen once per R. The integrands
 !! have square-root end singularities at the apse (lambda = 0) and at the start
-!! (delta = 0), removed by lambda = b s^2, delta = c s^2 on the end panels (two such
-!! panels meeting in between when Lambda is small), and complex singularities at
-!! distance sigma_apse, sigma_start from the ends (`log_scales`); the point x = 0 is at
-!! lambda = -infinity. Between the end panels the panels grow geometrically (ratio 8,
-!! length at most 8 sigma) away from both ends, so the count is O(log log(1/R)); an
-!! integral that ends at the endpoint inside the first of them takes one end panel up to
-!! it instead. The node count of each panel comes from the Bernstein ellipse through the
+!! (delta = 0), removed by lambda = b s^2, delta = c s^2 on the end panels (the start's
+!! up to delta = 16 c; two such panels meeting in between when Lambda is small; one
+!! panel lambda = Lambda s^2 (3 - 2 s), s in [0, 1], removing both when Lambda <= (b +
+!! c)/8, R -> 1), and complex singularities at distance sigma_apse, sigma_start from the
+!! ends (`log_scales`); the point x = 0 is at lambda = -infinity. Between the end panels
+!! the panels grow geometrically (ratio 8, length at most 8 sigma) away from both ends,
+!! so the count is O(log log(1/R)); an integral that ends at the endpoint inside the
+!! first of them takes one end panel up to it instead, and one that starts at an
+!! endpoint on the apse side the root variable continued from it (up to 8 sigma_apse
+!! further). The node count of each panel comes from the Bernstein ellipse through the
 !! nearest singularity (as on the inverse-square fast path), each singularity counted by
 !! the integrands' size there (`bernstein_log`), and the growth of the integrands off
-!! the real axis (`rule_for`). Away from the apse the integrands decay like
+!! the real axis (`rule_for`, `panel_growth`). Away from the apse the integrands decay like
 !! exp(-(n+1) lambda/2) or faster: each panel is asked only for the digits its share of
 !! the running sum needs, and panels below 1e-40 of it are skipped. Transcendentals:
 !! one or two fast exp/expm1 per node (`brachistochrone_fast_exp`; one for n = 2, 3),
@@ -98,9 +101,10 @@ module brachistochrone_central_force
     !> A panel whose bound is below this share of the running sum is skipped.
     real(qp), parameter :: negligible = 1.0e-40_qp
     !> Panel kinds: lambda = b s^2 (from the apse), lambda, delta, delta = c s^2 (from
-    !! the start).
+    !! the start), lambda = Lambda s^2 (3 - 2 s) (s in [0, 1]: the whole of a short arch,
+    !! both roots removed; scale Lambda).
     integer, parameter :: kind_apse_root = 1, kind_apse = 2, kind_start = 3, &
-                          kind_start_root = 4
+                          kind_start_root = 4, kind_full = 5
     !> Most panels for one integral.
     integer, parameter :: max_panels = 160
     !> Lowest log R searched (R above the smallest normal binary128 number).
@@ -649,11 +653,21 @@ contains
         type(arch_setup), intent(in) :: a
         type(panel), intent(out) :: panels(max_panels)
         integer, intent(out) :: count
-        real(qp) :: b, c, meet, lo, hi, origin, decay_rate
+        real(qp) :: b, c, meet, lo, hi, origin, decay_rate, top
         type(panel) :: start_side(max_panels)
         integer :: n_start, k
         count = 0
         call root_scales(model, a, b, c)
+        if (a%big_lambda <= 0.125_qp*(b + c)) then
+            ! a short arch: one panel lambda = Lambda s^2 (3 - 2 s), delta = Lambda (1 -
+            ! s)^2 (1 + 2 s), both end singularities removed (about half the nodes of two
+            ! root panels meeting in between: the other preimages of the ends, s = 3/2
+            ! and -1/2, are the nearest singularities; those of the complex ones stay
+            ! far while Lambda <= (b + c)/8; the root scales are the plain ones there)
+            call add_split(panels, count, kind_full, 0.0_qp, 1.0_qp, a%big_lambda, &
+                           split_full(a%lambda_r, a%delta_r, a%big_lambda), a)
+            return
+        end if
         if (a%big_lambda <= b + c) then
             ! two root panels meeting in between: lambda = b' s^2 and delta = c' s^2
             b = a%big_lambda*b/(b + c)
@@ -664,10 +678,20 @@ contains
                            split_root(a%delta_r/c), a)
         else
             meet = max(b, min(a%big_lambda - c, a%big_lambda*b/(b + c)))
-            ! apse side: lambda = b s^2 on [0, b], then [b, 4b], [4b, 16b], ... to meet
-            call add_split(panels, count, kind_apse_root, 0.0_qp, 1.0_qp, b, &
-                           split_root(a%lambda_r/b), a)
-            lo = b
+            if (continued_root(a, b, c)) then
+                ! an integral from an endpoint on the apse side: the root variable
+                ! continued from it to meet, or ladder sigma_apse further (the apse's
+                ! singularities stay away in s: fewer nodes than the root panel's piece
+                ! and the ladder's first panels)
+                lo = min(meet, a%lambda_r + ladder*model%sigma_apse)
+                call push(panels, count, panel(kind_apse_root, split_root(a%lambda_r/b), &
+                          split_root(lo/b), b, a%weight_above, 1.0_real64))
+            else
+                ! apse side: lambda = b s^2 on [0, b], then [b, 8b], [8b, 64b], ... to meet
+                call add_split(panels, count, kind_apse_root, 0.0_qp, 1.0_qp, b, &
+                               split_root(a%lambda_r/b), a)
+                lo = b
+            end if
             ! where the integrated region starts (the apse unless its weight is 0)
             origin = merge(0.0_qp, a%lambda_r, a%weight_below > 0.0_qp)
             decay_rate = pi/model%sigma_apse
@@ -684,9 +708,15 @@ contains
             ! start side, in delta, from meet down to the start
             n_start = 0
             if (decay_rate*(meet - origin) > 300.0_qp) return
-            call add_split(start_side, n_start, kind_start_root, 0.0_qp, 1.0_qp, c, &
-                           split_root(a%delta_r/c), a)
-            lo = c
+            ! delta = c s^2 on [0, top], top up to 2 ladder c (s = 4: the start's
+            ! singularities stay away in s; fewer nodes than the root panel and the
+            ! ladder's first panels; to meet if that is at most 2.5 ladder c away), then
+            ! the ladder
+            top = a%big_lambda - meet
+            if (top > 2.5_qp*ladder*c) top = 2.0_qp*ladder*c
+            call add_split(start_side, n_start, kind_start_root, 0.0_qp, split_root(top/c), &
+                           c, split_root(a%delta_r/c), a)
+            lo = top
             do while (lo < a%big_lambda - meet)
                 hi = min(ladder*lo, lo + ladder*model%sigma_start, a%big_lambda - meet)
                 if (hi > 0.75_qp*(a%big_lambda - meet) .and. &
@@ -722,6 +752,17 @@ contains
         end if
     end subroutine root_scales
 
+    !> Whether `arch_panels` takes the root variable continued from the endpoint (an
+    !! integral from it, weights 0 and 1, the endpoint on the apse side: lambda_r in
+    !! [b/4, meet)), b and c the root scales.
+    pure logical function continued_root(a, b, c)
+        type(arch_setup), intent(in) :: a
+        real(qp), intent(in) :: b, c
+        continued_root = a%weight_below == 0.0_qp .and. a%lambda_r >= 0.25_qp*b .and. &
+            a%lambda_r < max(b, min(a%big_lambda - c, a%big_lambda*b/(b + c))) .and. &
+            a%big_lambda > b + c
+    end function continued_root
+
     !> sqrt(z) for the root panels' splits, within an ulp: the hardware kind's square root
     !! and one correction (z - s^2)/(2 s) in it (libquadmath's sqrtq costs about ten
     !! binary128 multiplications); sqrt itself where that kind has no 64-bit significand.
@@ -737,6 +778,38 @@ contains
         s = real(s0, qp)
         s = s + real(real(z - s*s, xp)/(2.0_xp*s0), qp)
     end function split_root
+
+    !> The split s of a `kind_full` panel at lambda_r (delta_r = Lambda - lambda_r): w^2
+    !! (3 - 2 w) = t for the nearer end's offset t = min(lambda_r, delta_r)/Lambda <= 1/2
+    !! (s = w or 1 - w), by Newton steps in the hardware kind from w = sqrt(t/3) (below
+    !! the root; the cubic is convex there), then two corrections in binary128.
+    elemental function split_full(lambda_r, delta_r, big_lambda) result(s)
+        real(qp), intent(in) :: lambda_r, delta_r, big_lambda
+        real(qp) :: s, t, w
+        real(xp) :: tx, wx
+        integer :: k
+        t = min(lambda_r, delta_r)/big_lambda
+        if (.not. (t > 0.0_qp)) then
+            w = 0.0_qp
+        else
+            tx = real(t, xp)
+            if (.not. (tx > 0.0_xp)) then
+                ! below the hardware kind's range: the cubic term is negligible
+                s = merge(sqrt(t/3.0_qp), 1.0_qp - sqrt(t/3.0_qp), lambda_r <= delta_r)
+                return
+            end if
+            wx = sqrt(tx/3.0_xp)
+            do k = 1, 8
+                wx = wx - (wx*wx*(3.0_xp - 2.0_xp*wx) - tx)/(6.0_xp*wx*(1.0_xp - wx))
+            end do
+            w = real(wx, qp)
+            do k = 1, 2
+                w = w - real(real(w*w*(3.0_qp - 2.0_qp*w) - t, xp)/ &
+                             (6.0_xp*wx*(1.0_xp - wx)), qp)
+            end do
+        end if
+        s = merge(w, 1.0_qp - w, lambda_r <= delta_r)
+    end function split_full
 
     !> Add the panel [lo, hi] of `kind`, split at `split` (in the panel's variable) into
     !! the parts below and above the endpoint, with their weights; zero weights dropped.
@@ -791,7 +864,7 @@ contains
         logical, intent(in), optional :: unweighted
         real(real64) :: log_rho
         real(real64), parameter :: reach = 35.0_real64*log(10.0_real64), most = 8.0_real64
-        complex(real64) :: zeta(8), point, image(2)
+        complex(real64) :: zeta(8), point, image(3), t, arc
         real(real64) :: lo, hi, big, sa, ss, log_min, kappa, near, w, lr
         integer :: k, m, images
         lo = real(p%lo, real64)
@@ -807,7 +880,7 @@ contains
         ! (+-2i: not a singularity but the growth of the factors exp(-+lambda),
         ! exp(-delta) off the real axis, which fewer nodes would not resolve)
         select case (p%kind)
-        case (kind_apse_root, kind_apse)
+        case (kind_apse_root, kind_apse, kind_full)
             zeta = [(0.0_real64, 0.0_real64), cmplx(0.0_real64, sa, real64), &
                     cmplx(0.0_real64, -sa, real64), cmplx(big, 0.0_real64, real64), &
                     cmplx(big, ss, real64), cmplx(big, -ss, real64), &
@@ -826,6 +899,8 @@ contains
             near = lo
         case (kind_start)
             near = -hi
+        case (kind_full)
+            near = real(p%scale, real64)*lo*lo*(3.0_real64 - 2.0_real64*lo)
         case default
             near = -real(p%scale, real64)*hi*hi
         end select
@@ -835,11 +910,28 @@ contains
             ! largest (the offsets on the start side count toward the start)
             w = 0.0_real64
             if (k <= 6) w = min(0.0_real64, -kappa*(merge(1.0_real64, -1.0_real64, &
-                p%kind <= kind_apse)*real(zeta(k)) - near))
+                p%kind <= kind_apse .or. p%kind == kind_full)*real(zeta(k)) - near))
             if (w <= -reach) cycle
             if (p%kind == kind_apse .or. p%kind == kind_start) then
                 images = 1
                 image(1) = zeta(k)
+            else if (p%kind == kind_full) then
+                ! the preimages of lambda = zeta: s^2 (3 - 2 s) = t at s = 1/2 - sin((asin(1
+                ! - 2 t) + 2 pi m)/3), m = 0, 1, 2; the ends' double ones (s = 0 of the
+                ! apse, s = 1 of the start) removed by the substitution, none near the
+                ! panel for |t| > 1e6
+                t = zeta(k)/real(p%scale, real64)
+                if (abs(t) > 1.0e6_real64) cycle
+                arc = asin(1.0_real64 - 2.0_real64*t)
+                images = 0
+                do m = 0, 2
+                    point = 0.5_real64 - sin((arc + real(2*m, real64)* &
+                                              acos(-1.0_real64))/3.0_real64)
+                    if ((k == 1 .and. abs(point) < 1.0e-6_real64) .or. &
+                        (k == 4 .and. abs(1.0_real64 - point) < 1.0e-6_real64)) cycle
+                    images = images + 1
+                    image(images) = point
+                end do
             else
                 if (k == 1) cycle    ! removed by the substitution
                 point = sqrt(zeta(k)/real(p%scale, real64))
@@ -895,13 +987,31 @@ contains
         end if
     end function rule_for
 
-    !> kappa h of a plain panel (0 for the root panels), kappa the decay rate.
+    !> kappa h of a plain panel, kappa the decay rate; its equivalent for a root panel
+    !! continued past s = 1 (`log_rho` set; 0 for the other root panels).
     pure function panel_growth(p, kappa) result(growth)
         type(panel), intent(in) :: p
         real(qp), intent(in) :: kappa
         real(real64) :: growth
+        real(real64) :: h, mid, most
         if (p%kind == kind_apse .or. p%kind == kind_start) then
             growth = real(kappa*0.5_qp*(p%hi - p%lo), real64)
+        else if (p%hi > 1.0_qp) then
+            ! a root panel continued past s = 1: on the ellipse s = mid + h cos(z), Im z
+            ! = l <= log_rho (cosh l <= most), the integrands' exponent kappa Re(lambda)
+            ! (kappa Re(delta)) strays from its value at the panel's end nearest the apse
+            ! by at most (cosh l - 1) times the growth below (the apse side: scale h (2
+            ! mid + h max(0, most - mid/h)), the second term where the ellipse passes
+            ! s = 0; the start side: scale h (2 mid + h (1 + most)))
+            h = real(0.5_qp*(p%hi - p%lo), real64)
+            mid = real(0.5_qp*(p%hi + p%lo), real64)
+            most = cosh(p%log_rho)
+            if (p%kind == kind_apse_root) then
+                growth = real(kappa*p%scale, real64)*h*(2.0_real64*mid + &
+                         h*max(0.0_real64, most - mid/h))
+            else
+                growth = real(kappa*p%scale, real64)*h*(2.0_real64*mid + h*(1.0_real64 + most))
+            end if
         else
             growth = 0.0_real64
         end if
@@ -925,6 +1035,10 @@ contains
             delta = v
             lambda = big_lambda - v
             jacobian = 1.0_qp
+        case (kind_full)
+            lambda = scale*(v*v*(3.0_qp - 2.0_qp*v))
+            delta = scale*((1.0_qp - v)**2*(1.0_qp + 2.0_qp*v))
+            jacobian = 6.0_qp*scale*(v*(1.0_qp - v))
         case default
             delta = scale*v*v
             lambda = big_lambda - delta
@@ -1225,7 +1339,8 @@ contains
         call root_scales(model, below, b(2), c(2))
         call root_scales(model, above, b(3), c(3))
         if (pi/model%sigma_apse*a%big_lambda <= 250.0_qp .and. all(b == b(1)) .and. &
-            all(c == c(1))) call arch_panels(model, both, panels, count)
+            all(c == c(1)) .and. .not. continued_root(above, b(3), c(3))) &
+            call arch_panels(model, both, panels, count)
         if (count >= max_panels) then
             call arch_panels(model, below, panels_below, n_below)
             call arch_panels(model, above, panels_above, n_above)
@@ -1290,6 +1405,8 @@ contains
         select case (p%kind)
         case (kind_apse_root, kind_start_root)
             length = p%scale*(p%hi**2 - p%lo**2)
+        case (kind_full)
+            length = p%scale*(p%hi**2*(3.0_qp - 2.0_qp*p%hi) - p%lo**2*(3.0_qp - 2.0_qp*p%lo))
         case default
             length = p%hi - p%lo
         end select
@@ -1341,6 +1458,10 @@ contains
                     delta = v
                     lambda = big - v
                     jacobian = 1.0_real64
+                case (kind_full)
+                    lambda = scale*(v*v*(3.0_real64 - 2.0_real64*v))
+                    delta = scale*((1.0_real64 - v)**2*(1.0_real64 + 2.0_real64*v))
+                    jacobian = 6.0_real64*scale*(v*(1.0_real64 - v))
                 case default
                     delta = scale*v*v
                     lambda = big - delta
@@ -1797,6 +1918,10 @@ contains
             delta = v
             lambda = big_lambda - v
             jacobian = 1.0_xp
+        case (kind_full)
+            lambda = scale*(v*v*(3.0_xp - 2.0_xp*v))
+            delta = scale*((1.0_xp - v)**2*(1.0_xp + 2.0_xp*v))
+            jacobian = 6.0_xp*scale*(v*(1.0_xp - v))
         case default
             delta = scale*v*v
             lambda = big_lambda - delta
