@@ -713,6 +713,8 @@ contains
 
     !> Add the panel [lo, hi] of `kind`, split at `split` (in the panel's variable) into
     !! the parts below and above the endpoint, with their weights; zero weights dropped.
+    !! The parts in the order of the variable (`arch_panels` reverses the start side's
+    !! list as a whole: the order away from the apse, which `panel_share` counts on).
     pure subroutine add_split(panels, count, kind, lo, hi, scale, split, a)
         type(panel), intent(inout) :: panels(:)
         integer, intent(inout) :: count
@@ -729,9 +731,6 @@ contains
             call push(panels, count, panel(kind, lo, hi, scale, w_hi, 1.0_real64))
         else if (split >= hi) then
             call push(panels, count, panel(kind, lo, hi, scale, w_lo, 1.0_real64))
-        else if (reversed) then
-            call push(panels, count, panel(kind, split, hi, scale, w_hi, 1.0_real64))
-            call push(panels, count, panel(kind, lo, split, scale, w_lo, 1.0_real64))
         else
             call push(panels, count, panel(kind, lo, split, scale, w_lo, 1.0_real64))
             call push(panels, count, panel(kind, split, hi, scale, w_hi, 1.0_real64))
