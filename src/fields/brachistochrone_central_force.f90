@@ -110,6 +110,12 @@ module brachistochrone_central_force
     !> Laws whose integrands decay faster than exp(-steep_decay lambda) from the apse
     !! (power laws n > 2 steep_decay - 1) take the early phase in u in logarithmic forms
     real(qp), parameter :: steep_decay = 6.0_qp
+    !> psi within edge_gap (of the sector 2 lim Theta) of the sector's edge: limit -
+    !! Upsilon is below what the early phase resolves, it solves for limit - Upsilon =
+    !! edge_gap limit instead (`edge_steps`)
+    real(qp), parameter :: edge_gap = 1.0e-10_qp
+    !> Full-precision steps at most next to the sector's edge (`edge_steps`)
+    integer, parameter :: max_edge_steps = 12
     !> The far tables beyond them: Lambda in [table_high, far_high] (R from 1.7e-5 down
     !! to about 2e-35), far_pieces equal pieces in z = log Lambda (`build_far_tables`).
     real(qp), parameter :: far_high = 80.0_qp
@@ -1937,20 +1943,29 @@ contains
     !! moves s by less than a rounding; then s is corrected along its slope and t by
     !! Hamilton-Jacobi (t(x) = t(x0) + K (psi - Upsilon(x0))). Otherwise x_next, slope_next
     !! (the Newton point and the slope) for the secant steps of `quad_phase`.
+    !! With `previous` (next to the sector's edge, the unknown R: `edge_steps`) the step is
+    !! Newton's on F = log((limit - Upsilon)/(limit - psi)) in y = log R (`edge_newton`),
+    !! its curvature measured against the point `previous`; x0 itself is accepted where
+    !! |Upsilon - psi| is within two roundings of psi (R-bar's conditioning: the step is then
+    !! not resolved); `log_form` returns F and F' at x0.
     pure subroutine final_step(model, prob, x0, lo, hi, curvature, solution, done, x_next, &
-                               slope_next)
+                               slope_next, previous, log_form)
         type(central_force_model), intent(in) :: model
         type(endpoint_problem), intent(in) :: prob
         real(qp), intent(in) :: x0, lo, hi, curvature
         type(endpoint_solution), intent(inout) :: solution
         logical, intent(out) :: done
         real(qp), intent(out) :: x_next, slope_next
+        real(qp), intent(in), optional :: previous(2)   !! y = log R and F'(y) before x0
+        real(qp), intent(out), optional :: log_form(2)  !! F, F' at x0 (F = -huge: none)
         type(arch_setup) :: a
         real(xp) :: slopes(4)
-        real(qp) :: d, angle, s, t, f, lambda_slope, dx, x, floor, curve, error
+        real(qp) :: d, angle, s, t, f, lambda_slope, dx, x, floor, curve, error, noise
+        logical :: edge
         done = .false.
         x_next = x0
         slope_next = 0.0_qp
+        if (present(log_form)) log_form = [-huge(1.0_qp), 0.0_qp]
         a = setup_at(model, prob, x0)
         if (prob%use_u) then
             d = x0*x0
@@ -1971,6 +1986,20 @@ contains
         slope_next = real(slopes(1), qp)*lambda_slope
         if (.not. (ieee_is_finite(slope_next) .and. slope_next /= 0.0_qp)) return
         dx = -f/slope_next
+        noise = 0.0_qp
+        edge = present(previous) .and. present(log_form) .and. .not. prob%use_u
+        if (edge) then
+            call edge_newton(prob, x0, angle, slope_next, previous, dx, curve, noise, &
+                             log_form)
+            if (abs(f) <= 2.0_qp*eps_qp*prob%psi) then
+                ! x0 is R-bar as far as Upsilon's rounding places it
+                dx = 0.0_qp
+                curve = 0.0_qp
+                noise = 0.0_qp
+            else if (log_form(2) == 0.0_qp) then
+                return
+            end if
+        end if
         if (prob%use_u) then
             x = x0 + dx
         else
@@ -1980,7 +2009,7 @@ contains
         end if
         if (.not. (x > lo .and. x < hi)) return
         x_next = x
-        error = curve*dx*dx + abs(dx)*real(slopes(3)/abs(slopes(1)), qp)
+        error = curve*dx*dx + abs(dx)*(real(slopes(3)/abs(slopes(1)), qp) + noise)
         ! below 1e-35 of the unknown (R: relative), or, for the unknown R (below rho/2),
         ! moving Upsilon by less than 1e-35 psi (within the rounding of psi: R-bar's
         ! conditioning, next to the edge of the sector) and s by less than 1e-35 of itself
@@ -1990,7 +2019,7 @@ contains
                    error*abs(real(slopes(2), qp)*lambda_slope) <= 1.0e-35_qp*abs(s)))) then
             ! not certified: next to the sector's edge the next point by Newton on
             ! log(limit - Upsilon), nearly linear in log R there (`log_form_point`)
-            if (.not. prob%use_u .and. prob%form == 2) &
+            if (.not. prob%use_u .and. prob%form == 2 .and. .not. edge) &
                 x_next = log_form_point(prob, x0, angle, slope_next*x0, lo, hi, x)
             return
         end if
@@ -2010,6 +2039,91 @@ contains
         solution%status = status_ok
         done = .true.
     end subroutine final_step
+
+    !> Newton's step dy on F = log((limit - Upsilon)/(limit - psi)) in y = log R at x0
+    !! (Upsilon = angle, d Upsilon/dy = upsilon_slope), F nearly linear in y next to the
+    !! sector's edge; curve twice |F''/(2F')| measured against `previous` (y, F'(y)), 10
+    !! where not measured; noise the relative error of F' from the rounding of limit -
+    !! Upsilon; form F, F' at x0 (F' = 0 where limit - Upsilon is not positive: no step).
+    pure subroutine edge_newton(prob, x0, angle, upsilon_slope, previous, dy, curve, &
+                                noise, form)
+        type(endpoint_problem), intent(in) :: prob
+        real(qp), intent(in) :: x0, angle, upsilon_slope, previous(2)
+        real(qp), intent(out) :: dy, curve, noise, form(2)
+        real(qp) :: deficit, y0
+        dy = 0.0_qp
+        curve = 10.0_qp
+        noise = 0.0_qp
+        form = [-huge(1.0_qp), 0.0_qp]
+        deficit = prob%limit - angle
+        if (.not. deficit > 0.0_qp) return
+        y0 = log(x0)
+        form = [log(deficit/(prob%limit - prob%psi)), -upsilon_slope/deficit]
+        if (.not. (form(2) > 0.0_qp .and. ieee_is_finite(form(2)))) then
+            form(2) = 0.0_qp
+            return
+        end if
+        dy = -form(1)/form(2)
+        noise = 4.0_qp*eps_qp*prob%psi/deficit
+        if (previous(2) > 0.0_qp .and. previous(1) /= y0) &
+            curve = (abs(form(2) - previous(2)) + 1.0e-18_qp*form(2))/ &
+                    (abs(y0 - previous(1))*form(2))
+    end subroutine edge_newton
+
+    !> Next to the sector's edge (second half-arch, R-bar < rho/2, limit - psi below
+    !! edge_gap limit): limit - Upsilon = D ~ C R^(n-1) (power laws; and (R/rho)^((n+1)/2)
+    !! terms), F = log(D/(limit - psi)) is nearly linear and convex in y = log R. The early
+    !! phase solved D = early_gap (resolved in hardware precision) at x = R1 with F'(y1) =
+    !! early_slope; from there the root of F's tangent (right of R-bar by the convexity,
+    !! below lowest_log_r only if R-bar is below the binary128 range: `below_range`), then
+    !! Newton steps on F on the full rules (`final_step` with `previous`), kept inside the
+    !! bracket [y_lo, y_hi] of F's signs by bisection. Not `done`: x and the slope
+    !! d Upsilon/dR for the secant steps, [lo, hi] the bracket in R.
+    pure subroutine edge_steps(model, prob, early_gap, early_slope, x, lo, hi, solution, &
+                               done, slope)
+        type(central_force_model), intent(in) :: model
+        type(endpoint_problem), intent(in) :: prob
+        real(qp), intent(in) :: early_gap, early_slope
+        real(qp), intent(inout) :: x, lo, hi
+        type(endpoint_solution), intent(inout) :: solution
+        logical, intent(out) :: done
+        real(qp), intent(out) :: slope
+        real(qp) :: y, y_lo, y_hi, previous(2), form(2), x_next
+        integer :: attempt
+        done = .false.
+        slope = 0.0_qp
+        y_hi = log(x)
+        y_lo = lowest_log_r
+        previous = [y_hi, early_slope]
+        y = y_hi - log(early_gap/(prob%limit - prob%psi))/early_slope
+        if (.not. (early_slope > 0.0_qp .and. ieee_is_finite(y))) return
+        do attempt = 1, max_edge_steps
+            if (.not. y > lowest_log_r) then
+                call below_range(model, prob, solution)
+                done = .true.
+                return
+            end if
+            x = exp(y)
+            lo = exp(y_lo)
+            hi = exp(y_hi)
+            call final_step(model, prob, x, lo, hi, 0.0_qp, solution, done, x_next, slope, &
+                            previous, form)
+            if (done) return
+            if (form(1) > 0.0_qp) then
+                y_hi = y
+            else
+                y_lo = y
+            end if
+            if (form(2) > 0.0_qp) previous = [y, form(2)]
+            if (x_next /= x .and. x_next > exp(y_lo) .and. x_next < exp(y_hi)) then
+                y = log(x_next)
+            else
+                y = 0.5_qp*(y_lo + y_hi)
+            end if
+        end do
+        lo = exp(y_lo)
+        hi = exp(y_hi)
+    end subroutine edge_steps
 
     !> The Newton point in R from x0 (the unknown R, second half-arch) on
     !! F = log((limit - Upsilon)/(limit - psi)) in y = log R, Upsilon = angle at x0 with
@@ -2179,10 +2293,10 @@ contains
         real(qp), intent(in) :: rho   !! endpoint radius, 0 < rho <= 1
         real(qp), intent(in) :: psi   !! endpoint angle, 0 <= psi <= pi
         type(endpoint_solution) :: solution
-        type(endpoint_problem) :: prob
+        type(endpoint_problem) :: prob, early
         real(qp) :: limit, apse_angle_rho, half, x, lo, hi, slope_q, curvature
         real(real64) :: f_lo, f_hi, slope, slope_hi
-        logical :: below, hardware, done, near
+        logical :: below, hardware, done, near, edge
 
         solution%rho = rho
         solution%psi = psi
@@ -2209,8 +2323,23 @@ contains
             return
         end if
         half = 0.5_qp*rho
-        call open_bracket(self, prob, apse_angle_rho, half, lo, hi, f_lo, f_hi, &
+        hardware = self%law%has_terms_xp()
+        ! psi within edge_gap of the sector's edge: the early phase (`early`) solves for
+        ! limit - Upsilon = edge_gap limit, which it resolves (`edge_steps`)
+        edge = hardware .and. prob%limit - psi < edge_gap*prob%limit
+        early = prob
+        if (edge) early%psi = prob%limit - edge_gap*prob%limit
+        call open_bracket(self, early, apse_angle_rho, half, lo, hi, f_lo, f_hi, &
                           solution%steps, below, slope_hi)
+        if (edge .and. early%use_u) then
+            ! (R-bar above rho/2 after all: the endpoint as it is)
+            edge = .false.
+            early = prob
+            call open_bracket(self, early, apse_angle_rho, half, lo, hi, f_lo, f_hi, &
+                              solution%steps, below, slope_hi)
+        end if
+        prob%use_u = early%use_u
+        prob%form = early%form
         if (below) then
             ! R-bar is below the binary128 range (the logarithmic law next to psi = pi):
             ! R-bar underflows to 0, and s, t equal their limits R -> 0 to far more
@@ -2218,13 +2347,12 @@ contains
             call below_range(self, prob, solution)
             return
         end if
-        hardware = self%law%has_terms_xp()
         near = .false.
         if (hardware .and. prob%use_u .and. prob%rho < 1.0_qp) then
             ! B within 1e-16 of its apse angle (not at it): below what the early phase
             ! resolves; the root from the slope next to u = 0
             if (abs(apse_angle_rho - psi) <= 1.0e-16_qp*psi) &
-                call apse_start(self, prob, hi, f_lo, x, slope_q, near)
+                call apse_start(self, early, hi, f_lo, x, slope_q, near)
             if (near) then
                 curvature = 0.0_qp
                 solution%steps = solution%steps + 1
@@ -2233,7 +2361,7 @@ contains
         if (near) then
             slope = real(slope_q, real64)
         else if (hardware) then
-            call hardware_phase(self, prob, lo, f_lo, hi, f_hi, x, slope_q, curvature, &
+            call hardware_phase(self, early, lo, f_lo, hi, f_hi, x, slope_q, curvature, &
                                 solution%steps, slope_hi)
             slope = real(slope_q, real64)
         else
@@ -2248,7 +2376,13 @@ contains
             lo = exp(lo)
             hi = half
         end if
-        if (hardware) then
+        if (edge) then
+            call edge_steps(self, prob, prob%limit - early%psi, slope_q, x, lo, hi, &
+                            solution, done, curvature)
+            if (done) return
+            slope = real(curvature, real64)
+            prob%form = 0
+        else if (hardware) then
             call final_steps(self, prob, x, lo, hi, curvature, solution, done, slope_q)
             if (done) return
             slope = real(slope_q, real64)
