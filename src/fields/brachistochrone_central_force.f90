@@ -2024,6 +2024,9 @@ contains
             return
         end if
         if (.not. abs(dx*lambda_slope*real(slopes(4), qp)) <= eps_qp*abs(s)) return
+        ! (next to the edge the step in log R may be large: s along its slope errs by
+        ! |s''| dx^2/2, s - s(R = 0) ~ R, |s''| about |s'| in log R)
+        if (edge .and. .not. dx*dx*abs(real(slopes(2), qp)) <= 0.25_qp*eps_qp*abs(s)) return
         solution%arclength = s + real(slopes(2), qp)*lambda_slope*dx
         solution%time = t - model%law%conserved(a%c)*f
         if (prob%use_u) then
