@@ -2007,7 +2007,11 @@ contains
             ! in R about 1/R: the Newton step in log R errs far less)
             x = x0 + x0*expm1_qp(dx)
         end if
-        if (.not. (x > lo .and. x < hi)) return
+        if (.not. (x > lo .and. x < hi)) then
+            if (prob%use_u .and. .not. prob%second) &
+                x_next = ratio_form_point(prob, x0, angle, slope_next, lo, hi, x0)
+            return
+        end if
         x_next = x
         error = curve*dx*dx + abs(dx)*(real(slopes(3)/abs(slopes(1)), qp) + noise)
         ! below 1e-35 of the unknown (R: relative), or, for the unknown R (below rho/2),
@@ -2021,6 +2025,11 @@ contains
             ! log(limit - Upsilon), nearly linear in log R there (`log_form_point`)
             if (.not. prob%use_u .and. prob%form == 2 .and. .not. edge) &
                 x_next = log_form_point(prob, x0, angle, slope_next*x0, lo, hi, x)
+            ! first half-arch: by Newton on log(Upsilon/psi) in log u (B next to the start,
+            ! rho -> 1, tiny psi: Upsilon ~ (1 - rho)^(3/2)/u, Newton on Upsilon from
+            ! below only doubles u)
+            if (prob%use_u .and. .not. prob%second) &
+                x_next = ratio_form_point(prob, x0, angle, slope_next, lo, hi, x)
             return
         end if
         if (.not. abs(dx*lambda_slope*real(slopes(4), qp)) <= eps_qp*abs(s)) return
@@ -2127,6 +2136,23 @@ contains
         lo = exp(y_lo)
         hi = exp(y_hi)
     end subroutine edge_steps
+
+    !> The Newton point in u from x0 (the unknown u, first half-arch) on
+    !! log(Upsilon/psi) in log u, Upsilon = angle at x0 with d Upsilon/du = upsilon_slope;
+    !! `fallback` where it is not defined or leaves (lo, hi). Only a next iterate.
+    pure function ratio_form_point(prob, x0, angle, upsilon_slope, lo, hi, fallback) &
+        result(x)
+        type(endpoint_problem), intent(in) :: prob
+        real(qp), intent(in) :: x0, angle, upsilon_slope, lo, hi, fallback
+        real(qp) :: x
+        real(qp) :: step
+        x = fallback
+        if (.not. (angle > 0.0_qp .and. x0 > 0.0_qp .and. upsilon_slope /= 0.0_qp)) return
+        step = -log(angle/prob%psi)*angle/(x0*upsilon_slope)
+        if (.not. (ieee_is_finite(step) .and. abs(step) < 100.0_qp)) return
+        step = x0*exp(step)
+        if (step > lo .and. step < hi) x = step
+    end function ratio_form_point
 
     !> The Newton point in R from x0 (the unknown R, second half-arch) on
     !! F = log((limit - Upsilon)/(limit - psi)) in y = log R, Upsilon = angle at x0 with
