@@ -58,7 +58,11 @@
 !! errors are below 1e-35 of the unknown (otherwise the next step from there; secant
 !! steps as the last resort), s corrected along its slope and t by Hamilton-Jacobi
 !! (dt/dpsi = K at fixed rho). B within 1e-16 of its apse angle (below what the early
-!! phase resolves) starts from the slope next to u = 0 instead (`apse_start`). Other laws: a double-precision phase (regula falsi with
+!! phase resolves) starts from the slope next to u = 0 instead (`apse_start`). psi within
+!! 1e-10 of the sector's edge (below what the early phase resolves of limit - Upsilon):
+!! the early phase solves for limit - Upsilon = 1e-10 limit, then Newton steps on
+!! log((limit - Upsilon)/(limit - psi)) in log R from its tangent (`edge_steps`).
+!! Other laws: a double-precision phase (regula falsi with
 !! the Anderson-Bjorck correction) and quad-precision secant steps (`quad_phase`).
 module brachistochrone_central_force
     use brachistochrone_kinds, only: qp, pi, eps_qp, xp
@@ -2316,7 +2320,9 @@ contains
     !! status_parameter_out_of_range (law outside its range, `speed_law%valid`);
     !! status_no_convergence (not seen on accessible endpoints; reported, not hidden).
     !! R-bar below the binary128 range (logarithmic law, psi within about 1e-4 of pi) is
-    !! returned as 0 with s and t at their limits (`below_range`).
+    !! returned as 0 with s and t at their limits (`below_range`). Next to the sector's
+    !! edge R-bar is as close as the rounding of Upsilon places it: |Upsilon(R-bar) - psi|
+    !! within a few eps psi (`edge_steps`).
     pure function general_solve(self, rho, psi) result(solution)
         class(central_force_model), intent(in) :: self
         real(qp), intent(in) :: rho   !! endpoint radius, 0 < rho <= 1
