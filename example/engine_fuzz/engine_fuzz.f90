@@ -10,8 +10,10 @@
 !! time per endpoint, their ratio (issue 11: at most 10) and where the slowest one is.
 !! The slowest `retimed` endpoints of the pass are timed again (median of 5 solves each,
 !! so that a single interrupted solve does not count as the slowest): "retimed max".
+!! Endpoints within 1e-10 of the edge (second half-arch, R-bar > 0) are checked as
+!! solutions: the largest |Upsilon(R-bar) - psi| / (eps psi), Upsilon by `half_arch`.
 program engine_fuzz
-    use brachistochrone_kinds, only: qp
+    use brachistochrone_kinds, only: qp, eps_qp
     use brachistochrone_speed_laws, only: power_law, logarithmic_law
     use brachistochrone_central_force, only: central_force_model, new_central_force_model
     use brachistochrone_solution, only: endpoint_solution
@@ -19,7 +21,8 @@ program engine_fuzz
     type(central_force_model) :: m
     type(endpoint_solution) :: s
     character(len=32) :: text
-    real(qp) :: n, limit, rho, psi, u(3), worst_rho, worst_psi
+    real(qp) :: n, limit, rho, psi, u(3), worst_rho, worst_psi, angle, length, time, residual
+    integer :: status, checked
     real :: t0, t1
     real, allocatable :: times(:), order(:)
     real(qp), allocatable :: rhos(:), psis(:)
@@ -56,6 +59,8 @@ program engine_fuzz
     worst_rho = 0.0_qp
     worst_psi = 0.0_qp
     worst_steps = 0
+    residual = 0.0_qp
+    checked = 0
     do i = 1, count
         call random_number(u)
         select case (mod(i, 5))
@@ -83,6 +88,12 @@ program engine_fuzz
             bad = bad + 1
             if (bad <= show) print '(a,2es42.33e4,2i5)', 'unsolved', rho, psi, s%status, &
                 s%steps
+        end if
+        if (s%status == 0 .and. psi > limit*(1.0_qp - 1.0e-10_qp) .and. &
+            s%apse_radius > 0.0_qp) then
+            call m%half_arch(rho, s%apse_radius, .true., angle, length, time, status)
+            residual = max(residual, abs(angle - psi)/(eps_qp*psi))
+            checked = checked + 1
         end if
         if (times(solved) >= maxval(times(1:solved))) then
             worst_rho = rho
@@ -116,6 +127,8 @@ program engine_fuzz
         times(solved)*1e6, ' max/median=', times(solved)/times(solved/2), &
         ' retimed max/median=', retime_max/times(solved/2), ' at rho, 1 - psi/edge', &
         real(worst_rho), real(1.0_qp - worst_psi/limit), ' steps ', worst_steps
+    print '(a,i0,a,f7.2)', '   edge endpoints checked ', checked, &
+        ', largest |Upsilon(R-bar) - psi|/(eps psi) ', real(residual)
 contains
     subroutine sort(a)
         real, intent(inout) :: a(:)
