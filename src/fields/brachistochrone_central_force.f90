@@ -2092,8 +2092,9 @@ contains
     !! phase solved D = early_gap (resolved in hardware precision) at x = R1 with F'(y1) =
     !! early_slope; from there the root of F's tangent (right of R-bar by the convexity,
     !! below lowest_log_r only if R-bar is below the binary128 range: `below_range`), then
-    !! Newton steps on F on the full rules (`final_step` with `previous`), kept inside the
-    !! bracket [y_lo, y_hi] of F's signs by bisection. Not `done`: x and the slope
+    !! Newton steps on F on the full rules (`final_step` with `previous`; far from the root
+    !! the next point from `edge_model_point`), kept inside the bracket [y_lo, y_hi] of
+    !! F's signs by bisection. Not `done`: x and the slope
     !! d Upsilon/dR for the secant steps, [lo, hi] the bracket in R.
     pure subroutine edge_steps(model, prob, early_gap, early_slope, x, lo, hi, solution, &
                                done, slope)
@@ -2131,6 +2132,8 @@ contains
                 y_lo = y
             end if
             if (form(2) > 0.0_qp) previous = [y, form(2)]
+            if (form(2) > 0.0_qp .and. abs(form(1)) > 1.0e-8_qp) &
+                call edge_model_point(model, prob, y, form, x_next, solution%steps)
             if (x_next /= x .and. x_next > exp(y_lo) .and. x_next < exp(y_hi)) then
                 y = log(x_next)
             else
@@ -2140,6 +2143,56 @@ contains
         lo = exp(y_lo)
         hi = exp(y_hi)
     end subroutine edge_steps
+
+    !> Next to the edge, after a full evaluation at y0 = log R (F, F' = form) not close to
+    !! the root: limit - Upsilon = A + P with P = Theta(rho, R) (a first half-arch's angle,
+    !! in hardware precision without cancellation) and A = 2 (lim Theta - Theta(R,R))
+    !! known at y0 as (limit - Upsilon) - P and taken as A0 exp(a (y - y0)) (power laws:
+    !! C R^(n-1)); the root of log((A + P)/(limit - psi)) on that model by Newton steps in
+    !! hardware precision (`steps` counted): x_next = R there (unchanged where the model
+    !! does not apply). Where the two terms cross between y0 and R-bar (rho small, n < 3)
+    !! the Newton point of F alone needs several more full evaluations.
+    pure subroutine edge_model_point(model, prob, y0, form, x_next, steps)
+        type(central_force_model), intent(in) :: model
+        type(endpoint_problem), intent(in) :: prob
+        real(qp), intent(in) :: y0, form(2)
+        real(qp), intent(inout) :: x_next
+        integer, intent(inout) :: steps
+        type(endpoint_problem) :: part
+        real(qp) :: gap, d0, p, p_slope, a0, rate, y, big_a, g, dy
+        real(xp) :: f, slope
+        integer :: k
+        gap = prob%limit - prob%psi
+        d0 = gap*exp(form(1))
+        part = prob
+        part%second = .false.
+        part%use_u = .false.
+        part%use_r = .false.
+        part%form = 1
+        ! (a tiny psi: the angle hint that takes theta_xp straight to int_lambda_r^Lambda)
+        part%psi = 1.0e-300_qp
+        y = y0
+        do k = 1, 8
+            call residual_xp(model, part, real(y, xp), .false., f, slope)
+            steps = steps + 1
+            p = exp(real(f, qp) + log(part%psi))
+            p_slope = real(slope, qp)
+            if (k == 1) then
+                a0 = d0 - p
+                ! (P alone, or A not resolved beside it: the Newton point of F stands)
+                if (.not. (a0 > 1.0e-6_qp*d0 .and. p > 0.0_qp)) return
+                rate = (d0*form(2) - p*p_slope)/a0
+                if (.not. (rate > 0.0_qp .and. ieee_is_finite(rate))) return
+            end if
+            big_a = a0*exp(rate*(y - y0))
+            g = log((big_a + p)/gap)
+            dy = -g*(big_a + p)/(rate*big_a + p_slope*p)
+            if (.not. (ieee_is_finite(dy) .and. abs(dy) < 100.0_qp)) return
+            y = y + dy
+            if (abs(dy) <= 1.0e-12_qp*max(1.0_qp, abs(y))) exit
+        end do
+        x_next = exp(y)
+    end subroutine edge_model_point
 
     !> The Newton point in u from x0 (the unknown u, first half-arch) on
     !! log(Upsilon/psi) in log u, Upsilon = angle at x0 with d Upsilon/du = upsilon_slope;
