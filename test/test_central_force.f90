@@ -66,7 +66,7 @@ contains
         call to_the_edge()
     end subroutine run_central_force_tests
 
-    !> Endpoints at the edge of the power laws' sectors, psi within 1e-12 .. 1e-32 of
+    !> Endpoints at the edge of the power laws' sectors, psi within 1e-10 .. 1e-32 of
     !! 2 pi/(n+1) (before branch i11-edge: status no_convergence for many with psi within
     !! 1e-17 of it, the early phase not resolving limit - Upsilon): each solved (status ok),
     !! as a solution: |Upsilon(R-bar) - psi| (`half_arch` at the returned R-bar, second
@@ -78,7 +78,9 @@ contains
         real(qp), parameter :: exponents(6) = [1.1_qp, 1.5_qp, 2.0_qp, 3.0_qp, 10.0_qp, &
                                                32.0_qp]
         real(qp), parameter :: radii(4) = [1.0_qp, 0.5_qp, 1.0e-20_qp, 1.0e-30_qp]
-        real(qp), parameter :: gaps(4) = [1.0e-12_qp, 1.0e-20_qp, 1.0e-28_qp, 1.0e-32_qp]
+        ! (1e-10: the early phase's own target, the edge path's threshold)
+        real(qp), parameter :: gaps(5) = [1.0e-10_qp, 1.0e-12_qp, 1.0e-20_qp, 1.0e-28_qp, &
+                                          1.0e-32_qp]
         ! 2 t0(0) - t0(rho): mpmath, t0(r) = int_0^sqrt(1-r) 2 s ds/sqrt(P(1 - s^2)),
         ! P(x) = 2 expm1((1-n) log1p(-s^2))/(n-1), mp.quad on [0, .1, .5, .9, sqrt(1-r)]
         ! (n = 3, rho = 0.5 gives 2 - sqrt(3)/2 to 40 digits)
@@ -139,13 +141,13 @@ contains
                 end do
             end do
         end do
-        write (output_unit, '(a,i0,a,i0,a,i0)') '   n = 1.1 .. 32, 16 endpoints each: '// &
+        write (output_unit, '(a,i0,a,i0,a,i0)') '   n = 1.1 .. 32, 20 endpoints each: '// &
             'unsolved ', failed, ', most evaluations ', most_steps, &
             ', s and t against their R -> 0 limits on ', limits
         write (output_unit, '(a,f6.2,a,f6.2,a,f6.2)') '   worst |Upsilon(R-bar) - psi| in '// &
             'eps psi ', residual, ', fewest digits of s, t = S, T(R-bar) ', worst, &
             ', against the limits ', worst_limit
-        call check(failed == 0, 'every endpoint within 1e-12 .. 1e-32 of the edge solved')
+        call check(failed == 0, 'every endpoint within 1e-10 .. 1e-32 of the edge solved')
         call check(residual <= 8.0_qp, '|Upsilon(R-bar) - psi| <= 8 eps psi at the edge')
         call check(worst >= 33.0_qp, 's and t = S, T at R-bar to >= 33 digits at the edge')
         call check(limits >= 8 .and. worst_limit >= 33.0_qp, &

@@ -2094,7 +2094,7 @@ contains
     !! below lowest_log_r only if R-bar is below the binary128 range: `below_range`), then
     !! Newton steps on F on the full rules (`final_step` with `previous`; far from the root
     !! the next point from `edge_model_point`), kept inside the bracket [y_lo, y_hi] of
-    !! F's signs by bisection. Not `done`: x and the slope
+    !! F's signs (y_hi = log hi at first) by bisection. Not `done`: x and the slope
     !! d Upsilon/dR for the secant steps, [lo, hi] the bracket in R.
     pure subroutine edge_steps(model, prob, early_gap, early_slope, x, lo, hi, solution, &
                                done, slope)
@@ -2109,10 +2109,12 @@ contains
         integer :: attempt
         done = .false.
         slope = 0.0_qp
-        y_hi = log(x)
+        ! (the bracket's upper end hi = rho/2, not the early root: limit - psi may equal
+        ! early_gap to its rounding)
+        y_hi = log(hi)
         y_lo = lowest_log_r
-        previous = [y_hi, early_slope]
-        y = y_hi - log(early_gap/(prob%limit - prob%psi))/early_slope
+        previous = [log(x), early_slope]
+        y = log(x) - log(early_gap/(prob%limit - prob%psi))/early_slope
         if (.not. (early_slope > 0.0_qp .and. ieee_is_finite(y))) return
         do attempt = 1, max_edge_steps
             if (.not. y > lowest_log_r) then
