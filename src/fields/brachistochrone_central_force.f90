@@ -64,7 +64,11 @@
 !! errors are below 1e-35 of the unknown (otherwise the next step from there; secant
 !! steps as the last resort), s corrected along its slope and t by Hamilton-Jacobi
 !! (dt/dpsi = K at fixed rho). B within 1e-16 of its apse angle (below what the early
-!! phase resolves) starts from the slope next to u = 0 instead (`apse_start`). Other laws: a double-precision phase (regula falsi with
+!! phase resolves) starts from the slope next to u = 0 instead (`apse_start`). psi within
+!! 1e-10 of the sector's edge (below what the early phase resolves of limit - Upsilon):
+!! the early phase solves for limit - Upsilon = 1e-10 limit, then Newton steps on
+!! log((limit - Upsilon)/(limit - psi)) in log R from its tangent (`edge_steps`).
+!! Other laws: a double-precision phase (regula falsi with
 !! the Anderson-Bjorck correction) and quad-precision secant steps (`quad_phase`).
 module brachistochrone_central_force
     use brachistochrone_kinds, only: qp, pi, eps_qp, xp
@@ -120,6 +124,12 @@ module brachistochrone_central_force
     !> Growth of the panels between the root panels (`arch_panels`), and their largest
     !! length in units of sigma
     real(qp), parameter :: ladder = 8.0_qp
+    !> psi within edge_gap (of the sector 2 lim Theta) of the sector's edge: limit -
+    !! Upsilon is below what the early phase resolves, it solves for limit - Upsilon =
+    !! edge_gap limit instead (`edge_steps`)
+    real(qp), parameter :: edge_gap = 1.0e-10_qp
+    !> Full-precision steps at most next to the sector's edge (`edge_steps`)
+    integer, parameter :: max_edge_steps = 12
     !> The far tables beyond them: Lambda in [table_high, far_high] (R from 1.7e-5 down
     !! to about 2e-35), far_pieces equal pieces in z = log Lambda (`build_far_tables`).
     real(qp), parameter :: far_high = 80.0_qp
@@ -2251,20 +2261,29 @@ contains
     !! moves s by less than a rounding; then s is corrected along its slope and t by
     !! Hamilton-Jacobi (t(x) = t(x0) + K (psi - Upsilon(x0))). Otherwise x_next, slope_next
     !! (the Newton point and the slope) for the secant steps of `quad_phase`.
+    !! With `previous` (next to the sector's edge, the unknown R: `edge_steps`) the step is
+    !! Newton's on F = log((limit - Upsilon)/(limit - psi)) in y = log R (`edge_newton`),
+    !! its curvature measured against the point `previous`; x0 itself is accepted where
+    !! |Upsilon - psi| is within two roundings of psi (R-bar's conditioning: the step is then
+    !! not resolved); `log_form` returns F and F' at x0.
     pure subroutine final_step(model, prob, x0, lo, hi, curvature, solution, done, x_next, &
-                               slope_next)
+                               slope_next, previous, log_form)
         type(central_force_model), intent(in) :: model
         type(endpoint_problem), intent(in) :: prob
         real(qp), intent(in) :: x0, lo, hi, curvature
         type(endpoint_solution), intent(inout) :: solution
         logical, intent(out) :: done
         real(qp), intent(out) :: x_next, slope_next
+        real(qp), intent(in), optional :: previous(2)   !! y = log R and F'(y) before x0
+        real(qp), intent(out), optional :: log_form(2)  !! F, F' at x0 (F = -huge: none)
         type(arch_setup) :: a
         real(xp) :: slopes(4)
-        real(qp) :: d, angle, s, t, f, lambda_slope, dx, x, floor, curve, error
+        real(qp) :: d, angle, s, t, f, lambda_slope, dx, x, floor, curve, error, noise
+        logical :: edge
         done = .false.
         x_next = x0
         slope_next = 0.0_qp
+        if (present(log_form)) log_form = [-huge(1.0_qp), 0.0_qp]
         a = setup_at(model, prob, x0)
         if (prob%use_u) then
             d = x0*x0
@@ -2285,6 +2304,20 @@ contains
         slope_next = real(slopes(1), qp)*lambda_slope
         if (.not. (ieee_is_finite(slope_next) .and. slope_next /= 0.0_qp)) return
         dx = -f/slope_next
+        noise = 0.0_qp
+        edge = present(previous) .and. present(log_form) .and. .not. prob%use_u
+        if (edge) then
+            call edge_newton(prob, x0, angle, slope_next, previous, dx, curve, noise, &
+                             log_form)
+            if (abs(f) <= 2.0_qp*eps_qp*prob%psi) then
+                ! x0 is R-bar as far as Upsilon's rounding places it
+                dx = 0.0_qp
+                curve = 0.0_qp
+                noise = 0.0_qp
+            else if (log_form(2) == 0.0_qp) then
+                return
+            end if
+        end if
         if (prob%use_u) then
             x = x0 + dx
         else
@@ -2292,9 +2325,13 @@ contains
             ! in R about 1/R: the Newton step in log R errs far less)
             x = x0 + x0*expm1_qp(dx)
         end if
-        if (.not. (x > lo .and. x < hi)) return
+        if (.not. (x > lo .and. x < hi)) then
+            if (prob%use_u .and. .not. prob%second) &
+                x_next = ratio_form_point(prob, x0, angle, slope_next, lo, hi, x0)
+            return
+        end if
         x_next = x
-        error = curve*dx*dx + abs(dx)*real(slopes(3)/abs(slopes(1)), qp)
+        error = curve*dx*dx + abs(dx)*(real(slopes(3)/abs(slopes(1)), qp) + noise)
         ! below 1e-35 of the unknown (R: relative), or, for the unknown R (below rho/2),
         ! moving Upsilon by less than 1e-35 psi (within the rounding of psi: R-bar's
         ! conditioning, next to the edge of the sector) and s by less than 1e-35 of itself
@@ -2304,11 +2341,19 @@ contains
                    error*abs(real(slopes(2), qp)*lambda_slope) <= 1.0e-35_qp*abs(s)))) then
             ! not certified: next to the sector's edge the next point by Newton on
             ! log(limit - Upsilon), nearly linear in log R there (`log_form_point`)
-            if (.not. prob%use_u .and. prob%form == 2) &
+            if (.not. prob%use_u .and. prob%form == 2 .and. .not. edge) &
                 x_next = log_form_point(prob, x0, angle, slope_next*x0, lo, hi, x)
+            ! first half-arch: by Newton on log(Upsilon/psi) in log u (B next to the start,
+            ! rho -> 1, tiny psi: Upsilon ~ (1 - rho)^(3/2)/u, Newton on Upsilon from
+            ! below only doubles u)
+            if (prob%use_u .and. .not. prob%second) &
+                x_next = ratio_form_point(prob, x0, angle, slope_next, lo, hi, x)
             return
         end if
         if (.not. abs(dx*lambda_slope*real(slopes(4), qp)) <= eps_qp*abs(s)) return
+        ! (next to the edge the step in log R may be large: s along its slope errs by
+        ! |s''| dx^2/2, s - s(R = 0) ~ R, |s''| about |s'| in log R)
+        if (edge .and. .not. dx*dx*abs(real(slopes(2), qp)) <= 0.25_qp*eps_qp*abs(s)) return
         solution%arclength = s + real(slopes(2), qp)*lambda_slope*dx
         solution%time = t - model%law%conserved(a%c)*f
         if (prob%use_u) then
@@ -2324,6 +2369,163 @@ contains
         solution%status = status_ok
         done = .true.
     end subroutine final_step
+
+    !> Newton's step dy on F = log((limit - Upsilon)/(limit - psi)) in y = log R at x0
+    !! (Upsilon = angle, d Upsilon/dy = upsilon_slope), F nearly linear in y next to the
+    !! sector's edge; curve twice |F''/(2F')| measured against `previous` (y, F'(y)), 10
+    !! where not measured; noise the relative error of F' from the rounding of limit -
+    !! Upsilon; form F, F' at x0 (F' = 0 where limit - Upsilon is not positive: no step).
+    pure subroutine edge_newton(prob, x0, angle, upsilon_slope, previous, dy, curve, &
+                                noise, form)
+        type(endpoint_problem), intent(in) :: prob
+        real(qp), intent(in) :: x0, angle, upsilon_slope, previous(2)
+        real(qp), intent(out) :: dy, curve, noise, form(2)
+        real(qp) :: deficit, y0
+        dy = 0.0_qp
+        curve = 10.0_qp
+        noise = 0.0_qp
+        form = [-huge(1.0_qp), 0.0_qp]
+        deficit = prob%limit - angle
+        if (.not. deficit > 0.0_qp) return
+        y0 = log(x0)
+        form = [log(deficit/(prob%limit - prob%psi)), -upsilon_slope/deficit]
+        if (.not. (form(2) > 0.0_qp .and. ieee_is_finite(form(2)))) then
+            form(2) = 0.0_qp
+            return
+        end if
+        dy = -form(1)/form(2)
+        noise = 4.0_qp*eps_qp*prob%psi/deficit
+        if (previous(2) > 0.0_qp .and. previous(1) /= y0) &
+            curve = (abs(form(2) - previous(2)) + 1.0e-18_qp*form(2))/ &
+                    (abs(y0 - previous(1))*form(2))
+    end subroutine edge_newton
+
+    !> Next to the sector's edge (second half-arch, R-bar < rho/2, limit - psi below
+    !! edge_gap limit): limit - Upsilon = D ~ C R^(n-1) (power laws; and (R/rho)^((n+1)/2)
+    !! terms), F = log(D/(limit - psi)) is nearly linear and convex in y = log R. The early
+    !! phase solved D = early_gap (resolved in hardware precision) at x = R1 with F'(y1) =
+    !! early_slope; from there the root of F's tangent (right of R-bar by the convexity,
+    !! below lowest_log_r only if R-bar is below the binary128 range: `below_range`), then
+    !! Newton steps on F on the full rules (`final_step` with `previous`; far from the root
+    !! the next point from `edge_model_point`), kept inside the bracket [y_lo, y_hi] of
+    !! F's signs (y_hi = log hi at first) by bisection. Not `done`: x and the slope
+    !! d Upsilon/dR for the secant steps, [lo, hi] the bracket in R.
+    pure subroutine edge_steps(model, prob, early_gap, early_slope, x, lo, hi, solution, &
+                               done, slope)
+        type(central_force_model), intent(in) :: model
+        type(endpoint_problem), intent(in) :: prob
+        real(qp), intent(in) :: early_gap, early_slope
+        real(qp), intent(inout) :: x, lo, hi
+        type(endpoint_solution), intent(inout) :: solution
+        logical, intent(out) :: done
+        real(qp), intent(out) :: slope
+        real(qp) :: y, y_lo, y_hi, previous(2), form(2), x_next
+        integer :: attempt
+        done = .false.
+        slope = 0.0_qp
+        ! (the bracket's upper end hi = rho/2, not the early root: limit - psi may equal
+        ! early_gap to its rounding)
+        y_hi = log(hi)
+        y_lo = lowest_log_r
+        previous = [log(x), early_slope]
+        y = log(x) - log(early_gap/(prob%limit - prob%psi))/early_slope
+        if (.not. (early_slope > 0.0_qp .and. ieee_is_finite(y))) return
+        do attempt = 1, max_edge_steps
+            if (.not. y > lowest_log_r) then
+                call below_range(model, prob, solution)
+                done = .true.
+                return
+            end if
+            x = exp(y)
+            lo = exp(y_lo)
+            hi = exp(y_hi)
+            call final_step(model, prob, x, lo, hi, 0.0_qp, solution, done, x_next, slope, &
+                            previous, form)
+            if (done) return
+            if (form(1) > 0.0_qp) then
+                y_hi = y
+            else
+                y_lo = y
+            end if
+            if (form(2) > 0.0_qp) previous = [y, form(2)]
+            if (form(2) > 0.0_qp .and. abs(form(1)) > 1.0e-8_qp) &
+                call edge_model_point(model, prob, y, form, x_next, solution%steps)
+            if (x_next /= x .and. x_next > exp(y_lo) .and. x_next < exp(y_hi)) then
+                y = log(x_next)
+            else
+                y = 0.5_qp*(y_lo + y_hi)
+            end if
+        end do
+        lo = exp(y_lo)
+        hi = exp(y_hi)
+    end subroutine edge_steps
+
+    !> Next to the edge, after a full evaluation at y0 = log R (F, F' = form) not close to
+    !! the root: limit - Upsilon = A + P with P = Theta(rho, R) (a first half-arch's angle,
+    !! in hardware precision without cancellation) and A = 2 (lim Theta - Theta(R,R))
+    !! known at y0 as (limit - Upsilon) - P and taken as A0 exp(a (y - y0)) (power laws:
+    !! C R^(n-1)); the root of log((A + P)/(limit - psi)) on that model by Newton steps in
+    !! hardware precision (`steps` counted): x_next = R there (unchanged where the model
+    !! does not apply). Where the two terms cross between y0 and R-bar (rho small, n < 3)
+    !! the Newton point of F alone needs several more full evaluations.
+    pure subroutine edge_model_point(model, prob, y0, form, x_next, steps)
+        type(central_force_model), intent(in) :: model
+        type(endpoint_problem), intent(in) :: prob
+        real(qp), intent(in) :: y0, form(2)
+        real(qp), intent(inout) :: x_next
+        integer, intent(inout) :: steps
+        type(endpoint_problem) :: part
+        real(qp) :: gap, d0, p, p_slope, a0, rate, y, big_a, g, dy
+        real(xp) :: f, slope
+        integer :: k
+        gap = prob%limit - prob%psi
+        d0 = gap*exp(form(1))
+        part = prob
+        part%second = .false.
+        part%use_u = .false.
+        part%use_r = .false.
+        part%form = 1
+        ! (a tiny psi: the angle hint that takes theta_xp straight to int_lambda_r^Lambda)
+        part%psi = 1.0e-300_qp
+        y = y0
+        do k = 1, 8
+            call residual_xp(model, part, real(y, xp), .false., f, slope)
+            steps = steps + 1
+            p = exp(real(f, qp) + log(part%psi))
+            p_slope = real(slope, qp)
+            if (k == 1) then
+                a0 = d0 - p
+                ! (P alone, or A not resolved beside it: the Newton point of F stands)
+                if (.not. (a0 > 1.0e-6_qp*d0 .and. p > 0.0_qp)) return
+                rate = (d0*form(2) - p*p_slope)/a0
+                if (.not. (rate > 0.0_qp .and. ieee_is_finite(rate))) return
+            end if
+            big_a = a0*exp(rate*(y - y0))
+            g = log((big_a + p)/gap)
+            dy = -g*(big_a + p)/(rate*big_a + p_slope*p)
+            if (.not. (ieee_is_finite(dy) .and. abs(dy) < 100.0_qp)) return
+            y = y + dy
+            if (abs(dy) <= 1.0e-12_qp*max(1.0_qp, abs(y))) exit
+        end do
+        x_next = exp(y)
+    end subroutine edge_model_point
+
+    !> The Newton point in u from x0 (the unknown u, first half-arch) on
+    !! log(Upsilon/psi) in log u, Upsilon = angle at x0 with d Upsilon/du = upsilon_slope;
+    !! `fallback` where it is not defined or leaves (lo, hi). Only a next iterate.
+    pure function ratio_form_point(prob, x0, angle, upsilon_slope, lo, hi, fallback) &
+        result(x)
+        type(endpoint_problem), intent(in) :: prob
+        real(qp), intent(in) :: x0, angle, upsilon_slope, lo, hi, fallback
+        real(qp) :: x
+        real(qp) :: step
+        x = fallback
+        if (.not. (angle > 0.0_qp .and. x0 > 0.0_qp .and. upsilon_slope /= 0.0_qp)) return
+        step = -log(angle/prob%psi)*angle/(x0*upsilon_slope)
+        if (.not. (ieee_is_finite(step) .and. abs(step) < 100.0_qp)) return
+        step = x0*exp(step)
+        if (step > lo .and. step < hi) x = step
+    end function ratio_form_point
 
     !> The Newton point in R from x0 (the unknown R, second half-arch) on
     !! F = log((limit - Upsilon)/(limit - psi)) in y = log R, Upsilon = angle at x0 with
@@ -2487,16 +2689,18 @@ contains
     !! status_parameter_out_of_range (law outside its range, `speed_law%valid`);
     !! status_no_convergence (not seen on accessible endpoints; reported, not hidden).
     !! R-bar below the binary128 range (logarithmic law, psi within about 1e-4 of pi) is
-    !! returned as 0 with s and t at their limits (`below_range`).
+    !! returned as 0 with s and t at their limits (`below_range`). Next to the sector's
+    !! edge R-bar is as close as the rounding of Upsilon places it: |Upsilon(R-bar) - psi|
+    !! within a few eps psi (`edge_steps`).
     pure function general_solve(self, rho, psi) result(solution)
         class(central_force_model), intent(in) :: self
         real(qp), intent(in) :: rho   !! endpoint radius, 0 < rho <= 1
         real(qp), intent(in) :: psi   !! endpoint angle, 0 <= psi <= pi
         type(endpoint_solution) :: solution
-        type(endpoint_problem) :: prob
+        type(endpoint_problem) :: prob, early
         real(qp) :: limit, apse_angle_rho, half, x, lo, hi, slope_q, curvature
         real(real64) :: f_lo, f_hi, slope, slope_hi
-        logical :: below, hardware, done, near
+        logical :: below, hardware, done, near, edge
 
         solution%rho = rho
         solution%psi = psi
@@ -2523,8 +2727,23 @@ contains
             return
         end if
         half = 0.5_qp*rho
-        call open_bracket(self, prob, apse_angle_rho, half, lo, hi, f_lo, f_hi, &
+        hardware = self%law%has_terms_xp()
+        ! psi within edge_gap of the sector's edge: the early phase (`early`) solves for
+        ! limit - Upsilon = edge_gap limit, which it resolves (`edge_steps`)
+        edge = hardware .and. prob%limit - psi < edge_gap*prob%limit
+        early = prob
+        if (edge) early%psi = prob%limit - edge_gap*prob%limit
+        call open_bracket(self, early, apse_angle_rho, half, lo, hi, f_lo, f_hi, &
                           solution%steps, below, slope_hi)
+        if (edge .and. early%use_u) then
+            ! (R-bar above rho/2 after all: the endpoint as it is)
+            edge = .false.
+            early = prob
+            call open_bracket(self, early, apse_angle_rho, half, lo, hi, f_lo, f_hi, &
+                              solution%steps, below, slope_hi)
+        end if
+        prob%use_u = early%use_u
+        prob%form = early%form
         if (below) then
             ! R-bar is below the binary128 range (the logarithmic law next to psi = pi):
             ! R-bar underflows to 0, and s, t equal their limits R -> 0 to far more
@@ -2532,13 +2751,12 @@ contains
             call below_range(self, prob, solution)
             return
         end if
-        hardware = self%law%has_terms_xp()
         near = .false.
         if (hardware .and. prob%use_u .and. prob%rho < 1.0_qp) then
             ! B within 1e-16 of its apse angle (not at it): below what the early phase
             ! resolves; the root from the slope next to u = 0
             if (abs(apse_angle_rho - psi) <= 1.0e-16_qp*psi) &
-                call apse_start(self, prob, hi, f_lo, x, slope_q, near)
+                call apse_start(self, early, hi, f_lo, x, slope_q, near)
             if (near) then
                 curvature = 0.0_qp
                 solution%steps = solution%steps + 1
@@ -2547,7 +2765,7 @@ contains
         if (near) then
             slope = real(slope_q, real64)
         else if (hardware) then
-            call hardware_phase(self, prob, lo, f_lo, hi, f_hi, x, slope_q, curvature, &
+            call hardware_phase(self, early, lo, f_lo, hi, f_hi, x, slope_q, curvature, &
                                 solution%steps, slope_hi)
             slope = real(slope_q, real64)
         else
@@ -2562,7 +2780,13 @@ contains
             lo = exp(lo)
             hi = half
         end if
-        if (hardware) then
+        if (edge) then
+            call edge_steps(self, prob, prob%limit - early%psi, slope_q, x, lo, hi, &
+                            solution, done, curvature)
+            if (done) return
+            slope = real(curvature, real64)
+            prob%form = 0
+        else if (hardware) then
             call final_steps(self, prob, x, lo, hi, curvature, solution, done, slope_q)
             if (done) return
             slope = real(slope_q, real64)
