@@ -119,6 +119,9 @@ module brachistochrone_repulsive
     !> Smallest |g| (and 3 - 2R) used by the solver: about eps^1.75 ~ 1e-59, where
     !! sqrt(beta) ~ 1e-30 is still far above the rounding of a = (3 - g)/2.
     real(qp), parameter :: critical_floor = eps_qp**1.75_qp
+    !> The critical curve's theta by its series below u = sqrt((r-1)/(r+3)) = 1/10
+    !! (r - 1 below about 0.04; the series' ratio 9u^2 = 0.09 there, 35 terms)
+    real(qp), parameter :: critical_series_end = 0.1_qp
 
     real(qp), parameter :: sqrt2 = sqrt(2.0_qp), sqrt3 = sqrt(3.0_qp), log_three = log(3.0_qp)
     !> Relative accuracy asked of each integral piece.
@@ -723,6 +726,48 @@ contains
         end subroutine integrate
     end subroutine panel_values
 
+    !> theta of the critical curve by its series in u (0 <= u < 1/3):
+    !! 2 sqrt3 sum_k (9^k - (-3)^k) u^(2k+1)/(2k+1), k >= 1 (= 8 sqrt3 u^3 + ...); the
+    !! closed form loses eps/(2 u^2) of it to the cancellation of its two u-terms.
+    pure function critical_angle_series(u) result(angle)
+        real(qp), intent(in) :: u
+        real(qp) :: angle
+        real(qp) :: u2, p9, p3, term
+        integer :: k
+        u2 = u*u
+        p9 = u
+        p3 = u
+        angle = 0.0_qp
+        do k = 1, 200
+            p9 = 9.0_qp*u2*p9
+            p3 = -3.0_qp*u2*p3
+            term = (p9 - p3)/real(2*k + 1, qp)
+            angle = angle + term
+            if (abs(term) <= 0.25_qp*eps_qp*angle) exit
+        end do
+        angle = 2.0_qp*sqrt3*angle
+    end function critical_angle_series
+
+    !> `critical_angle_series` in hardware precision (u < 1/10: 20 terms at most).
+    pure function critical_angle_series_xp(u) result(angle)
+        real(xp), intent(in) :: u
+        real(xp) :: angle
+        real(xp) :: u2, p9, p3, term
+        integer :: k
+        u2 = u*u
+        p9 = u
+        p3 = u
+        angle = 0.0_xp
+        do k = 1, 200
+            p9 = 9.0_xp*u2*p9
+            p3 = -3.0_xp*u2*p3
+            term = (p9 - p3)/real(2*k + 1, xp)
+            angle = angle + term
+            if (abs(term) <= 0.25_xp*epsilon(1.0_xp)*angle) exit
+        end do
+        angle = 2.0_xp*sqrt(3.0_xp)*angle
+    end function critical_angle_series_xp
+
     !> The critical brachistochrone K^2 = 27/8, Q = (x - 3/2)^2 (x + 3), in closed form
     !! (1 <= r < 3/2). With u = sqrt((r-1)/(r+3)) (so x = (1+3u^2)/(1-u^2)),
     !! theta's integrand becomes 16u^2/((1+3u^2)(1-9u^2)) du and t's
@@ -734,7 +779,8 @@ contains
     !! As r -> 3/2, 1 - 9u^2 = 4(3-2r)/(r+3) and 1 - 3w^2 = (3-2r)/(r+3) -> 0: theta, s, t
     !! grow like -log(3 - 2r)/sqrt3, -(sqrt3/2) log(3-2r), -(3/(2 sqrt2)) log(3-2r): the
     !! curve spirals round O infinitely often towards the circle r = 3/2, in infinite
-    !! time. The atanh near 1 are taken from 3 - 2r (exact there) to keep the digits.
+    !! time. The atanh near 1 are taken from 3 - 2r (exact there) to keep the digits;
+    !! theta for u < `critical_series_end` by its series (`critical_angle_series`).
     pure subroutine critical_values(r, angle, length, time, status)
         real(qp), intent(in) :: r                    !! radius, 1 <= r < 3/2
         real(qp), intent(out) :: angle, length, time !! theta, s, t at r
@@ -756,7 +802,11 @@ contains
         e = 3.0_qp - 2.0_qp*r
         atanh_3u = log(1.0_qp + 3.0_qp*u) - 0.5_qp*log(4.0_qp*e/(r + 3.0_qp))
         atanh_3w = log(1.0_qp + sqrt3*w) - 0.5_qp*log(e/(r + 3.0_qp))
-        angle = 2.0_qp/sqrt3*atanh_3u - 2.0_qp*atan(sqrt3*u)
+        if (u < critical_series_end) then
+            angle = critical_angle_series(u)
+        else
+            angle = 2.0_qp/sqrt3*atanh_3u - 2.0_qp*atan(sqrt3*u)
+        end if
         length = sqrt3*(atanh_3w - atanh(0.5_qp*sqrt3)) - (sqrt(r*(r + 3.0_qp)) - 2.0_qp)
         time = (3.0_qp*atanh_3u - atanh(u) - sqrt((r - 1.0_qp)*(r + 3.0_qp)))/sqrt2
     end subroutine critical_values
@@ -1599,6 +1649,9 @@ contains
         e = real((3.0_qp - 2.0_qp*rho)/(rho + 3.0_qp), xp)
         angle_critical = real(2.0_xp/sqrt(3.0_xp)*(log(1.0_xp + 3.0_xp*u) - &
                               0.5_xp*log(4.0_xp*e)) - 2.0_xp*atan(sqrt(3.0_xp)*u), qp)
+        ! next to the start theta_c ~ 8 sqrt3 u^3: the closed form's two u-terms cancel
+        if (u < real(critical_series_end, xp)) &
+            angle_critical = real(critical_angle_series_xp(u), qp)
         stat(1) = status_ok
         call curve_from_apse(rho, curve, stat(2))
         call panel_values(curve, rho, .false., rules, .true., values, stat(3))
