@@ -1020,8 +1020,10 @@ contains
                 return
             end if
             if ((f_lo > 0.0_qp) .neqv. (f_hi > 0.0_qp)) then
+                ! bounded: lambda -> 0 as R -> 1 (R - 1 = -expm1(lambda)/2), relative only
                 call bracketed_secant(fun, lo, f_lo, hi, f_hi, 4.0_qp*eps_qp, &
-                                      4.0_qp*eps_qp, max_steps, x, steps, status)
+                                      merge(4.0_qp*eps_qp, tiny(1.0_qp), &
+                                      arch == arch_unbounded), max_steps, x, steps, status)
                 if (status /= status_ok) then
                     solution%status = status
                     return
@@ -1426,8 +1428,11 @@ contains
                 done = .true.
                 return
             end if
-            slope = slopes(1)
         end if
+        ! the complex-step slope when it is within 1e-3 of the differences' (their own
+        ! error when the curvature is large; the secant below certifies it by the
+        ! residual's decrease)
+        if (abs(slopes(1) - slope) <= 1.0e-3_qp*abs(slopes(1))) slope = slopes(1)
         ! else a second binary128 evaluation at the Newton step, and the secant
         x1 = x0 - f0/slope
         call curve_of_lambda(arch, x1, curve, rho)
@@ -1800,8 +1805,9 @@ contains
         else if (rho >= 1.5_qp .or. target < angle_critical) then
             ! next to the radial path (P below 1/2 by theta's small-K law) the unknown is
             ! log P, else log g
-            near = merge(near_radial, arch_unbounded, 2.0_qp*log(1.5_qp*target) - &
-                         3.0_qp*log((rho - 1.0_qp)/rho) < 3.0_qp*log(0.5_qp))
+            near = merge(near_radial, arch_unbounded, 2.0_xp*log(1.5_xp*real(target, xp)) - &
+                         3.0_xp*(log(real(rho - 1.0_qp, xp)) - log(real(rho, xp))) < &
+                         3.0_xp*log(0.5_xp))
             call solve_fast_or_slow(rho, target, near, log_three, -target, rules, solution)
         else
             ! next to the apse (R - rho below 1e-4 of 3 - 2 rho and of rho - 1 by the
