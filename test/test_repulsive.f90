@@ -426,6 +426,23 @@ contains
         call check(size(sol) == 1, 'two-point: psi = 0 has one sense')
         call check_close(sol(1)%time, repulsive_radial_time(2.0_qp), 8.0_qp, &
                          'two-point: psi = 0 is radial, t = (49)')
+        ! psi so small that K^2 ~ (3 psi/2)^2/(2 (1 - 1/rho)^3) underflows (1e-6000 at
+        ! rho = 1001, psi = 1e-3000): the radial path's s and t to O(K^2); before, the
+        ! adaptive fallback returned status ok with theta = 2.4e-49
+        call solve_repulsive(1001.0_qp, 1.0e-3000_qp, 0, sol, best, status)
+        call check(status == status_ok .and. best == 1 .and. sol(1)%status == status_ok &
+                   .and. sol(1)%arch == arch_unbounded, &
+                   'two-point: psi = 1e-3000 at rho = 1001 solved (K^2 below the range)')
+        call check_close(sol(1)%arclength, 1000.0_qp, 4.0_qp, &
+                         'two-point: psi = 1e-3000: s = rho - 1 to O(K^2)')
+        call check_close(sol(1)%time, repulsive_radial_time(1001.0_qp), 8.0_qp, &
+                         'two-point: psi = 1e-3000: t = (49) to O(K^2)')
+        ! just above that range, psi = 1e-2400 (K^2 ~ 1e-4800): solved as a curve
+        call solve_repulsive(1001.0_qp, 1.0e-2400_qp, 0, sol, best, status)
+        call check(status == status_ok .and. sol(1)%status == status_ok, &
+                   'two-point: psi = 1e-2400 at rho = 1001 solved')
+        call check_close(sol(1)%angle, 1.0e-2400_qp, 64.0_qp, &
+                         'two-point: psi = 1e-2400: the curve sweeps psi')
     end subroutine two_point
 
     !> Two-point solutions against the problem solved independently by mpmath (findroot on

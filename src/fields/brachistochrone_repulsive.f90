@@ -1043,6 +1043,10 @@ contains
         call repulsive_values(solution%curve, rho, arch == arch_second, &
                               solution%angle, solution%arclength, solution%time, status)
         solution%status = status
+        ! the curve found must sweep the target (its error is far below 1e-20 of it
+        ! wherever the secant converged; an unresolved unknown is a failure, not a value)
+        if (status == status_ok .and. .not. abs(solution%angle - target) <= &
+            1.0e-20_qp*target) solution%status = status_no_convergence
     end subroutine solve_branch
 
     !> theta(rho) - target on the curve of lambda, in hardware precision (fast panels).
@@ -1791,12 +1795,14 @@ contains
                 return
             end if
         end if
-        if (target == 0.0_qp) then
-            ! psi = 0, m = 0: the radial path (K = 0); B = A when rho = 1
+        if (target == 0.0_qp .or. below_range(rho, target)) then
+            ! psi = 0, m = 0: the radial path (K = 0); B = A when rho = 1. A target so small
+            ! that K^2 underflows (`below_range`): s and t are the radial path's to O(K^2)
             call set_from_gap(3.0_qp, solution%curve)
             solution%arch = arch_unbounded
             call repulsive_values(solution%curve, rho, .false., solution%angle, &
                                   solution%arclength, solution%time, stat_values)
+            solution%angle = target
             solution%status = stat_values
         else if (rho == 1.0_qp) then
             ! complete arches: lambda = log(3 - 2R) up to 0 (R -> 1, angle -> 0)
@@ -1820,6 +1826,19 @@ contains
                                     angle_apse - target, rules, solution)
         end if
     end subroutine solve_target
+
+    !> Whether K^2 of the curve through (rho, target) is below the smallest normal
+    !! binary128 number: by theta's small-K law theta = (2/3)((1 - 1/rho) P)^(3/2) and
+    !! 2 K^2 = P^3/(1 + P), K^2 ~ (3 theta/2)^2/(2 (1 - 1/rho)^3) (e.g. psi = 1e-3000 at
+    !! rho = 1001; in logarithms: nothing underflows). The curve is then the radial path
+    !! to far more than 34 digits in s and t (they differ from it by O(K^2)).
+    pure logical function below_range(rho, target)
+        real(qp), intent(in) :: rho, target
+        below_range = rho > 1.0_qp .and. target > 0.0_qp
+        if (.not. below_range) return
+        below_range = 2.0_qp*log(1.5_qp*target) - log(2.0_qp) &
+            - 3.0_qp*log((rho - 1.0_qp)/rho) < log(tiny(1.0_qp))
+    end function below_range
 
     !> One target on one branch: the fast path, else the adaptive one.
     pure subroutine solve_fast_or_slow(rho, target, arch, lambda_top, f_top, rules, &
