@@ -206,6 +206,9 @@ module brachistochrone_central_force
         real(qp) :: limit = 0.0_qp    !! 2 lim Theta(R,R), R -> 0
         integer :: form = 0           !! 0: Upsilon - psi; 1: log(Upsilon/psi);
                                       !! 2: log((limit - Upsilon)/(limit - psi))
+        !> the residual's slope at the lower end of the early phase's bracket in y = log R
+        !! (`open_bracket`; 0: unknown)
+        real(real64) :: slope_lo = 0.0_real64
     end type endpoint_problem
 
 contains
@@ -1951,6 +1954,18 @@ contains
         end if
     end function log_of_ratio
 
+    !> exp(z) - 1 in hardware precision, z <= 0 (Kahan's correction: 2 exp(z/2) sinh(z/2)
+    !! where it is small).
+    elemental function expm1_xp(z) result(e)
+        real(xp), intent(in) :: z
+        real(xp) :: e
+        if (abs(z) < 0.5_xp) then
+            e = 2.0_xp*exp(0.5_xp*z)*sinh(0.5_xp*z)
+        else
+            e = exp(z) - 1.0_xp
+        end if
+    end function expm1_xp
+
     !> log(1 + z) in hardware precision (Kahan's correction of log(1 + z)).
     elemental function log1p_xp(z) result(l)
         real(xp), intent(in) :: z
@@ -2030,7 +2045,9 @@ contains
     !! the bracket [lo, hi] (f of opposite signs at its ends; regula falsi with the
     !! Anderson-Bjorck correction where a Newton step would leave it), and where the
     !! previous evaluation of the same precision is at hand the root of the inverse
-    !! cubic Hermite interpolant through both (`hermite_step`). First `rough`
+    !! cubic Hermite interpolant through both (`hermite_step`); the first iterate from the
+    !! bracket's slopes where `open_bracket` has them (steep laws: a quadratic in lambda_r;
+    !! y = log R on the second half-arch: inverse Hermite through both ends). First `rough`
     !! evaluations (12-digit rules, transcendentals in double precision) until a step is
     !! below 1e-5 of the unknown or the Newton point within 1e-10 of the Hermite point
     !! (the next iterate then within about 1e-10), then hardware-precision ones (20-digit
@@ -2069,15 +2086,28 @@ contains
         if (present(slope_hi) .and. prob%use_u .and. prob%form == 0) then
             if (slope_hi /= 0.0_real64) xk = hermite(real(slope_hi, xp))
         end if
+        ! the unknown y = log R: the inverse Hermite root through both ends where their
+        ! slopes are known (the bracket's residuals and slopes of `open_bracket`)
+        if (present(slope_hi) .and. .not. prob%use_u .and. prob%form == 2 .and. &
+            prob%slope_lo /= 0.0_real64) then
+            if (slope_hi /= 0.0_real64) then
+                xk = inverse_hermite(a, fa, real(prob%slope_lo, xp), b, fb, &
+                                     real(slope_hi, xp), falsi())
+                ! the curvature measured from the nearer end on (as between iterates)
+                x_prev = merge(a, b, abs(xk - a) < abs(xk - b))
+                d_prev = real(merge(prob%slope_lo, slope_hi, abs(xk - a) < abs(xk - b)), xp)
+            end if
+        end if
         ! steep laws (logarithmic forms): f about linear in lambda_r ~ u^2/R near the
-        ! root, from f(0) at u = 0: regula falsi in u^2
+        ! root, from f(0) at u = 0: regula falsi in u^2, or the quadratic in lambda_r
+        ! through f(0), f(b) and f'(b) where the slope is known
         if (prob%use_u .and. prob%form /= 0 .and. a == 0.0_xp .and. &
-            ((fa < 0.0_xp) .neqv. (fb < 0.0_xp))) xk = b*sqrt(fa/(fa - fb))
+            ((fa < 0.0_xp) .neqv. (fb < 0.0_xp))) xk = root_in_square(.true.)
         ! rho next to 1 (second half-arch): Upsilon - Theta(rho,rho) ~ c u^2 but for the
         ! smallest u (falsi would start far below the root; f of opposite signs at a = 0
         ! and b)
         if (prob%use_u .and. prob%second .and. prob%one_minus_rho < 1.0e-6_qp .and. &
-            ((fa < 0.0_xp) .neqv. (fb < 0.0_xp))) xk = b*sqrt(fa/(fa - fb))
+            ((fa < 0.0_xp) .neqv. (fb < 0.0_xp))) xk = root_in_square(.false.)
         do iteration = 1, 80
             call residual_xp(model, prob, xk, rough, fk, dk)
             steps = steps + 1
@@ -2162,6 +2192,23 @@ contains
             x_new = x_h
         end subroutine hermite_step
 
+        !> The first iterate for f about linear in lambda_r = log(rho/(rho - u^2)) next
+        !! to u = a = 0: the root in lambda_r of the quadratic through f(0), f(b) and the
+        !! slope f'(b) in lambda_r where slope_hi is given and `with_slope`, else regula
+        !! falsi in u^2.
+        pure real(xp) function root_in_square(with_slope)
+            logical, intent(in) :: with_slope
+            real(xp) :: rho, l_b, l
+            root_in_square = b*sqrt(fa/(fa - fb))
+            if (.not. (present(slope_hi) .and. with_slope)) return
+            if (slope_hi == 0.0_real64) return
+            rho = real(prob%rho, xp)
+            l_b = -log1p_xp(-b*b/rho)
+            l = quadratic_root(0.0_xp, fa, l_b, fb, &
+                               real(slope_hi, xp)*(rho - b*b)/(2.0_xp*b))
+            if (l > 0.0_xp .and. l < l_b) root_in_square = sqrt(-rho*expm1_xp(-l))
+        end function root_in_square
+
         pure real(xp) function falsi()
             falsi = b - fb*(b - a)/(fb - fa)
             if (.not. (falsi > min(a, b) .and. falsi < max(a, b))) falsi = 0.5_xp*(a + b)
@@ -2171,21 +2218,47 @@ contains
         !! if there is none.
         pure real(xp) function hermite(d)
             real(xp), intent(in) :: d
-            real(xp) :: c, disc, q, t(2)
-            hermite = falsi()
-            c = (fa - fb + d*(b - a))/(b - a)**2
-            disc = d*d - 4.0_xp*c*fb
-            if (.not. disc >= 0.0_xp) return
-            q = -0.5_xp*(d + sign(sqrt(disc), d))
-            if (q == 0.0_xp) return
-            t = [fb/q, merge(q/c, huge(1.0_xp), c /= 0.0_xp)]
-            if (b + t(1) > min(a, b) .and. b + t(1) < max(a, b)) then
-                hermite = b + t(1)
-            else if (b + t(2) > min(a, b) .and. b + t(2) < max(a, b)) then
-                hermite = b + t(2)
-            end if
+            hermite = quadratic_root(a, fa, b, fb, d)
+            if (.not. (hermite > min(a, b) .and. hermite < max(a, b))) hermite = falsi()
         end function hermite
     end subroutine hardware_phase
+
+    !> The root of the inverse cubic Hermite interpolant x(f) through (p, f_p, d_p) and
+    !! (r, f_r, d_r) (values and slopes) where f is monotone between them and the root
+    !! lies between p and r; `fallback` otherwise.
+    pure real(xp) function inverse_hermite(p, f_p, d_p, r, f_r, d_r, fallback) result(x)
+        real(xp), intent(in) :: p, f_p, d_p, r, f_r, d_r, fallback
+        real(xp) :: h, s
+        x = fallback
+        if (d_p == 0.0_xp .or. d_r == 0.0_xp .or. (d_p > 0.0_xp .neqv. d_r > 0.0_xp)) &
+            return
+        if ((f_p > 0.0_xp .eqv. f_r > 0.0_xp) .or. (f_r - f_p > 0.0_xp .neqv. &
+            (r - p)*d_r > 0.0_xp)) return
+        h = f_r - f_p
+        s = -f_p/h
+        x = r + (2.0_xp*s + 1.0_xp)*(s - 1.0_xp)**2*(p - r) + &
+            h*s*(s - 1.0_xp)*((s - 1.0_xp)/d_p + s/d_r)
+        if (.not. (x > min(p, r) .and. x < max(p, r))) x = fallback
+    end function inverse_hermite
+
+    !> The root in (p, r) of f(r) + d t + c t^2 (t = x - r) through f(p) = f_p, f(r) = f_r
+    !! and f'(r) = d; huge if there is none.
+    pure real(xp) function quadratic_root(p, f_p, r, f_r, d) result(x)
+        real(xp), intent(in) :: p, f_p, r, f_r, d
+        real(xp) :: c, disc, q, t(2)
+        x = huge(1.0_xp)
+        c = (f_p - f_r + d*(r - p))/(r - p)**2
+        disc = d*d - 4.0_xp*c*f_r
+        if (.not. disc >= 0.0_xp) return
+        q = -0.5_xp*(d + sign(sqrt(disc), d))
+        if (q == 0.0_xp) return
+        t = [f_r/q, merge(q/c, huge(1.0_xp), c /= 0.0_xp)]
+        if (r + t(1) > min(p, r) .and. r + t(1) < max(p, r)) then
+            x = r + t(1)
+        else if (r + t(2) > min(p, r) .and. r + t(2) < max(p, r)) then
+            x = r + t(2)
+        end if
+    end function quadratic_root
 
     !> The rounding level of the early phase's residual f: Upsilon to about 1e-15
     !! (rough) or 1e-18 of itself; in form 2 divided by limit - Upsilon.
@@ -2933,7 +3006,7 @@ contains
         !> the residual's slope d f/du at hi (the unknown u, laws with hardware terms;
         !! else 0)
         real(real64), intent(out) :: slope_hi
-        real(real64) :: f_half, theta_half, scaled, shift, upsilon_slope
+        real(real64) :: f_half, theta_half, scaled, shift, upsilon_slope, lambda_slope
         real(xp) :: theta_xp_half, slope_xp, shift_xp
         real(qp) :: top, next
         real(real64) :: lo_slope, tangent
@@ -2941,15 +3014,17 @@ contains
         below = .false.
         prob%use_u = .true.
         upsilon_slope = 0.0_real64
+        lambda_slope = 0.0_real64
         slope_hi = 0.0_real64
+        prob%slope_lo = 0.0_real64
         if (self%law%has_terms_xp()) then
             ! as a rough early evaluation (with the tables)
             call theta_xp(self, setup_at64(self, prob, sqrt(prob%rho - half)), .true., &
                           theta_xp_half, slope_xp, shift_xp)
             theta_half = real(theta_xp_half*exp(-shift_xp), real64)
             ! d Upsilon/du = d Upsilon/d Lambda 2u/R at u = sqrt(rho - half), R = half
-            upsilon_slope = real(slope_xp*exp(-shift_xp), real64)* &
-                            real(2.0_qp*sqrt(prob%rho - half)/half, real64)
+            lambda_slope = real(slope_xp*exp(-shift_xp), real64)
+            upsilon_slope = lambda_slope*real(2.0_qp*sqrt(prob%rho - half)/half, real64)
         else
             call theta64(self, setup_at64(self, prob, sqrt(prob%rho - half)), scaled, shift)
             theta_half = scaled*exp(-shift)
@@ -2963,6 +3038,12 @@ contains
             hi = log(half)
             ! (Upsilon at R = rho/2 as above: the sign the branch was chosen by)
             f_hi = form_of(real(theta_half, qp))
+            ! (its slope in y: d Lambda/dy = -1)
+            if (prob%form == 2) then
+                slope_hi = lambda_slope/(real(prob%limit, real64) - theta_half)
+            else
+                slope_hi = -lambda_slope/theta_half
+            end if
             lo = hi
             top = hi
             next = hi - 8.0_qp
@@ -2985,10 +3066,17 @@ contains
                                                                .true.)) then
                         hi = lo
                         f_hi = f_lo
+                        slope_hi = lo_slope
                     end if
                 end if
             end do
             below = .not. f_lo < 0.0_real64
+            prob%slope_lo = lo_slope
+            if (lo == hi .or. .not. (ieee_is_finite(slope_hi) .and. &
+                                     ieee_is_finite(lo_slope))) then
+                slope_hi = 0.0_real64
+                prob%slope_lo = 0.0_real64
+            end if
         else
             ! R-bar in [rho/2, rho]: unknown u = sqrt(rho - R) on [0, sqrt(rho/2)], in
             ! the forms that follow steep laws (Theta(r,R) ~ (R/r)^((n+1)/2) on the first
