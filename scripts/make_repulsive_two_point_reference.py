@@ -382,6 +382,19 @@ def cases():
         ("rho_to_1", rho_112, "second", "logm1", ("psi", one, log(0.25))),
         ("rho_to_1", rho_112, "second", "logm1", ("psi", pi_b, log(0.45))),
         ("rho_to_1", rho_112, "second", "logm1", ("target", log(1e-33))),
+        # next to the start, rho - 1 tiny: below theta_c(rho) ~ 8 sqrt3 ((rho-1)/4)^(3/2),
+        # first half-arches far from their apse (psi << rho - 1 << R - 1) and second
+        # half-arches ending next to the start (rho - 1 << R - 1 ~ psi/pi)
+        ("near_start_unbounded", b(one + mp.mpf("1e-20")), "unbounded", "logk2",
+         ("target", log(2))),
+        ("near_start_first", b(one + mp.mpf("3.3e-23")), "first", "logm1",
+         ("target", log(2.6e-20))),
+        ("near_start_first", b(one + mp.mpf("8e-19")), "first", "logm1",
+         ("target", log(6.2e-16))),
+        ("near_start_second", b(one + mp.mpf("7.04e-31")), "second", "logm1",
+         ("target", log(2.2e-26))),
+        ("near_start_second", b(one + mp.mpf("4.4e-32")), "second", "logm1",
+         ("target", log(1.3e-24))),
         # complete arches, rho = 1, R -> 1
         ("complete", one, "complete", "logm1", ("psi", one, log(0.25))),
         ("complete", one, "complete", "logm1", ("psi", pi_b, log(0.45))),

@@ -59,8 +59,100 @@ contains
         call general_references('power3', power_law(n=3.0_qp))
         call general_references('logarithmic', logarithmic_law())
         call general_references('power10', power_law(n=10.0_qp))
+        ! (the inverse-square table through the general engine: its edge rows, R-bar = 1e-20
+        ! and 1e-30, ended with R-bar = 0 and s to 30 digits before branch i11-edge)
+        call general_references('power2', power_law(n=2.0_qp))
         call to_the_limits()
+        call to_the_edge()
     end subroutine run_central_force_tests
+
+    !> Endpoints at the edge of the power laws' sectors, psi within 1e-10 .. 1e-32 of
+    !! 2 pi/(n+1) (before branch i11-edge: status no_convergence for many with psi within
+    !! 1e-17 of it, the early phase not resolving limit - Upsilon): each solved (status ok),
+    !! as a solution: |Upsilon(R-bar) - psi| (`half_arch` at the returned R-bar, second
+    !! half-arch) within 8 eps psi, s and t = S, T at R-bar to >= 33 digits; where R-bar is
+    !! below 1e-35, s and t against their R -> 0 limits (1 - rho) + 2 rho and
+    !! 2 t0(0) - t0(rho), t0 by mpmath on int_r^1 dx/v (60 and 45 digits agreeing to 46;
+    !! in x = 1 - s^2: the mpmath command in the comment below) to 4 eps.
+    subroutine to_the_edge()
+        real(qp), parameter :: exponents(6) = [1.1_qp, 1.5_qp, 2.0_qp, 3.0_qp, 10.0_qp, &
+                                               32.0_qp]
+        real(qp), parameter :: radii(4) = [1.0_qp, 0.5_qp, 1.0e-20_qp, 1.0e-30_qp]
+        ! (1e-10: the early phase's own target, the edge path's threshold)
+        real(qp), parameter :: gaps(5) = [1.0e-10_qp, 1.0e-12_qp, 1.0e-20_qp, 1.0e-28_qp, &
+                                          1.0e-32_qp]
+        ! 2 t0(0) - t0(rho): mpmath, t0(r) = int_0^sqrt(1-r) 2 s ds/sqrt(P(1 - s^2)),
+        ! P(x) = 2 expm1((1-n) log1p(-s^2))/(n-1), mp.quad on [0, .1, .5, .9, sqrt(1-r)]
+        ! (n = 3, rho = 0.5 gives 2 - sqrt(3)/2 to 40 digits)
+        real(qp), parameter :: limit_t(6, 4) = reshape([ &
+            0.0_qp, 0.0_qp, 0.0_qp, 0.0_qp, 0.0_qp, 0.0_qp, &
+            1.526326692675333756860035425959304_qp, 1.425084378893371081528350306617925_qp, &
+            1.312527711216113580430533190220336_qp, 1.133974596215561353236276829247064_qp, &
+            0.0_qp, 0.0_qp, &
+            0.0_qp, 0.0_qp, 0.0_qp, 1.0_qp, 0.0_qp, 0.0_qp, &
+            0.0_qp, 0.0_qp, 0.0_qp, 1.0_qp, 0.645977837580984503309834651416545_qp, &
+            0.382157828065598531754130447768266_qp], [6, 4])
+        type(central_force_model) :: model
+        type(endpoint_solution) :: a
+        real(qp) :: psi, limit, angle, length, time, residual, worst, worst_limit
+        integer :: law, i, k, status, failed, limits, most_steps
+        call section('central force: to the edge of the sector 2 pi/(n+1)')
+        residual = 0.0_qp
+        worst = 99.0_qp
+        worst_limit = 99.0_qp
+        failed = 0
+        limits = 0
+        most_steps = 0
+        do law = 1, size(exponents)
+            model = new_central_force_model(power_law(n=exponents(law)))
+            limit = 2.0_qp*model%law%apse_angle_limit()
+            do i = 1, size(radii)
+                do k = 1, size(gaps)
+                    psi = limit*(1.0_qp - gaps(k))
+                    a = model%solve(radii(i), psi)
+                    if (a%status /= status_ok .or. .not. a%apse_radius > 0.0_qp) then
+                        failed = failed + 1
+                        write (output_unit, '(5x,a,f6.2,2es12.3,i3)') &
+                            'unsolved: n, rho, gap, status', exponents(law), radii(i), &
+                            gaps(k), a%status
+                        cycle
+                    end if
+                    most_steps = max(most_steps, a%steps)
+                    call model%half_arch(radii(i), a%apse_radius, .true., angle, length, &
+                                         time, status)
+                    residual = max(residual, abs(angle - psi)/(eps_qp*psi))
+                    worst = min(worst, digits_of_agreement(length, a%arclength), &
+                                digits_of_agreement(time, a%time))
+                    if (min(digits_of_agreement(length, a%arclength), &
+                            digits_of_agreement(time, a%time)) < 33.0_qp) &
+                        write (output_unit, '(5x,a,f6.2,4es12.3,2f7.2,i4)') &
+                        'weakest: n, rho, gap, R, |f|/eps psi, digits s, t', &
+                        exponents(law), radii(i), gaps(k), a%apse_radius, &
+                        abs(angle - psi)/(eps_qp*psi), digits_of_agreement(length, &
+                        a%arclength), digits_of_agreement(time, a%time), a%steps
+                    if (a%apse_radius < 1.0e-35_qp .and. limit_t(law, i) > 0.0_qp) then
+                        limits = limits + 1
+                        worst_limit = min(worst_limit, &
+                            -log10(abs(a%arclength - (1.0_qp + radii(i)))/(1.0_qp + &
+                                   radii(i)) + eps_qp/16.0_qp), &
+                            -log10(abs(a%time - limit_t(law, i))/limit_t(law, i) + &
+                                   eps_qp/16.0_qp))
+                    end if
+                end do
+            end do
+        end do
+        write (output_unit, '(a,i0,a,i0,a,i0)') '   n = 1.1 .. 32, 20 endpoints each: '// &
+            'unsolved ', failed, ', most evaluations ', most_steps, &
+            ', s and t against their R -> 0 limits on ', limits
+        write (output_unit, '(a,f6.2,a,f6.2,a,f6.2)') '   worst |Upsilon(R-bar) - psi| in '// &
+            'eps psi ', residual, ', fewest digits of s, t = S, T(R-bar) ', worst, &
+            ', against the limits ', worst_limit
+        call check(failed == 0, 'every endpoint within 1e-10 .. 1e-32 of the edge solved')
+        call check(residual <= 8.0_qp, '|Upsilon(R-bar) - psi| <= 8 eps psi at the edge')
+        call check(worst >= 33.0_qp, 's and t = S, T at R-bar to >= 33 digits at the edge')
+        call check(limits >= 8 .and. worst_limit >= 33.0_qp, &
+                   's, t against their R -> 0 limits (mpmath t0) to >= 33 digits')
+    end subroutine to_the_edge
 
     !> The ends of the domain: n -> 1 (the logarithmic law is its limit), the largest
     !! supported exponent, exponents refused beyond it, the logarithmic law up to psi = pi.

@@ -40,6 +40,7 @@ contains
         call winding_asymptotics()
         call constructors()
         call cycloid_limit()
+        call next_to_the_start()
         call bad_input()
     end subroutine run_repulsive_tests
 
@@ -425,6 +426,23 @@ contains
         call check(size(sol) == 1, 'two-point: psi = 0 has one sense')
         call check_close(sol(1)%time, repulsive_radial_time(2.0_qp), 8.0_qp, &
                          'two-point: psi = 0 is radial, t = (49)')
+        ! psi so small that K^2 ~ (3 psi/2)^2/(2 (1 - 1/rho)^3) underflows (1e-6000 at
+        ! rho = 1001, psi = 1e-3000): the radial path's s and t to O(K^2); before, the
+        ! adaptive fallback returned status ok with theta = 2.4e-49
+        call solve_repulsive(1001.0_qp, 1.0e-3000_qp, 0, sol, best, status)
+        call check(status == status_ok .and. best == 1 .and. sol(1)%status == status_ok &
+                   .and. sol(1)%arch == arch_unbounded, &
+                   'two-point: psi = 1e-3000 at rho = 1001 solved (K^2 below the range)')
+        call check_close(sol(1)%arclength, 1000.0_qp, 4.0_qp, &
+                         'two-point: psi = 1e-3000: s = rho - 1 to O(K^2)')
+        call check_close(sol(1)%time, repulsive_radial_time(1001.0_qp), 8.0_qp, &
+                         'two-point: psi = 1e-3000: t = (49) to O(K^2)')
+        ! just above that range, psi = 1e-2400 (K^2 ~ 1e-4800): solved as a curve
+        call solve_repulsive(1001.0_qp, 1.0e-2400_qp, 0, sol, best, status)
+        call check(status == status_ok .and. sol(1)%status == status_ok, &
+                   'two-point: psi = 1e-2400 at rho = 1001 solved')
+        call check_close(sol(1)%angle, 1.0e-2400_qp, 64.0_qp, &
+                         'two-point: psi = 1e-2400: the curve sweeps psi')
     end subroutine two_point
 
     !> Two-point solutions against the problem solved independently by mpmath (findroot on
@@ -557,6 +575,93 @@ contains
 
     !> R -> 1: near A the field is uniform (|F| = 1), so the complete arch tends to the
     !! cycloid of depth R - 1 = 2a: angle 2 pi a = pi (R - 1), time 2 pi sqrt(a).
+    !> Endpoints next to the start A with tiny angles (issue 11, "to the limits"; these
+    !! ended `no_convergence` or took milliseconds): the critical curve's angle there
+    !! (the closed form's two u-terms cancel, theta_c ~ 8 sqrt3 u^3) against its integral
+    !! (23); half-arches with rho - 1 down to 1e-31 against the uniform-field cycloid
+    !! (locally v^2 = 2 (r - 1): g = 1; x = a (phi - sin phi) = psi, y = a (1 - cos phi)
+    !! = rho - 1, R - 1 = 2a, s = 4a (1 - cos(phi/2)), t = phi sqrt(a), to O(R - 1));
+    !! unbounded curves next to the radial path against the small-K law
+    !! theta = K sqrt2 (2/3) (1 - 1/rho)^(3/2) (1 + O(K^2)), Q = x^3 - 2 K^2 (x - 1).
+    subroutine next_to_the_start()
+        type(repulsive_curve) :: curve
+        type(repulsive_solution), allocatable :: sol(:)
+        real(qp), parameter :: dr(4) = [4.3875e-32_qp, 3.30148208668e-23_qp, &
+                                        8.029800370179305e-19_qp, 7.04e-31_qp]
+        real(qp), parameter :: psis(4) = [4.0589638370536996203140716389895000e-24_qp, &
+            7.8342150555173075656052265948391088e-25_qp, &
+            1.9225950920634088391076075198062893e-20_qp, 7.0e-26_qp]
+        real(qp), parameter :: radii(3) = [1.001_qp, 2.0_qp, 1.0e4_qp]
+        real(qp), parameter :: angles(3) = [1.0e-30_qp, 1.0e-60_qp, 1.0e-200_qp]
+        real(qp) :: angle, length, time, closed, worst, rho, phi, a, k
+        integer :: i, j, best, status, stat
+        call section('repulsive: next to the start, tiny angles')
+        worst = 0.0_qp
+        call curve_from_gap(0.0_qp, curve, status)
+        do j = 8, 112, 8
+            rho = 1.0_qp + 2.0_qp**(-j)
+            call repulsive_values(curve, rho, .false., angle, length, time, status)
+            call critical_values(rho, closed, length, time, stat)
+            call check(status == status_ok .and. stat == status_ok, 'critical: status ok')
+            worst = max(worst, abs(closed - angle)/(eps_qp*angle))
+        end do
+        write (output_unit, '(a,f6.2)') '   critical theta_c = integral (23), r - 1 = '// &
+            '2^-8 .. 2^-112, worst eps: ', worst
+        call check(worst <= 8.0_qp, 'critical: theta_c next to the start to 8 eps')
+        do i = 1, size(dr)
+            rho = 1.0_qp + dr(i)
+            call solve_repulsive(rho, psis(i), 0, sol, best, status, mirror=.false.)
+            call check(status == status_ok .and. sol(1)%status == status_ok, &
+                       'next to the start: solved')
+            if (sol(1)%status /= status_ok) cycle
+            call check(sol(1)%steps <= 30, 'next to the start: at most 30 evaluations')
+            call check_close(sol(1)%angle, psis(i), 8.0_qp, 'next to the start: angle = psi')
+            phi = cycloid_phase(psis(i)/(rho - 1.0_qp))
+            a = (rho - 1.0_qp)/(2.0_qp*sin(0.5_qp*phi)**2)
+            call check(sol(1)%arch == merge(arch_first, arch_second, phi < pi), &
+                       'next to the start: the cycloid'//"'"//'s half-arch')
+            call check_close(sol(1)%curve%apse_m1, 2.0_qp*a, 1.0e20_qp, &
+                             'next to the start: R - 1 = cycloid to O(R - 1)')
+            call check_close(sol(1)%arclength, 8.0_qp*a*sin(0.25_qp*phi)**2, 1.0e20_qp, &
+                             'next to the start: s = cycloid to O(R - 1)')
+            call check_close(sol(1)%time, phi*sqrt(a), 1.0e20_qp, &
+                             'next to the start: t = cycloid to O(R - 1)')
+        end do
+        do i = 1, size(radii)
+            do j = 1, size(angles)
+                call solve_repulsive(radii(i), angles(j), 0, sol, best, status, &
+                                     mirror=.false.)
+                call check(status == status_ok .and. sol(1)%status == status_ok .and. &
+                           sol(1)%arch == arch_unbounded, 'next to the radial path: solved')
+                if (sol(1)%status /= status_ok) cycle
+                call check(sol(1)%steps <= 20, 'next to the radial path: <= 20 evaluations')
+                call check_close(sol(1)%angle, angles(j), 8.0_qp, &
+                                 'next to the radial path: angle = psi')
+                k = 3.0_qp*angles(j)/(2.0_qp*sqrt(2.0_qp)*((radii(i) - 1.0_qp)/radii(i))**1.5_qp)
+                call check_close(sol(1)%curve%k, k, 8.0_qp, &
+                                 'next to the radial path: K = small-K law')
+            end do
+        end do
+    contains
+        !> phi in (0, 2 pi) with (phi - sin phi)/(1 - cos phi) = ratio (increasing), by
+        !! bisection.
+        pure function cycloid_phase(ratio) result(phi)
+            real(qp), intent(in) :: ratio
+            real(qp) :: phi, lo, hi
+            integer :: n
+            lo = 0.0_qp
+            hi = 2.0_qp*pi
+            do n = 1, 200
+                phi = 0.5_qp*(lo + hi)
+                if ((phi - sin(phi))/(2.0_qp*sin(0.5_qp*phi)**2) < ratio) then
+                    lo = phi
+                else
+                    hi = phi
+                end if
+            end do
+        end function cycloid_phase
+    end subroutine next_to_the_start
+
     subroutine cycloid_limit()
         type(repulsive_curve) :: curve
         real(qp) :: angle, length, time, a, worst_angle, worst_time

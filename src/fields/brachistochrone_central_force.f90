@@ -15,16 +15,19 @@
 !!
 !! Quadrature: fixed Gauss-Legendre rules on panels chosen once per R. The integrands
 !! have square-root end singularities at the apse (lambda = 0) and at the start
-!! (delta = 0), removed by lambda = b s^2, delta = c s^2 on the end panels (two such
-!! panels meeting in between when Lambda is small), and complex singularities at
-!! distance sigma_apse, sigma_start from the ends (`log_scales`); the point x = 0 is at
-!! lambda = -infinity. Between the end panels the panels grow geometrically (ratio 8,
-!! length at most 8 sigma) away from both ends, so the count is O(log log(1/R)); an
-!! integral that ends at the endpoint inside the first of them takes one end panel up to
-!! it instead. The node count of each panel comes from the Bernstein ellipse through the
+!! (delta = 0), removed by lambda = b s^2, delta = c s^2 on the end panels (the start's
+!! up to delta = 16 c; two such panels meeting in between when Lambda is small; one
+!! panel lambda = Lambda s^2 (3 - 2 s), s in [0, 1], removing both when Lambda <= (b +
+!! c)/8, R -> 1), and complex singularities at distance sigma_apse, sigma_start from the
+!! ends (`log_scales`); the point x = 0 is at lambda = -infinity. Between the end panels
+!! the panels grow geometrically (ratio 8, length at most 8 sigma) away from both ends,
+!! so the count is O(log log(1/R)); an integral that ends at the endpoint inside the
+!! first of them takes one end panel up to it instead, and one that starts at an
+!! endpoint on the apse side the root variable continued from it (up to 8 sigma_apse
+!! further). The node count of each panel comes from the Bernstein ellipse through the
 !! nearest singularity (as on the inverse-square fast path), each singularity counted by
 !! the integrands' size there (`bernstein_log`), and the growth of the integrands off
-!! the real axis (`rule_for`). Away from the apse the integrands decay like
+!! the real axis (`rule_for`, `panel_growth`). Away from the apse the integrands decay like
 !! exp(-(n+1) lambda/2) or faster: each panel is asked only for the digits its share of
 !! the running sum needs, and panels below 1e-40 of it are skipped. Transcendentals:
 !! one or two fast exp/expm1 per node (`brachistochrone_fast_exp`; one for n = 2, 3),
@@ -61,7 +64,11 @@
 !! errors are below 1e-35 of the unknown (otherwise the next step from there; secant
 !! steps as the last resort), s corrected along its slope and t by Hamilton-Jacobi
 !! (dt/dpsi = K at fixed rho). B within 1e-16 of its apse angle (below what the early
-!! phase resolves) starts from the slope next to u = 0 instead (`apse_start`). Other laws: a double-precision phase (regula falsi with
+!! phase resolves) starts from the slope next to u = 0 instead (`apse_start`). psi within
+!! 1e-10 of the sector's edge (below what the early phase resolves of limit - Upsilon):
+!! the early phase solves for limit - Upsilon = 1e-10 limit, then Newton steps on
+!! log((limit - Upsilon)/(limit - psi)) in log R from its tangent (`edge_steps`).
+!! Other laws: a double-precision phase (regula falsi with
 !! the Anderson-Bjorck correction) and quad-precision secant steps (`quad_phase`).
 module brachistochrone_central_force
     use brachistochrone_kinds, only: qp, pi, eps_qp, xp
@@ -71,7 +78,7 @@ module brachistochrone_central_force
                                       status_no_convergence, argument_status, &
                                       status_parameter_out_of_range
     use brachistochrone_quad_math, only: log1p
-    use brachistochrone_fast_math, only: inverse_sqrt, hardware_real
+    use brachistochrone_fast_math, only: hardware_real, fast_sqrt
     use brachistochrone_fast_exp, only: fast_exp
     use brachistochrone_quadrature, only: gauss_legendre_rule, gauss_legendre
     use brachistochrone_speed_laws, only: speed_law
@@ -98,9 +105,10 @@ module brachistochrone_central_force
     !> A panel whose bound is below this share of the running sum is skipped.
     real(qp), parameter :: negligible = 1.0e-40_qp
     !> Panel kinds: lambda = b s^2 (from the apse), lambda, delta, delta = c s^2 (from
-    !! the start).
+    !! the start), lambda = Lambda s^2 (3 - 2 s) (s in [0, 1]: the whole of a short arch,
+    !! both roots removed; scale Lambda).
     integer, parameter :: kind_apse_root = 1, kind_apse = 2, kind_start = 3, &
-                          kind_start_root = 4
+                          kind_start_root = 4, kind_full = 5
     !> Most panels for one integral.
     integer, parameter :: max_panels = 160
     !> Lowest log R searched (R above the smallest normal binary128 number).
@@ -116,6 +124,12 @@ module brachistochrone_central_force
     !> Growth of the panels between the root panels (`arch_panels`), and their largest
     !! length in units of sigma
     real(qp), parameter :: ladder = 8.0_qp
+    !> psi within edge_gap (of the sector 2 lim Theta) of the sector's edge: limit -
+    !! Upsilon is below what the early phase resolves, it solves for limit - Upsilon =
+    !! edge_gap limit instead (`edge_steps`)
+    real(qp), parameter :: edge_gap = 1.0e-10_qp
+    !> Full-precision steps at most next to the sector's edge (`edge_steps`)
+    integer, parameter :: max_edge_steps = 12
     !> The far tables beyond them: Lambda in [table_high, far_high] (R from 1.7e-5 down
     !! to about 2e-35), far_pieces equal pieces in z = log Lambda (`build_far_tables`).
     real(qp), parameter :: far_high = 80.0_qp
@@ -192,6 +206,9 @@ module brachistochrone_central_force
         real(qp) :: limit = 0.0_qp    !! 2 lim Theta(R,R), R -> 0
         integer :: form = 0           !! 0: Upsilon - psi; 1: log(Upsilon/psi);
                                       !! 2: log((limit - Upsilon)/(limit - psi))
+        !> the residual's slope at the lower end of the early phase's bracket in y = log R
+        !! (`open_bracket`; 0: unknown)
+        real(real64) :: slope_lo = 0.0_real64
     end type endpoint_problem
 
 contains
@@ -649,11 +666,21 @@ contains
         type(arch_setup), intent(in) :: a
         type(panel), intent(out) :: panels(max_panels)
         integer, intent(out) :: count
-        real(qp) :: b, c, meet, lo, hi, origin, decay_rate
+        real(qp) :: b, c, meet, lo, hi, origin, decay_rate, top
         type(panel) :: start_side(max_panels)
         integer :: n_start, k
         count = 0
         call root_scales(model, a, b, c)
+        if (a%big_lambda <= 0.125_qp*(b + c)) then
+            ! a short arch: one panel lambda = Lambda s^2 (3 - 2 s), delta = Lambda (1 -
+            ! s)^2 (1 + 2 s), both end singularities removed (about half the nodes of two
+            ! root panels meeting in between: the other preimages of the ends, s = 3/2
+            ! and -1/2, are the nearest singularities; those of the complex ones stay
+            ! far while Lambda <= (b + c)/8; the root scales are the plain ones there)
+            call add_split(panels, count, kind_full, 0.0_qp, 1.0_qp, a%big_lambda, &
+                           split_full(a%lambda_r, a%delta_r, a%big_lambda), a)
+            return
+        end if
         if (a%big_lambda <= b + c) then
             ! two root panels meeting in between: lambda = b' s^2 and delta = c' s^2
             b = a%big_lambda*b/(b + c)
@@ -664,10 +691,20 @@ contains
                            split_root(a%delta_r/c), a)
         else
             meet = max(b, min(a%big_lambda - c, a%big_lambda*b/(b + c)))
-            ! apse side: lambda = b s^2 on [0, b], then [b, 4b], [4b, 16b], ... to meet
-            call add_split(panels, count, kind_apse_root, 0.0_qp, 1.0_qp, b, &
-                           split_root(a%lambda_r/b), a)
-            lo = b
+            if (continued_root(a, b, c)) then
+                ! an integral from an endpoint on the apse side: the root variable
+                ! continued from it to meet, or ladder sigma_apse further (the apse's
+                ! singularities stay away in s: fewer nodes than the root panel's piece
+                ! and the ladder's first panels)
+                lo = min(meet, a%lambda_r + ladder*model%sigma_apse)
+                call push(panels, count, panel(kind_apse_root, split_root(a%lambda_r/b), &
+                          split_root(lo/b), b, a%weight_above, 1.0_real64))
+            else
+                ! apse side: lambda = b s^2 on [0, b], then [b, 8b], [8b, 64b], ... to meet
+                call add_split(panels, count, kind_apse_root, 0.0_qp, 1.0_qp, b, &
+                               split_root(a%lambda_r/b), a)
+                lo = b
+            end if
             ! where the integrated region starts (the apse unless its weight is 0)
             origin = merge(0.0_qp, a%lambda_r, a%weight_below > 0.0_qp)
             decay_rate = pi/model%sigma_apse
@@ -684,9 +721,15 @@ contains
             ! start side, in delta, from meet down to the start
             n_start = 0
             if (decay_rate*(meet - origin) > 300.0_qp) return
-            call add_split(start_side, n_start, kind_start_root, 0.0_qp, 1.0_qp, c, &
-                           split_root(a%delta_r/c), a)
-            lo = c
+            ! delta = c s^2 on [0, top], top up to 2 ladder c (s = 4: the start's
+            ! singularities stay away in s; fewer nodes than the root panel and the
+            ! ladder's first panels; to meet if that is at most 2.5 ladder c away), then
+            ! the ladder
+            top = a%big_lambda - meet
+            if (top > 2.5_qp*ladder*c) top = 2.0_qp*ladder*c
+            call add_split(start_side, n_start, kind_start_root, 0.0_qp, split_root(top/c), &
+                           c, split_root(a%delta_r/c), a)
+            lo = top
             do while (lo < a%big_lambda - meet)
                 hi = min(ladder*lo, lo + ladder*model%sigma_start, a%big_lambda - meet)
                 if (hi > 0.75_qp*(a%big_lambda - meet) .and. &
@@ -722,6 +765,17 @@ contains
         end if
     end subroutine root_scales
 
+    !> Whether `arch_panels` takes the root variable continued from the endpoint (an
+    !! integral from it, weights 0 and 1, the endpoint on the apse side: lambda_r in
+    !! [b/4, meet)), b and c the root scales.
+    pure logical function continued_root(a, b, c)
+        type(arch_setup), intent(in) :: a
+        real(qp), intent(in) :: b, c
+        continued_root = a%weight_below == 0.0_qp .and. a%lambda_r >= 0.25_qp*b .and. &
+            a%lambda_r < max(b, min(a%big_lambda - c, a%big_lambda*b/(b + c))) .and. &
+            a%big_lambda > b + c
+    end function continued_root
+
     !> sqrt(z) for the root panels' splits, within an ulp: the hardware kind's square root
     !! and one correction (z - s^2)/(2 s) in it (libquadmath's sqrtq costs about ten
     !! binary128 multiplications); sqrt itself where that kind has no 64-bit significand.
@@ -737,6 +791,38 @@ contains
         s = real(s0, qp)
         s = s + real(real(z - s*s, xp)/(2.0_xp*s0), qp)
     end function split_root
+
+    !> The split s of a `kind_full` panel at lambda_r (delta_r = Lambda - lambda_r): w^2
+    !! (3 - 2 w) = t for the nearer end's offset t = min(lambda_r, delta_r)/Lambda <= 1/2
+    !! (s = w or 1 - w), by Newton steps in the hardware kind from w = sqrt(t/3) (below
+    !! the root; the cubic is convex there), then two corrections in binary128.
+    elemental function split_full(lambda_r, delta_r, big_lambda) result(s)
+        real(qp), intent(in) :: lambda_r, delta_r, big_lambda
+        real(qp) :: s, t, w
+        real(xp) :: tx, wx
+        integer :: k
+        t = min(lambda_r, delta_r)/big_lambda
+        if (.not. (t > 0.0_qp)) then
+            w = 0.0_qp
+        else
+            tx = real(t, xp)
+            if (.not. (tx > 0.0_xp)) then
+                ! below the hardware kind's range: the cubic term is negligible
+                s = merge(sqrt(t/3.0_qp), 1.0_qp - sqrt(t/3.0_qp), lambda_r <= delta_r)
+                return
+            end if
+            wx = sqrt(tx/3.0_xp)
+            do k = 1, 8
+                wx = wx - (wx*wx*(3.0_xp - 2.0_xp*wx) - tx)/(6.0_xp*wx*(1.0_xp - wx))
+            end do
+            w = real(wx, qp)
+            do k = 1, 2
+                w = w - real(real(w*w*(3.0_qp - 2.0_qp*w) - t, xp)/ &
+                             (6.0_xp*wx*(1.0_xp - wx)), qp)
+            end do
+        end if
+        s = merge(w, 1.0_qp - w, lambda_r <= delta_r)
+    end function split_full
 
     !> Add the panel [lo, hi] of `kind`, split at `split` (in the panel's variable) into
     !! the parts below and above the endpoint, with their weights; zero weights dropped.
@@ -791,7 +877,7 @@ contains
         logical, intent(in), optional :: unweighted
         real(real64) :: log_rho
         real(real64), parameter :: reach = 35.0_real64*log(10.0_real64), most = 8.0_real64
-        complex(real64) :: zeta(8), point, image(2)
+        complex(real64) :: zeta(8), point, image(3), t, arc
         real(real64) :: lo, hi, big, sa, ss, log_min, kappa, near, w, lr
         integer :: k, m, images
         lo = real(p%lo, real64)
@@ -807,7 +893,7 @@ contains
         ! (+-2i: not a singularity but the growth of the factors exp(-+lambda),
         ! exp(-delta) off the real axis, which fewer nodes would not resolve)
         select case (p%kind)
-        case (kind_apse_root, kind_apse)
+        case (kind_apse_root, kind_apse, kind_full)
             zeta = [(0.0_real64, 0.0_real64), cmplx(0.0_real64, sa, real64), &
                     cmplx(0.0_real64, -sa, real64), cmplx(big, 0.0_real64, real64), &
                     cmplx(big, ss, real64), cmplx(big, -ss, real64), &
@@ -826,6 +912,8 @@ contains
             near = lo
         case (kind_start)
             near = -hi
+        case (kind_full)
+            near = real(p%scale, real64)*lo*lo*(3.0_real64 - 2.0_real64*lo)
         case default
             near = -real(p%scale, real64)*hi*hi
         end select
@@ -835,11 +923,28 @@ contains
             ! largest (the offsets on the start side count toward the start)
             w = 0.0_real64
             if (k <= 6) w = min(0.0_real64, -kappa*(merge(1.0_real64, -1.0_real64, &
-                p%kind <= kind_apse)*real(zeta(k)) - near))
+                p%kind <= kind_apse .or. p%kind == kind_full)*real(zeta(k)) - near))
             if (w <= -reach) cycle
             if (p%kind == kind_apse .or. p%kind == kind_start) then
                 images = 1
                 image(1) = zeta(k)
+            else if (p%kind == kind_full) then
+                ! the preimages of lambda = zeta: s^2 (3 - 2 s) = t at s = 1/2 - sin((asin(1
+                ! - 2 t) + 2 pi m)/3), m = 0, 1, 2; the ends' double ones (s = 0 of the
+                ! apse, s = 1 of the start) removed by the substitution, none near the
+                ! panel for |t| > 1e6
+                t = zeta(k)/real(p%scale, real64)
+                if (abs(t) > 1.0e6_real64) cycle
+                arc = asin(1.0_real64 - 2.0_real64*t)
+                images = 0
+                do m = 0, 2
+                    point = 0.5_real64 - sin((arc + real(2*m, real64)* &
+                                              acos(-1.0_real64))/3.0_real64)
+                    if ((k == 1 .and. abs(point) < 1.0e-6_real64) .or. &
+                        (k == 4 .and. abs(1.0_real64 - point) < 1.0e-6_real64)) cycle
+                    images = images + 1
+                    image(images) = point
+                end do
             else
                 if (k == 1) cycle    ! removed by the substitution
                 point = sqrt(zeta(k)/real(p%scale, real64))
@@ -895,13 +1000,31 @@ contains
         end if
     end function rule_for
 
-    !> kappa h of a plain panel (0 for the root panels), kappa the decay rate.
+    !> kappa h of a plain panel, kappa the decay rate; its equivalent for a root panel
+    !! continued past s = 1 (`log_rho` set; 0 for the other root panels).
     pure function panel_growth(p, kappa) result(growth)
         type(panel), intent(in) :: p
         real(qp), intent(in) :: kappa
         real(real64) :: growth
+        real(real64) :: h, mid, most
         if (p%kind == kind_apse .or. p%kind == kind_start) then
             growth = real(kappa*0.5_qp*(p%hi - p%lo), real64)
+        else if (p%hi > 1.0_qp) then
+            ! a root panel continued past s = 1: on the ellipse s = mid + h cos(z), Im z
+            ! = l <= log_rho (cosh l <= most), the integrands' exponent kappa Re(lambda)
+            ! (kappa Re(delta)) strays from its value at the panel's end nearest the apse
+            ! by at most (cosh l - 1) times the growth below (the apse side: scale h (2
+            ! mid + h max(0, most - mid/h)), the second term where the ellipse passes
+            ! s = 0; the start side: scale h (2 mid + h (1 + most)))
+            h = real(0.5_qp*(p%hi - p%lo), real64)
+            mid = real(0.5_qp*(p%hi + p%lo), real64)
+            most = cosh(p%log_rho)
+            if (p%kind == kind_apse_root) then
+                growth = real(kappa*p%scale, real64)*h*(2.0_real64*mid + &
+                         h*max(0.0_real64, most - mid/h))
+            else
+                growth = real(kappa*p%scale, real64)*h*(2.0_real64*mid + h*(1.0_real64 + most))
+            end if
         else
             growth = 0.0_real64
         end if
@@ -925,6 +1048,10 @@ contains
             delta = v
             lambda = big_lambda - v
             jacobian = 1.0_qp
+        case (kind_full)
+            lambda = scale*(v*v*(3.0_qp - 2.0_qp*v))
+            delta = scale*((1.0_qp - v)**2*(1.0_qp + 2.0_qp*v))
+            jacobian = 6.0_qp*scale*(v*(1.0_qp - v))
         case default
             delta = scale*v*v
             lambda = big_lambda - delta
@@ -962,7 +1089,7 @@ contains
         logical, intent(in), optional :: every_panel
         type(panel) :: panels(max_panels)
         real(qp) :: part(3), last(3), share, jacobian, q, omq, qv, rx
-        real(qp) :: inverse_root, common, g(3), root_q, weighted, width, terms(max_nodes, 6)
+        real(qp) :: root_omq, common, g(3), root_q, weighted, width, terms(max_nodes, 6)
         real(xp) :: part_xp(2), carry(2), carry_all(2), log_slope, g_xp, slopes_k(max_nodes)
         integer :: count, p, k, j
         logical :: all_panels
@@ -996,20 +1123,25 @@ contains
             width = pan%hi - pan%lo
             call panel_nodes(model, a, pan, j, present(slopes), terms, slopes_k)
             do k = 1, model%gauss(j)%n
-                jacobian = terms(k, 1)
+                ! the Gauss weight folded into the Jacobian (1 on the linear panels)
+                if (pan%kind == kind_apse .or. pan%kind == kind_start) then
+                    jacobian = model%gauss(j)%weight(k)
+                else
+                    jacobian = terms(k, 1)*model%gauss(j)%weight(k)
+                end if
                 q = terms(k, 2)
                 omq = terms(k, 3)
                 qv = terms(k, 4)
                 rx = terms(k, 5)
                 root_q = terms(k, 6)
                 if (present(slopes)) log_slope = slopes_k(k)
-                ! 1/sqrt(1 - q) and sqrt(q/(1 - q)) by a double seed and Newton steps;
-                ! the Gauss weight folded into the Jacobian (g: weighted integrands)
-                inverse_root = inverse_sqrt(omq)
-                weighted = inverse_root*(jacobian*model%gauss(j)%weight(k))
+                ! sqrt(1 - q) by a hardware root and one correction, then two divisions
+                ! (g: weighted integrands)
+                root_omq = fast_sqrt(omq)
+                weighted = jacobian/root_omq
                 g(1) = root_q*weighted
                 if (want_length_time) then
-                    common = weighted/(rx*(1.0_qp + omq*inverse_root))
+                    common = weighted/(rx*(1.0_qp + root_omq))
                     g(2) = q*common
                     g(3) = qv*common
                 else
@@ -1026,8 +1158,7 @@ contains
                 end if
                 ! the node nearest the next panel
                 if (k == merge(1, model%gauss(j)%n, pan%kind >= kind_start .and. &
-                               pan%kind <= kind_start_root)) &
-                    last = abs(g/(jacobian*model%gauss(j)%weight(k)))
+                               pan%kind <= kind_start_root)) last = abs(g/jacobian)
             end do
             sums = sums + pan%weight*(pan%hi - pan%lo)*part
             if (present(slopes)) call add_compensated(slopes, carry_all, &
@@ -1057,8 +1188,9 @@ contains
         if (pan%kind == kind_start) side = 2
         mid = pan%lo + 0.5_qp*width
         if (side == 0) then
+            ! (the offsets from mid are not used on the root panels)
             v(1:n) = pan%lo + width*model%gauss(j)%offset
-            t(1:n) = v(1:n) - mid
+            t(1:n) = 0.0_qp
         else
             do k = 1, n/2
                 t(k) = width*(model%gauss(j)%offset(k) - 0.5_qp)
@@ -1220,7 +1352,8 @@ contains
         call root_scales(model, below, b(2), c(2))
         call root_scales(model, above, b(3), c(3))
         if (pi/model%sigma_apse*a%big_lambda <= 250.0_qp .and. all(b == b(1)) .and. &
-            all(c == c(1))) call arch_panels(model, both, panels, count)
+            all(c == c(1)) .and. .not. continued_root(above, b(3), c(3))) &
+            call arch_panels(model, both, panels, count)
         if (count >= max_panels) then
             call arch_panels(model, below, panels_below, n_below)
             call arch_panels(model, above, panels_above, n_above)
@@ -1285,6 +1418,8 @@ contains
         select case (p%kind)
         case (kind_apse_root, kind_start_root)
             length = p%scale*(p%hi**2 - p%lo**2)
+        case (kind_full)
+            length = p%scale*(p%hi**2*(3.0_qp - 2.0_qp*p%hi) - p%lo**2*(3.0_qp - 2.0_qp*p%lo))
         case default
             length = p%hi - p%lo
         end select
@@ -1336,6 +1471,10 @@ contains
                     delta = v
                     lambda = big - v
                     jacobian = 1.0_real64
+                case (kind_full)
+                    lambda = scale*(v*v*(3.0_real64 - 2.0_real64*v))
+                    delta = scale*((1.0_real64 - v)**2*(1.0_real64 + 2.0_real64*v))
+                    jacobian = 6.0_real64*scale*(v*(1.0_real64 - v))
                 case default
                     delta = scale*v*v
                     lambda = big - delta
@@ -1792,6 +1931,10 @@ contains
             delta = v
             lambda = big_lambda - v
             jacobian = 1.0_xp
+        case (kind_full)
+            lambda = scale*(v*v*(3.0_xp - 2.0_xp*v))
+            delta = scale*((1.0_xp - v)**2*(1.0_xp + 2.0_xp*v))
+            jacobian = 6.0_xp*scale*(v*(1.0_xp - v))
         case default
             delta = scale*v*v
             lambda = big_lambda - delta
@@ -1810,6 +1953,18 @@ contains
             l = log(real(ratio, xp))
         end if
     end function log_of_ratio
+
+    !> exp(z) - 1 in hardware precision, z <= 0 (Kahan's correction: 2 exp(z/2) sinh(z/2)
+    !! where it is small).
+    elemental function expm1_xp(z) result(e)
+        real(xp), intent(in) :: z
+        real(xp) :: e
+        if (abs(z) < 0.5_xp) then
+            e = 2.0_xp*exp(0.5_xp*z)*sinh(0.5_xp*z)
+        else
+            e = exp(z) - 1.0_xp
+        end if
+    end function expm1_xp
 
     !> log(1 + z) in hardware precision (Kahan's correction of log(1 + z)).
     elemental function log1p_xp(z) result(l)
@@ -1890,7 +2045,9 @@ contains
     !! the bracket [lo, hi] (f of opposite signs at its ends; regula falsi with the
     !! Anderson-Bjorck correction where a Newton step would leave it), and where the
     !! previous evaluation of the same precision is at hand the root of the inverse
-    !! cubic Hermite interpolant through both (`hermite_step`). First `rough`
+    !! cubic Hermite interpolant through both (`hermite_step`); the first iterate from the
+    !! bracket's slopes where `open_bracket` has them (steep laws: a quadratic in lambda_r;
+    !! y = log R on the second half-arch: inverse Hermite through both ends). First `rough`
     !! evaluations (12-digit rules, transcendentals in double precision) until a step is
     !! below 1e-5 of the unknown or the Newton point within 1e-10 of the Hermite point
     !! (the next iterate then within about 1e-10), then hardware-precision ones (20-digit
@@ -1929,15 +2086,28 @@ contains
         if (present(slope_hi) .and. prob%use_u .and. prob%form == 0) then
             if (slope_hi /= 0.0_real64) xk = hermite(real(slope_hi, xp))
         end if
+        ! the unknown y = log R: the inverse Hermite root through both ends where their
+        ! slopes are known (the bracket's residuals and slopes of `open_bracket`)
+        if (present(slope_hi) .and. .not. prob%use_u .and. prob%form == 2 .and. &
+            prob%slope_lo /= 0.0_real64) then
+            if (slope_hi /= 0.0_real64) then
+                xk = inverse_hermite(a, fa, real(prob%slope_lo, xp), b, fb, &
+                                     real(slope_hi, xp), falsi())
+                ! the curvature measured from the nearer end on (as between iterates)
+                x_prev = merge(a, b, abs(xk - a) < abs(xk - b))
+                d_prev = real(merge(prob%slope_lo, slope_hi, abs(xk - a) < abs(xk - b)), xp)
+            end if
+        end if
         ! steep laws (logarithmic forms): f about linear in lambda_r ~ u^2/R near the
-        ! root, from f(0) at u = 0: regula falsi in u^2
+        ! root, from f(0) at u = 0: regula falsi in u^2, or the quadratic in lambda_r
+        ! through f(0), f(b) and f'(b) where the slope is known
         if (prob%use_u .and. prob%form /= 0 .and. a == 0.0_xp .and. &
-            ((fa < 0.0_xp) .neqv. (fb < 0.0_xp))) xk = b*sqrt(fa/(fa - fb))
+            ((fa < 0.0_xp) .neqv. (fb < 0.0_xp))) xk = root_in_square(.true.)
         ! rho next to 1 (second half-arch): Upsilon - Theta(rho,rho) ~ c u^2 but for the
         ! smallest u (falsi would start far below the root; f of opposite signs at a = 0
         ! and b)
         if (prob%use_u .and. prob%second .and. prob%one_minus_rho < 1.0e-6_qp .and. &
-            ((fa < 0.0_xp) .neqv. (fb < 0.0_xp))) xk = b*sqrt(fa/(fa - fb))
+            ((fa < 0.0_xp) .neqv. (fb < 0.0_xp))) xk = root_in_square(.false.)
         do iteration = 1, 80
             call residual_xp(model, prob, xk, rough, fk, dk)
             steps = steps + 1
@@ -2022,6 +2192,23 @@ contains
             x_new = x_h
         end subroutine hermite_step
 
+        !> The first iterate for f about linear in lambda_r = log(rho/(rho - u^2)) next
+        !! to u = a = 0: the root in lambda_r of the quadratic through f(0), f(b) and the
+        !! slope f'(b) in lambda_r where slope_hi is given and `with_slope`, else regula
+        !! falsi in u^2.
+        pure real(xp) function root_in_square(with_slope)
+            logical, intent(in) :: with_slope
+            real(xp) :: rho, l_b, l
+            root_in_square = b*sqrt(fa/(fa - fb))
+            if (.not. (present(slope_hi) .and. with_slope)) return
+            if (slope_hi == 0.0_real64) return
+            rho = real(prob%rho, xp)
+            l_b = -log1p_xp(-b*b/rho)
+            l = quadratic_root(0.0_xp, fa, l_b, fb, &
+                               real(slope_hi, xp)*(rho - b*b)/(2.0_xp*b))
+            if (l > 0.0_xp .and. l < l_b) root_in_square = sqrt(-rho*expm1_xp(-l))
+        end function root_in_square
+
         pure real(xp) function falsi()
             falsi = b - fb*(b - a)/(fb - fa)
             if (.not. (falsi > min(a, b) .and. falsi < max(a, b))) falsi = 0.5_xp*(a + b)
@@ -2031,21 +2218,47 @@ contains
         !! if there is none.
         pure real(xp) function hermite(d)
             real(xp), intent(in) :: d
-            real(xp) :: c, disc, q, t(2)
-            hermite = falsi()
-            c = (fa - fb + d*(b - a))/(b - a)**2
-            disc = d*d - 4.0_xp*c*fb
-            if (.not. disc >= 0.0_xp) return
-            q = -0.5_xp*(d + sign(sqrt(disc), d))
-            if (q == 0.0_xp) return
-            t = [fb/q, merge(q/c, huge(1.0_xp), c /= 0.0_xp)]
-            if (b + t(1) > min(a, b) .and. b + t(1) < max(a, b)) then
-                hermite = b + t(1)
-            else if (b + t(2) > min(a, b) .and. b + t(2) < max(a, b)) then
-                hermite = b + t(2)
-            end if
+            hermite = quadratic_root(a, fa, b, fb, d)
+            if (.not. (hermite > min(a, b) .and. hermite < max(a, b))) hermite = falsi()
         end function hermite
     end subroutine hardware_phase
+
+    !> The root of the inverse cubic Hermite interpolant x(f) through (p, f_p, d_p) and
+    !! (r, f_r, d_r) (values and slopes) where f is monotone between them and the root
+    !! lies between p and r; `fallback` otherwise.
+    pure real(xp) function inverse_hermite(p, f_p, d_p, r, f_r, d_r, fallback) result(x)
+        real(xp), intent(in) :: p, f_p, d_p, r, f_r, d_r, fallback
+        real(xp) :: h, s
+        x = fallback
+        if (d_p == 0.0_xp .or. d_r == 0.0_xp .or. (d_p > 0.0_xp .neqv. d_r > 0.0_xp)) &
+            return
+        if ((f_p > 0.0_xp .eqv. f_r > 0.0_xp) .or. (f_r - f_p > 0.0_xp .neqv. &
+            (r - p)*d_r > 0.0_xp)) return
+        h = f_r - f_p
+        s = -f_p/h
+        x = r + (2.0_xp*s + 1.0_xp)*(s - 1.0_xp)**2*(p - r) + &
+            h*s*(s - 1.0_xp)*((s - 1.0_xp)/d_p + s/d_r)
+        if (.not. (x > min(p, r) .and. x < max(p, r))) x = fallback
+    end function inverse_hermite
+
+    !> The root in (p, r) of f(r) + d t + c t^2 (t = x - r) through f(p) = f_p, f(r) = f_r
+    !! and f'(r) = d; huge if there is none.
+    pure real(xp) function quadratic_root(p, f_p, r, f_r, d) result(x)
+        real(xp), intent(in) :: p, f_p, r, f_r, d
+        real(xp) :: c, disc, q, t(2)
+        x = huge(1.0_xp)
+        c = (f_p - f_r + d*(r - p))/(r - p)**2
+        disc = d*d - 4.0_xp*c*f_r
+        if (.not. disc >= 0.0_xp) return
+        q = -0.5_xp*(d + sign(sqrt(disc), d))
+        if (q == 0.0_xp) return
+        t = [f_r/q, merge(q/c, huge(1.0_xp), c /= 0.0_xp)]
+        if (r + t(1) > min(p, r) .and. r + t(1) < max(p, r)) then
+            x = r + t(1)
+        else if (r + t(2) > min(p, r) .and. r + t(2) < max(p, r)) then
+            x = r + t(2)
+        end if
+    end function quadratic_root
 
     !> The rounding level of the early phase's residual f: Upsilon to about 1e-15
     !! (rough) or 1e-18 of itself; in form 2 divided by limit - Upsilon.
@@ -2121,20 +2334,29 @@ contains
     !! moves s by less than a rounding; then s is corrected along its slope and t by
     !! Hamilton-Jacobi (t(x) = t(x0) + K (psi - Upsilon(x0))). Otherwise x_next, slope_next
     !! (the Newton point and the slope) for the secant steps of `quad_phase`.
+    !! With `previous` (next to the sector's edge, the unknown R: `edge_steps`) the step is
+    !! Newton's on F = log((limit - Upsilon)/(limit - psi)) in y = log R (`edge_newton`),
+    !! its curvature measured against the point `previous`; x0 itself is accepted where
+    !! |Upsilon - psi| is within two roundings of psi (R-bar's conditioning: the step is then
+    !! not resolved); `log_form` returns F and F' at x0.
     pure subroutine final_step(model, prob, x0, lo, hi, curvature, solution, done, x_next, &
-                               slope_next)
+                               slope_next, previous, log_form)
         type(central_force_model), intent(in) :: model
         type(endpoint_problem), intent(in) :: prob
         real(qp), intent(in) :: x0, lo, hi, curvature
         type(endpoint_solution), intent(inout) :: solution
         logical, intent(out) :: done
         real(qp), intent(out) :: x_next, slope_next
+        real(qp), intent(in), optional :: previous(2)   !! y = log R and F'(y) before x0
+        real(qp), intent(out), optional :: log_form(2)  !! F, F' at x0 (F = -huge: none)
         type(arch_setup) :: a
         real(xp) :: slopes(4)
-        real(qp) :: d, angle, s, t, f, lambda_slope, dx, x, floor, curve, error
+        real(qp) :: d, angle, s, t, f, lambda_slope, dx, x, floor, curve, error, noise
+        logical :: edge
         done = .false.
         x_next = x0
         slope_next = 0.0_qp
+        if (present(log_form)) log_form = [-huge(1.0_qp), 0.0_qp]
         a = setup_at(model, prob, x0)
         if (prob%use_u) then
             d = x0*x0
@@ -2155,6 +2377,20 @@ contains
         slope_next = real(slopes(1), qp)*lambda_slope
         if (.not. (ieee_is_finite(slope_next) .and. slope_next /= 0.0_qp)) return
         dx = -f/slope_next
+        noise = 0.0_qp
+        edge = present(previous) .and. present(log_form) .and. .not. prob%use_u
+        if (edge) then
+            call edge_newton(prob, x0, angle, slope_next, previous, dx, curve, noise, &
+                             log_form)
+            if (abs(f) <= 2.0_qp*eps_qp*prob%psi) then
+                ! x0 is R-bar as far as Upsilon's rounding places it
+                dx = 0.0_qp
+                curve = 0.0_qp
+                noise = 0.0_qp
+            else if (log_form(2) == 0.0_qp) then
+                return
+            end if
+        end if
         if (prob%use_u) then
             x = x0 + dx
         else
@@ -2162,9 +2398,13 @@ contains
             ! in R about 1/R: the Newton step in log R errs far less)
             x = x0 + x0*expm1_qp(dx)
         end if
-        if (.not. (x > lo .and. x < hi)) return
+        if (.not. (x > lo .and. x < hi)) then
+            if (prob%use_u .and. .not. prob%second) &
+                x_next = ratio_form_point(prob, x0, angle, slope_next, lo, hi, x0)
+            return
+        end if
         x_next = x
-        error = curve*dx*dx + abs(dx)*real(slopes(3)/abs(slopes(1)), qp)
+        error = curve*dx*dx + abs(dx)*(real(slopes(3)/abs(slopes(1)), qp) + noise)
         ! below 1e-35 of the unknown (R: relative), or, for the unknown R (below rho/2),
         ! moving Upsilon by less than 1e-35 psi (within the rounding of psi: R-bar's
         ! conditioning, next to the edge of the sector) and s by less than 1e-35 of itself
@@ -2174,11 +2414,19 @@ contains
                    error*abs(real(slopes(2), qp)*lambda_slope) <= 1.0e-35_qp*abs(s)))) then
             ! not certified: next to the sector's edge the next point by Newton on
             ! log(limit - Upsilon), nearly linear in log R there (`log_form_point`)
-            if (.not. prob%use_u .and. prob%form == 2) &
+            if (.not. prob%use_u .and. prob%form == 2 .and. .not. edge) &
                 x_next = log_form_point(prob, x0, angle, slope_next*x0, lo, hi, x)
+            ! first half-arch: by Newton on log(Upsilon/psi) in log u (B next to the start,
+            ! rho -> 1, tiny psi: Upsilon ~ (1 - rho)^(3/2)/u, Newton on Upsilon from
+            ! below only doubles u)
+            if (prob%use_u .and. .not. prob%second) &
+                x_next = ratio_form_point(prob, x0, angle, slope_next, lo, hi, x)
             return
         end if
         if (.not. abs(dx*lambda_slope*real(slopes(4), qp)) <= eps_qp*abs(s)) return
+        ! (next to the edge the step in log R may be large: s along its slope errs by
+        ! |s''| dx^2/2, s - s(R = 0) ~ R, |s''| about |s'| in log R)
+        if (edge .and. .not. dx*dx*abs(real(slopes(2), qp)) <= 0.25_qp*eps_qp*abs(s)) return
         solution%arclength = s + real(slopes(2), qp)*lambda_slope*dx
         solution%time = t - model%law%conserved(a%c)*f
         if (prob%use_u) then
@@ -2194,6 +2442,163 @@ contains
         solution%status = status_ok
         done = .true.
     end subroutine final_step
+
+    !> Newton's step dy on F = log((limit - Upsilon)/(limit - psi)) in y = log R at x0
+    !! (Upsilon = angle, d Upsilon/dy = upsilon_slope), F nearly linear in y next to the
+    !! sector's edge; curve twice |F''/(2F')| measured against `previous` (y, F'(y)), 10
+    !! where not measured; noise the relative error of F' from the rounding of limit -
+    !! Upsilon; form F, F' at x0 (F' = 0 where limit - Upsilon is not positive: no step).
+    pure subroutine edge_newton(prob, x0, angle, upsilon_slope, previous, dy, curve, &
+                                noise, form)
+        type(endpoint_problem), intent(in) :: prob
+        real(qp), intent(in) :: x0, angle, upsilon_slope, previous(2)
+        real(qp), intent(out) :: dy, curve, noise, form(2)
+        real(qp) :: deficit, y0
+        dy = 0.0_qp
+        curve = 10.0_qp
+        noise = 0.0_qp
+        form = [-huge(1.0_qp), 0.0_qp]
+        deficit = prob%limit - angle
+        if (.not. deficit > 0.0_qp) return
+        y0 = log(x0)
+        form = [log(deficit/(prob%limit - prob%psi)), -upsilon_slope/deficit]
+        if (.not. (form(2) > 0.0_qp .and. ieee_is_finite(form(2)))) then
+            form(2) = 0.0_qp
+            return
+        end if
+        dy = -form(1)/form(2)
+        noise = 4.0_qp*eps_qp*prob%psi/deficit
+        if (previous(2) > 0.0_qp .and. previous(1) /= y0) &
+            curve = (abs(form(2) - previous(2)) + 1.0e-18_qp*form(2))/ &
+                    (abs(y0 - previous(1))*form(2))
+    end subroutine edge_newton
+
+    !> Next to the sector's edge (second half-arch, R-bar < rho/2, limit - psi below
+    !! edge_gap limit): limit - Upsilon = D ~ C R^(n-1) (power laws; and (R/rho)^((n+1)/2)
+    !! terms), F = log(D/(limit - psi)) is nearly linear and convex in y = log R. The early
+    !! phase solved D = early_gap (resolved in hardware precision) at x = R1 with F'(y1) =
+    !! early_slope; from there the root of F's tangent (right of R-bar by the convexity,
+    !! below lowest_log_r only if R-bar is below the binary128 range: `below_range`), then
+    !! Newton steps on F on the full rules (`final_step` with `previous`; far from the root
+    !! the next point from `edge_model_point`), kept inside the bracket [y_lo, y_hi] of
+    !! F's signs (y_hi = log hi at first) by bisection. Not `done`: x and the slope
+    !! d Upsilon/dR for the secant steps, [lo, hi] the bracket in R.
+    pure subroutine edge_steps(model, prob, early_gap, early_slope, x, lo, hi, solution, &
+                               done, slope)
+        type(central_force_model), intent(in) :: model
+        type(endpoint_problem), intent(in) :: prob
+        real(qp), intent(in) :: early_gap, early_slope
+        real(qp), intent(inout) :: x, lo, hi
+        type(endpoint_solution), intent(inout) :: solution
+        logical, intent(out) :: done
+        real(qp), intent(out) :: slope
+        real(qp) :: y, y_lo, y_hi, previous(2), form(2), x_next
+        integer :: attempt
+        done = .false.
+        slope = 0.0_qp
+        ! (the bracket's upper end hi = rho/2, not the early root: limit - psi may equal
+        ! early_gap to its rounding)
+        y_hi = log(hi)
+        y_lo = lowest_log_r
+        previous = [log(x), early_slope]
+        y = log(x) - log(early_gap/(prob%limit - prob%psi))/early_slope
+        if (.not. (early_slope > 0.0_qp .and. ieee_is_finite(y))) return
+        do attempt = 1, max_edge_steps
+            if (.not. y > lowest_log_r) then
+                call below_range(model, prob, solution)
+                done = .true.
+                return
+            end if
+            x = exp(y)
+            lo = exp(y_lo)
+            hi = exp(y_hi)
+            call final_step(model, prob, x, lo, hi, 0.0_qp, solution, done, x_next, slope, &
+                            previous, form)
+            if (done) return
+            if (form(1) > 0.0_qp) then
+                y_hi = y
+            else
+                y_lo = y
+            end if
+            if (form(2) > 0.0_qp) previous = [y, form(2)]
+            if (form(2) > 0.0_qp .and. abs(form(1)) > 1.0e-8_qp) &
+                call edge_model_point(model, prob, y, form, x_next, solution%steps)
+            if (x_next /= x .and. x_next > exp(y_lo) .and. x_next < exp(y_hi)) then
+                y = log(x_next)
+            else
+                y = 0.5_qp*(y_lo + y_hi)
+            end if
+        end do
+        lo = exp(y_lo)
+        hi = exp(y_hi)
+    end subroutine edge_steps
+
+    !> Next to the edge, after a full evaluation at y0 = log R (F, F' = form) not close to
+    !! the root: limit - Upsilon = A + P with P = Theta(rho, R) (a first half-arch's angle,
+    !! in hardware precision without cancellation) and A = 2 (lim Theta - Theta(R,R))
+    !! known at y0 as (limit - Upsilon) - P and taken as A0 exp(a (y - y0)) (power laws:
+    !! C R^(n-1)); the root of log((A + P)/(limit - psi)) on that model by Newton steps in
+    !! hardware precision (`steps` counted): x_next = R there (unchanged where the model
+    !! does not apply). Where the two terms cross between y0 and R-bar (rho small, n < 3)
+    !! the Newton point of F alone needs several more full evaluations.
+    pure subroutine edge_model_point(model, prob, y0, form, x_next, steps)
+        type(central_force_model), intent(in) :: model
+        type(endpoint_problem), intent(in) :: prob
+        real(qp), intent(in) :: y0, form(2)
+        real(qp), intent(inout) :: x_next
+        integer, intent(inout) :: steps
+        type(endpoint_problem) :: part
+        real(qp) :: gap, d0, p, p_slope, a0, rate, y, big_a, g, dy
+        real(xp) :: f, slope
+        integer :: k
+        gap = prob%limit - prob%psi
+        d0 = gap*exp(form(1))
+        part = prob
+        part%second = .false.
+        part%use_u = .false.
+        part%use_r = .false.
+        part%form = 1
+        ! (a tiny psi: the angle hint that takes theta_xp straight to int_lambda_r^Lambda)
+        part%psi = 1.0e-300_qp
+        y = y0
+        do k = 1, 8
+            call residual_xp(model, part, real(y, xp), .false., f, slope)
+            steps = steps + 1
+            p = exp(real(f, qp) + log(part%psi))
+            p_slope = real(slope, qp)
+            if (k == 1) then
+                a0 = d0 - p
+                ! (P alone, or A not resolved beside it: the Newton point of F stands)
+                if (.not. (a0 > 1.0e-6_qp*d0 .and. p > 0.0_qp)) return
+                rate = (d0*form(2) - p*p_slope)/a0
+                if (.not. (rate > 0.0_qp .and. ieee_is_finite(rate))) return
+            end if
+            big_a = a0*exp(rate*(y - y0))
+            g = log((big_a + p)/gap)
+            dy = -g*(big_a + p)/(rate*big_a + p_slope*p)
+            if (.not. (ieee_is_finite(dy) .and. abs(dy) < 100.0_qp)) return
+            y = y + dy
+            if (abs(dy) <= 1.0e-12_qp*max(1.0_qp, abs(y))) exit
+        end do
+        x_next = exp(y)
+    end subroutine edge_model_point
+
+    !> The Newton point in u from x0 (the unknown u, first half-arch) on
+    !! log(Upsilon/psi) in log u, Upsilon = angle at x0 with d Upsilon/du = upsilon_slope;
+    !! `fallback` where it is not defined or leaves (lo, hi). Only a next iterate.
+    pure function ratio_form_point(prob, x0, angle, upsilon_slope, lo, hi, fallback) &
+        result(x)
+        type(endpoint_problem), intent(in) :: prob
+        real(qp), intent(in) :: x0, angle, upsilon_slope, lo, hi, fallback
+        real(qp) :: x
+        real(qp) :: step
+        x = fallback
+        if (.not. (angle > 0.0_qp .and. x0 > 0.0_qp .and. upsilon_slope /= 0.0_qp)) return
+        step = -log(angle/prob%psi)*angle/(x0*upsilon_slope)
+        if (.not. (ieee_is_finite(step) .and. abs(step) < 100.0_qp)) return
+        step = x0*exp(step)
+        if (step > lo .and. step < hi) x = step
+    end function ratio_form_point
 
     !> The Newton point in R from x0 (the unknown R, second half-arch) on
     !! F = log((limit - Upsilon)/(limit - psi)) in y = log R, Upsilon = angle at x0 with
@@ -2357,16 +2762,18 @@ contains
     !! status_parameter_out_of_range (law outside its range, `speed_law%valid`);
     !! status_no_convergence (not seen on accessible endpoints; reported, not hidden).
     !! R-bar below the binary128 range (logarithmic law, psi within about 1e-4 of pi) is
-    !! returned as 0 with s and t at their limits (`below_range`).
+    !! returned as 0 with s and t at their limits (`below_range`). Next to the sector's
+    !! edge R-bar is as close as the rounding of Upsilon places it: |Upsilon(R-bar) - psi|
+    !! within a few eps psi (`edge_steps`).
     pure function general_solve(self, rho, psi) result(solution)
         class(central_force_model), intent(in) :: self
         real(qp), intent(in) :: rho   !! endpoint radius, 0 < rho <= 1
         real(qp), intent(in) :: psi   !! endpoint angle, 0 <= psi <= pi
         type(endpoint_solution) :: solution
-        type(endpoint_problem) :: prob
+        type(endpoint_problem) :: prob, early
         real(qp) :: limit, apse_angle_rho, half, x, lo, hi, slope_q, curvature
         real(real64) :: f_lo, f_hi, slope, slope_hi
-        logical :: below, hardware, done, near
+        logical :: below, hardware, done, near, edge
 
         solution%rho = rho
         solution%psi = psi
@@ -2393,8 +2800,23 @@ contains
             return
         end if
         half = 0.5_qp*rho
-        call open_bracket(self, prob, apse_angle_rho, half, lo, hi, f_lo, f_hi, &
+        hardware = self%law%has_terms_xp()
+        ! psi within edge_gap of the sector's edge: the early phase (`early`) solves for
+        ! limit - Upsilon = edge_gap limit, which it resolves (`edge_steps`)
+        edge = hardware .and. prob%limit - psi < edge_gap*prob%limit
+        early = prob
+        if (edge) early%psi = prob%limit - edge_gap*prob%limit
+        call open_bracket(self, early, apse_angle_rho, half, lo, hi, f_lo, f_hi, &
                           solution%steps, below, slope_hi)
+        if (edge .and. early%use_u) then
+            ! (R-bar above rho/2 after all: the endpoint as it is)
+            edge = .false.
+            early = prob
+            call open_bracket(self, early, apse_angle_rho, half, lo, hi, f_lo, f_hi, &
+                              solution%steps, below, slope_hi)
+        end if
+        prob%use_u = early%use_u
+        prob%form = early%form
         if (below) then
             ! R-bar is below the binary128 range (the logarithmic law next to psi = pi):
             ! R-bar underflows to 0, and s, t equal their limits R -> 0 to far more
@@ -2402,13 +2824,12 @@ contains
             call below_range(self, prob, solution)
             return
         end if
-        hardware = self%law%has_terms_xp()
         near = .false.
         if (hardware .and. prob%use_u .and. prob%rho < 1.0_qp) then
             ! B within 1e-16 of its apse angle (not at it): below what the early phase
             ! resolves; the root from the slope next to u = 0
             if (abs(apse_angle_rho - psi) <= 1.0e-16_qp*psi) &
-                call apse_start(self, prob, hi, f_lo, x, slope_q, near)
+                call apse_start(self, early, hi, f_lo, x, slope_q, near)
             if (near) then
                 curvature = 0.0_qp
                 solution%steps = solution%steps + 1
@@ -2417,7 +2838,7 @@ contains
         if (near) then
             slope = real(slope_q, real64)
         else if (hardware) then
-            call hardware_phase(self, prob, lo, f_lo, hi, f_hi, x, slope_q, curvature, &
+            call hardware_phase(self, early, lo, f_lo, hi, f_hi, x, slope_q, curvature, &
                                 solution%steps, slope_hi)
             slope = real(slope_q, real64)
         else
@@ -2432,7 +2853,13 @@ contains
             lo = exp(lo)
             hi = half
         end if
-        if (hardware) then
+        if (edge) then
+            call edge_steps(self, prob, prob%limit - early%psi, slope_q, x, lo, hi, &
+                            solution, done, curvature)
+            if (done) return
+            slope = real(curvature, real64)
+            prob%form = 0
+        else if (hardware) then
             call final_steps(self, prob, x, lo, hi, curvature, solution, done, slope_q)
             if (done) return
             slope = real(slope_q, real64)
@@ -2579,7 +3006,7 @@ contains
         !> the residual's slope d f/du at hi (the unknown u, laws with hardware terms;
         !! else 0)
         real(real64), intent(out) :: slope_hi
-        real(real64) :: f_half, theta_half, scaled, shift, upsilon_slope
+        real(real64) :: f_half, theta_half, scaled, shift, upsilon_slope, lambda_slope
         real(xp) :: theta_xp_half, slope_xp, shift_xp
         real(qp) :: top, next
         real(real64) :: lo_slope, tangent
@@ -2587,15 +3014,17 @@ contains
         below = .false.
         prob%use_u = .true.
         upsilon_slope = 0.0_real64
+        lambda_slope = 0.0_real64
         slope_hi = 0.0_real64
+        prob%slope_lo = 0.0_real64
         if (self%law%has_terms_xp()) then
             ! as a rough early evaluation (with the tables)
             call theta_xp(self, setup_at64(self, prob, sqrt(prob%rho - half)), .true., &
                           theta_xp_half, slope_xp, shift_xp)
             theta_half = real(theta_xp_half*exp(-shift_xp), real64)
             ! d Upsilon/du = d Upsilon/d Lambda 2u/R at u = sqrt(rho - half), R = half
-            upsilon_slope = real(slope_xp*exp(-shift_xp), real64)* &
-                            real(2.0_qp*sqrt(prob%rho - half)/half, real64)
+            lambda_slope = real(slope_xp*exp(-shift_xp), real64)
+            upsilon_slope = lambda_slope*real(2.0_qp*sqrt(prob%rho - half)/half, real64)
         else
             call theta64(self, setup_at64(self, prob, sqrt(prob%rho - half)), scaled, shift)
             theta_half = scaled*exp(-shift)
@@ -2609,6 +3038,12 @@ contains
             hi = log(half)
             ! (Upsilon at R = rho/2 as above: the sign the branch was chosen by)
             f_hi = form_of(real(theta_half, qp))
+            ! (its slope in y: d Lambda/dy = -1)
+            if (prob%form == 2) then
+                slope_hi = lambda_slope/(real(prob%limit, real64) - theta_half)
+            else
+                slope_hi = -lambda_slope/theta_half
+            end if
             lo = hi
             top = hi
             next = hi - 8.0_qp
@@ -2631,10 +3066,17 @@ contains
                                                                .true.)) then
                         hi = lo
                         f_hi = f_lo
+                        slope_hi = lo_slope
                     end if
                 end if
             end do
             below = .not. f_lo < 0.0_real64
+            prob%slope_lo = lo_slope
+            if (lo == hi .or. .not. (ieee_is_finite(slope_hi) .and. &
+                                     ieee_is_finite(lo_slope))) then
+                slope_hi = 0.0_real64
+                prob%slope_lo = 0.0_real64
+            end if
         else
             ! R-bar in [rho/2, rho]: unknown u = sqrt(rho - R) on [0, sqrt(rho/2)], in
             ! the forms that follow steep laws (Theta(r,R) ~ (R/r)^((n+1)/2) on the first

@@ -84,6 +84,15 @@
 !! values 2 F(R) - F(r) are taken as F(r) + 2 (F(R) - F(r)), the difference integrated
 !! on its own pieces (`complement_pieces`): no cancellation next to the apse, and
 !! fewer nodes than the whole half-arch.
+!! **Next to the start** (tiny psi): on the unbounded branch next to the radial path
+!! (P below 1/2 by the small-K law theta = (2/3) ((1 - 1/rho) P)^(3/2) (1 + O(P))) the
+!! unknown is log P (`near_radial`; the curve keeps P exactly, `set_from_p`), bracketed
+!! from that law: log g = log(3 - P) would carry P only to eps absolutely. The branch
+!! split theta_c(rho) is taken from its series for rho - 1 < 0.04 (theta_c ~ 8 sqrt3 u^3,
+!! the closed form's u-terms cancel), so that first and second half-arches with
+!! rho - 1 down to 2^-112 are not sent to the unbounded branch. The secant step builds
+!! its curve from x1's by the step itself (x cannot resolve it when |lambda| eps is
+!! above it).
 module brachistochrone_repulsive
     use brachistochrone_kinds, only: qp, pi, eps_qp, xp
     use brachistochrone_status, only: status_ok, status_psi_out_of_range, &
@@ -119,6 +128,9 @@ module brachistochrone_repulsive
     !> Smallest |g| (and 3 - 2R) used by the solver: about eps^1.75 ~ 1e-59, where
     !! sqrt(beta) ~ 1e-30 is still far above the rounding of a = (3 - g)/2.
     real(qp), parameter :: critical_floor = eps_qp**1.75_qp
+    !> The critical curve's theta by its series below u = sqrt((r-1)/(r+3)) = 1/10
+    !! (r - 1 below about 0.04; the series' ratio 9u^2 = 0.09 there, 35 terms)
+    real(qp), parameter :: critical_series_end = 0.1_qp
 
     real(qp), parameter :: sqrt2 = sqrt(2.0_qp), sqrt3 = sqrt(3.0_qp), log_three = log(3.0_qp)
     !> Relative accuracy asked of each integral piece.
@@ -145,6 +157,10 @@ module brachistochrone_repulsive
     !> Added to arch_first, arch_second: the solver's unknown is u = sqrt(R - rho) (next
     !! to the apse, where R - rho would be formed by cancellation from lambda)
     integer, parameter :: near_apse = 100
+    !> The unbounded branch next to the radial path (P below 1/2): the unknown is
+    !! log P, P = 3 - g (theta ~ (2/3) ((1 - 1/rho) P)^(3/2): log g = log(3 - P) would
+    !! carry P only to eps absolutely, K^2 ~ P^3/2 to eps/P relatively)
+    integer, parameter :: near_radial = 50
     !> More digits asked of the panels of F(R) - F(r) on the second half-arch when they
     !! end at r (counted twice; at 35 digits measured up to 7 eps off mpmath at R - 1 =
     !! 1e-20); none for a complete arch (r = 1: the difference is F(R) itself)
@@ -322,6 +338,19 @@ contains
             end if
         end if
     end subroutine set_from_gap
+
+    !> The unbounded curve with P = 3 - g given (0 < P < 3), P kept exactly (next to the
+    !! radial path, where 3 - g would round P to eps absolutely).
+    pure subroutine set_from_p(p, curve)
+        real(qp), intent(in) :: p
+        type(repulsive_curve), intent(out) :: curve
+        call set_from_gap(3.0_qp - p, curve)
+        curve%p = p
+        curve%k2 = p**3/(2.0_qp*(1.0_qp + p))
+        curve%k = sqrt(curve%k2)
+        curve%centre = 0.5_qp*p
+        curve%width2 = p*p*curve%gap/(4.0_qp*(p + 1.0_qp))
+    end subroutine set_from_p
 
     pure subroutine set_bounded(apse_m1, apse_gap, curve)
         real(qp), intent(in) :: apse_m1, apse_gap   ! R - 1 and 3 - 2R, consistent
@@ -723,6 +752,48 @@ contains
         end subroutine integrate
     end subroutine panel_values
 
+    !> theta of the critical curve by its series in u (0 <= u < 1/3):
+    !! 2 sqrt3 sum_k (9^k - (-3)^k) u^(2k+1)/(2k+1), k >= 1 (= 8 sqrt3 u^3 + ...); the
+    !! closed form loses eps/(2 u^2) of it to the cancellation of its two u-terms.
+    pure function critical_angle_series(u) result(angle)
+        real(qp), intent(in) :: u
+        real(qp) :: angle
+        real(qp) :: u2, p9, p3, term
+        integer :: k
+        u2 = u*u
+        p9 = u
+        p3 = u
+        angle = 0.0_qp
+        do k = 1, 200
+            p9 = 9.0_qp*u2*p9
+            p3 = -3.0_qp*u2*p3
+            term = (p9 - p3)/real(2*k + 1, qp)
+            angle = angle + term
+            if (abs(term) <= 0.25_qp*eps_qp*angle) exit
+        end do
+        angle = 2.0_qp*sqrt3*angle
+    end function critical_angle_series
+
+    !> `critical_angle_series` in hardware precision (u < 1/10: 20 terms at most).
+    pure function critical_angle_series_xp(u) result(angle)
+        real(xp), intent(in) :: u
+        real(xp) :: angle
+        real(xp) :: u2, p9, p3, term
+        integer :: k
+        u2 = u*u
+        p9 = u
+        p3 = u
+        angle = 0.0_xp
+        do k = 1, 200
+            p9 = 9.0_xp*u2*p9
+            p3 = -3.0_xp*u2*p3
+            term = (p9 - p3)/real(2*k + 1, xp)
+            angle = angle + term
+            if (abs(term) <= 0.25_xp*epsilon(1.0_xp)*angle) exit
+        end do
+        angle = 2.0_xp*sqrt(3.0_xp)*angle
+    end function critical_angle_series_xp
+
     !> The critical brachistochrone K^2 = 27/8, Q = (x - 3/2)^2 (x + 3), in closed form
     !! (1 <= r < 3/2). With u = sqrt((r-1)/(r+3)) (so x = (1+3u^2)/(1-u^2)),
     !! theta's integrand becomes 16u^2/((1+3u^2)(1-9u^2)) du and t's
@@ -734,7 +805,8 @@ contains
     !! As r -> 3/2, 1 - 9u^2 = 4(3-2r)/(r+3) and 1 - 3w^2 = (3-2r)/(r+3) -> 0: theta, s, t
     !! grow like -log(3 - 2r)/sqrt3, -(sqrt3/2) log(3-2r), -(3/(2 sqrt2)) log(3-2r): the
     !! curve spirals round O infinitely often towards the circle r = 3/2, in infinite
-    !! time. The atanh near 1 are taken from 3 - 2r (exact there) to keep the digits.
+    !! time. The atanh near 1 are taken from 3 - 2r (exact there) to keep the digits;
+    !! theta for u < `critical_series_end` by its series (`critical_angle_series`).
     pure subroutine critical_values(r, angle, length, time, status)
         real(qp), intent(in) :: r                    !! radius, 1 <= r < 3/2
         real(qp), intent(out) :: angle, length, time !! theta, s, t at r
@@ -756,7 +828,11 @@ contains
         e = 3.0_qp - 2.0_qp*r
         atanh_3u = log(1.0_qp + 3.0_qp*u) - 0.5_qp*log(4.0_qp*e/(r + 3.0_qp))
         atanh_3w = log(1.0_qp + sqrt3*w) - 0.5_qp*log(e/(r + 3.0_qp))
-        angle = 2.0_qp/sqrt3*atanh_3u - 2.0_qp*atan(sqrt3*u)
+        if (u < critical_series_end) then
+            angle = critical_angle_series(u)
+        else
+            angle = 2.0_qp/sqrt3*atanh_3u - 2.0_qp*atan(sqrt3*u)
+        end if
         length = sqrt3*(atanh_3w - atanh(0.5_qp*sqrt3)) - (sqrt(r*(r + 3.0_qp)) - 2.0_qp)
         time = (3.0_qp*atanh_3u - atanh(u) - sqrt((r - 1.0_qp)*(r + 3.0_qp)))/sqrt2
     end subroutine critical_values
@@ -780,6 +856,8 @@ contains
             call set_near_apse(rho, lambda*lambda, curve)
         else if (arch == arch_unbounded) then
             call set_from_gap(exp(lambda), curve)
+        else if (arch == near_radial) then
+            call set_from_p(exp(lambda), curve)
         else
             call set_bounded(-0.5_qp*expm1(lambda), exp(lambda), curve)
         end if
@@ -798,7 +876,8 @@ contains
         real(qp), intent(in) :: rho
         real(xp) :: x, e
         real(qp) :: m
-        if (arch > near_apse .or. range(1.0_xp) < range(1.0_qp)) then
+        if (arch > near_apse .or. arch == near_radial .or. &
+            range(1.0_xp) < range(1.0_qp)) then
             call curve_of_lambda(arch, lambda, curve, rho)
             return
         end if
@@ -833,6 +912,8 @@ contains
         step = dx*(1.0_qp + 0.5_qp*dx)
         if (arch == arch_unbounded) then
             call set_from_gap(curve0%gap + curve0%gap*step, curve)
+        else if (arch == near_radial) then
+            call set_from_p(curve0%p + curve0%p*step, curve)
         else
             call set_bounded(curve0%apse_m1 - 0.5_qp*(curve0%apse_gap*step), &
                              curve0%apse_gap + curve0%apse_gap*step, curve)
@@ -862,6 +943,8 @@ contains
             call set_near_apse(rho, real(x*x, qp), curve)
         else if (arch == arch_unbounded) then
             call set_from_gap_rough(e, curve)
+        else if (arch == near_radial) then
+            call set_from_gap_rough(3.0_xp - e, curve, e)
         else
             ! expm1(x) = 2 sinh(x/2) exp(x/2), accurate as x -> 0
             call set_bounded_rough(-sinh(0.5_xp*x)*exp(0.5_xp*x), e, curve)
@@ -896,15 +979,18 @@ contains
 
     !> `set_from_gap` of an unbounded curve (g > 0) in hardware precision: the
     !! curve's numbers to about 1e-19 (g itself exact), no binary128 square root.
-    pure subroutine set_from_gap_rough(g, curve)
+    pure subroutine set_from_gap_rough(g, curve, p_exact)
         real(xp), intent(in) :: g
         type(repulsive_curve), intent(out) :: curve
+        real(xp), intent(in), optional :: p_exact !! P = 3 - g itself (`near_radial`)
         real(xp) :: p, k2
         if (range(1.0_xp) < range(1.0_qp)) then
             call set_from_gap(real(g, qp), curve)
+            if (present(p_exact)) call set_from_p(real(p_exact, qp), curve)
             return
         end if
         p = 3.0_xp - g
+        if (present(p_exact)) p = p_exact
         k2 = p**3/(2.0_xp*(1.0_xp + p))
         curve%gap = real(g, qp)
         curve%p = real(p, qp)
@@ -966,8 +1052,10 @@ contains
                 return
             end if
             if ((f_lo > 0.0_qp) .neqv. (f_hi > 0.0_qp)) then
+                ! bounded: lambda -> 0 as R -> 1 (R - 1 = -expm1(lambda)/2), relative only
                 call bracketed_secant(fun, lo, f_lo, hi, f_hi, 4.0_qp*eps_qp, &
-                                      4.0_qp*eps_qp, max_steps, x, steps, status)
+                                      merge(4.0_qp*eps_qp, tiny(1.0_qp), &
+                                      arch == arch_unbounded), max_steps, x, steps, status)
                 if (status /= status_ok) then
                     solution%status = status
                     return
@@ -987,6 +1075,10 @@ contains
         call repulsive_values(solution%curve, rho, arch == arch_second, &
                               solution%angle, solution%arclength, solution%time, status)
         solution%status = status
+        ! the curve found must sweep the target (its error is far below 1e-20 of it
+        ! wherever the secant converged; an unresolved unknown is a failure, not a value)
+        if (status == status_ok .and. .not. abs(solution%angle - target) <= &
+            1.0e-20_qp*target) solution%status = status_no_convergence
     end subroutine solve_branch
 
     !> theta(rho) - target on the curve of lambda, in hardware precision (fast panels).
@@ -1050,7 +1142,8 @@ contains
             complex(xp) :: cc(7), lower_c(max_pieces), upper_c(max_pieces)
             v = 0.0_qp
             call plan_pieces(curve, radius, .false., pieces, n, c%span)
-            call complex_step(curve, radius, h, c%span, pieces(1:n), cc, lower_c, upper_c)
+            call complex_step(curve, radius, h, c%span, pieces(1:n), cc, lower_c, upper_c, &
+                              arch == near_radial)
             call panel_slopes_xp(rules, c, pieces(1:n), lower_c(1:n), upper_c(1:n), cc, h, &
                                  v, st)
         end subroutine one_end
@@ -1095,12 +1188,13 @@ contains
     !> The curve's numbers [K, P, a, beta, span, R - 1, d] and the ends of its pieces
     !! (`plan_pieces`) at radius r as complex hardware numbers x + i h dx/dlambda, the
     !! unknown lambda = log g (unbounded) or log(3 - 2R) (bounded) moved by i h.
-    pure subroutine complex_step(curve, r, h, span, pieces, cc, lower_c, upper_c)
+    pure subroutine complex_step(curve, r, h, span, pieces, cc, lower_c, upper_c, radial)
         type(repulsive_curve), intent(in) :: curve
         real(qp), intent(in) :: r, span
         real(xp), intent(in) :: h
         type(panel_piece), intent(in) :: pieces(:)
         complex(xp), intent(out) :: cc(7), lower_c(:), upper_c(:)
+        logical, intent(in) :: radial !! unbounded, the unknown log P (dg = -P dlambda)
         complex(xp) :: g, p, big_r, rm1, e, d, rg, c, s_mid, sin_mid, big, a, width
         real(xp) :: sg, se
         integer :: i
@@ -1109,7 +1203,8 @@ contains
         cc = (0.0_xp, 0.0_xp)
         if (.not. curve%bounded) then
             sg = real(curve%gap, xp)
-            g = cmplx(sg, sg*h, xp)
+            if (radial) sg = -real(curve%p, xp)
+            g = cmplx(real(curve%gap, xp), sg*h, xp)
             p = cmplx(real(curve%p, xp), -sg*h, xp)
             a = 0.5_xp*p
             width = sqrt(p*p*g/(4.0_xp*(p + 1.0_xp)))
@@ -1279,6 +1374,9 @@ contains
             call near_apse_bracket(rho, target, arch, f_top, rules, lo, f_lo, hi, f_hi, &
                                    steps, status)
             if (status /= status_ok) return
+        else if (arch == near_radial) then
+            call near_radial_bracket(rho, target, rules, lo, f_lo, hi, f_hi, steps, status)
+            if (status /= status_ok) return
         else
             do
                 lo = max(lo - 4.0_qp, floor)
@@ -1366,11 +1464,15 @@ contains
                 done = .true.
                 return
             end if
-            slope = slopes(1)
         end if
+        ! the complex-step slope when it is within 1e-3 of the differences' (their own
+        ! error when the curvature is large; the secant below certifies it by the
+        ! residual's decrease)
+        if (abs(slopes(1) - slope) <= 1.0e-3_qp*abs(slopes(1))) slope = slopes(1)
         ! else a second binary128 evaluation at the Newton step, and the secant (v0 again
         ! at x0 itself: the curve of `curve_near_lambda` may be 1e-19 away)
-        if (arch < near_apse .and. range(1.0_xp) >= range(1.0_qp)) then
+        if ((arch == arch_unbounded .or. arch == arch_first .or. arch == arch_second) .and. &
+            range(1.0_xp) >= range(1.0_qp)) then
             call curve_of_lambda(arch, x0, curve, rho)
             call panel_values(curve, rho, mod(arch, near_apse) == arch_second, rules, &
                               .false., v0, stat(1))
@@ -1389,13 +1491,15 @@ contains
         if (abs(f1) > 1.0e-6_qp*abs(f0) .and. abs(f1) > 4.0_qp*eps_qp*target) &
             return
         rate = (v1 - v0)/(x1 - x0)
-        x = x1 - f1/rate(1)
-        if (curvature*abs(x - x0)*abs(x - x1) > eps_qp*scale) return
-        call curve_of_lambda(arch, x, solution%curve, rho)
+        ! the curve from x1's by the step dx itself (x may not resolve it: |lambda| eps)
+        dx = -f1/rate(1)
+        x = x1 + dx
+        if (curvature*abs((x1 - x0) + dx)*abs(dx) > eps_qp*scale) return
+        call curve_after_step(arch, curve, dx, x, solution%curve, rho)
         solution%arch = mod(arch, near_apse)
-        solution%angle = v1(1) + rate(1)*(x - x1)
-        solution%arclength = v1(2) + rate(2)*(x - x1)
-        solution%time = v1(3) + rate(3)*(x - x1)
+        solution%angle = v1(1) + rate(1)*dx
+        solution%arclength = v1(2) + rate(2)*dx
+        solution%time = v1(3) + rate(3)*dx
         solution%steps = steps
         solution%status = status_ok
         done = .true.
@@ -1444,6 +1548,48 @@ contains
         end do
         status = status_no_convergence
     end subroutine near_apse_bracket
+
+    !> The bracket of log P next to the radial path from theta ~ (2/3) ((1 - 1/rho) P)^(3/2)
+    !! (small K: Q ~ x^3, K^2 ~ P^3/2; theta is a little above it at that P), widened by
+    !! steps doubling from 1/2 until theta - target changes sign, P below 2.9.
+    !! status: status_ok, status_no_convergence (no bracket) or an evaluation's failure.
+    pure subroutine near_radial_bracket(rho, target, rules, lo, f_lo, hi, f_hi, steps, status)
+        real(qp), intent(in) :: rho, target
+        type(panel_rules), intent(in) :: rules
+        real(qp), intent(out) :: lo, f_lo, hi, f_hi
+        integer, intent(inout) :: steps
+        integer, intent(out) :: status
+        real(qp) :: estimate, width, top
+        integer :: i
+        top = log(2.9_qp)
+        estimate = (2.0_qp*log(1.5_qp*target) - 3.0_qp*log((rho - 1.0_qp)/rho))/3.0_qp
+        width = 0.5_qp
+        lo = min(estimate - 0.0625_qp, top - width)
+        hi = min(estimate + 0.0625_qp, top)
+        call mismatch_xp(rho, target, near_radial, rules, lo, f_lo, status)
+        if (status /= status_ok) return
+        call mismatch_xp(rho, target, near_radial, rules, hi, f_hi, status)
+        steps = steps + 2
+        do i = 1, 40
+            if (status /= status_ok) return
+            if (f_lo <= 0.0_qp .and. f_hi > 0.0_qp) return
+            if (f_hi <= 0.0_qp) then
+                if (hi >= top) exit
+                lo = hi
+                f_lo = f_hi
+                hi = min(hi + width, top)
+                call mismatch_xp(rho, target, near_radial, rules, hi, f_hi, status)
+            else
+                hi = lo
+                f_hi = f_lo
+                lo = lo - width
+                call mismatch_xp(rho, target, near_radial, rules, lo, f_lo, status)
+            end if
+            width = 2.0_qp*width
+            steps = steps + 1
+        end do
+        status = status_no_convergence
+    end subroutine near_radial_bracket
 
     !> The scale of lambda's absolute error: 1 for unbounded curves (g = exp(lambda));
     !! on bounded ones R - 1 = -expm1(lambda)/2 is relative to lambda as R -> 1, so
@@ -1639,6 +1785,9 @@ contains
         e = real((3.0_qp - 2.0_qp*rho)/(rho + 3.0_qp), xp)
         angle_critical = real(2.0_xp/sqrt(3.0_xp)*(log(1.0_xp + 3.0_xp*u) - &
                               0.5_xp*log(4.0_xp*e)) - 2.0_xp*atan(sqrt(3.0_xp)*u), qp)
+        ! next to the start theta_c ~ 8 sqrt3 u^3: the closed form's two u-terms cancel
+        if (u < real(critical_series_end, xp)) &
+            angle_critical = real(critical_angle_series_xp(u), qp)
         stat(1) = status_ok
         call curve_from_apse(rho, curve, stat(2))
         call panel_values(curve, rho, .false., rules, .true., values, stat(3))
@@ -1688,20 +1837,26 @@ contains
                 return
             end if
         end if
-        if (target == 0.0_qp) then
-            ! psi = 0, m = 0: the radial path (K = 0); B = A when rho = 1
+        if (target == 0.0_qp .or. below_range(rho, target)) then
+            ! psi = 0, m = 0: the radial path (K = 0); B = A when rho = 1. A target so small
+            ! that K^2 underflows (`below_range`): s and t are the radial path's to O(K^2)
             call set_from_gap(3.0_qp, solution%curve)
             solution%arch = arch_unbounded
             call repulsive_values(solution%curve, rho, .false., solution%angle, &
                                   solution%arclength, solution%time, stat_values)
+            solution%angle = target
             solution%status = stat_values
         else if (rho == 1.0_qp) then
             ! complete arches: lambda = log(3 - 2R) up to 0 (R -> 1, angle -> 0)
             call solve_fast_or_slow(rho, target, arch_second, 0.0_qp, -target, &
                                     rules, solution)
         else if (rho >= 1.5_qp .or. target < angle_critical) then
-            call solve_fast_or_slow(rho, target, arch_unbounded, log_three, -target, &
-                                    rules, solution)
+            ! next to the radial path (P below 1/2 by theta's small-K law) the unknown is
+            ! log P, else log g
+            near = merge(near_radial, arch_unbounded, 2.0_xp*log(1.5_xp*real(target, xp)) - &
+                         3.0_xp*(log(real(rho - 1.0_qp, xp)) - log(real(rho, xp))) < &
+                         3.0_xp*log(0.5_xp))
+            call solve_fast_or_slow(rho, target, near, log_three, -target, rules, solution)
         else
             ! next to the apse (R - rho below 1e-4 of 3 - 2 rho and of rho - 1 by the
             ! square-root law of near_apse_bracket) the unknown is sqrt(R - rho)
@@ -1714,6 +1869,19 @@ contains
         end if
     end subroutine solve_target
 
+    !> Whether K^2 of the curve through (rho, target) is below the smallest normal
+    !! binary128 number: by theta's small-K law theta = (2/3)((1 - 1/rho) P)^(3/2) and
+    !! 2 K^2 = P^3/(1 + P), K^2 ~ (3 theta/2)^2/(2 (1 - 1/rho)^3) (e.g. psi = 1e-3000 at
+    !! rho = 1001; in logarithms: nothing underflows). The curve is then the radial path
+    !! to far more than 34 digits in s and t (they differ from it by O(K^2)).
+    pure logical function below_range(rho, target)
+        real(qp), intent(in) :: rho, target
+        below_range = rho > 1.0_qp .and. target > 0.0_qp
+        if (.not. below_range) return
+        below_range = 2.0_qp*log(1.5_qp*target) - log(2.0_qp) &
+            - 3.0_qp*log((rho - 1.0_qp)/rho) < log(tiny(1.0_qp))
+    end function below_range
+
     !> One target on one branch: the fast path, else the adaptive one.
     pure subroutine solve_fast_or_slow(rho, target, arch, lambda_top, f_top, rules, &
                                        solution)
@@ -1723,8 +1891,15 @@ contains
         type(repulsive_solution), intent(inout) :: solution
         logical :: done
         call solve_branch_fast(rho, target, arch, lambda_top, f_top, rules, solution, done)
-        if (.not. done) call solve_branch(rho, target, mod(arch, near_apse), lambda_top, &
-                                          f_top, solution)
+        if (arch == near_radial) then
+            ! else the unknown log g from the radial path (lambda_top = log 3)
+            solution%arch = arch_unbounded
+            if (.not. done) call solve_branch_fast(rho, target, arch_unbounded, lambda_top, &
+                                                   f_top, rules, solution, done)
+        end if
+        if (.not. done) call solve_branch(rho, target, merge(arch_unbounded, &
+                                          mod(arch, near_apse), arch == near_radial), &
+                                          lambda_top, f_top, solution)
     end subroutine solve_fast_or_slow
 
     !> Index of the solved curve of least time (the first of equal times; 0 if none).

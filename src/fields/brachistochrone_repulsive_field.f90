@@ -79,7 +79,7 @@ contains
             return
         end if
         associate (b => found(best))
-            if (b%curve%k2 == 0.0_qp) then
+            if (psi == 0.0_qp) then
                 solution%arch = arch_radial
             else if (b%arch == arch_unbounded) then
                 solution%arch = arch_unbounded

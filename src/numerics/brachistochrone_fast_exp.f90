@@ -1,16 +1,20 @@
 !> exp and expm1 in binary128, several times faster than libquadmath's, for the general
-!! engine's integrands (two per quadrature node).
+!! engine's integrands (one or two per quadrature node).
 !!
-!! x = k log 2 + j1/256 + j2/65536 + r (j1, j2, r with the sign of x, |r| < 2^-16):
-!! exp(x) = 2^k (1 + expm1(...)), and expm1(a + r) = e^a expm1(r) + expm1(a) for each
-!! table step a (both terms of one sign: no cancellation). The tables e^a and expm1(a)
-!! are constant expressions (rounded by the compiler); expm1(r) is its Taylor series to
-!! r^7/7!, the terms from r^4/24 on (below 2^-52 of r) in hardware extended precision
-!! where there is one. k (from double precision: only near x/log 2) times log 2 is
-!! subtracted in two parts (log 2 split into 60 + 113 bits), so the reduction is exact
-!! to about 2^-170 for |k| < 2^14. Errors: a few units in the last place.
+!! exp(x) = 2^k (1 + expm1(x - k log 2)), |x - k log 2| <= log(2)/2 (k = +-1 by
+!! constants; other k from double precision: only near x/log 2; k log 2 subtracted in two
+!! parts, log 2 split into 60 + 113 bits, so the reduction is exact to about 2^-170 for
+!! |k| < 2^14); expm1(x) = exp(x) - 1 for |x| >= 1/2. Below (and for the reduced
+!! argument): |x| = j1/256 + j2/65536 + r (j1, j2 from one
+!! double-precision index, |r| < 2^-16, the subtraction exact) and expm1(a + r) =
+!! e^a expm1(r) + expm1(a) for each table step a (both terms of one sign: no
+!! cancellation). The tables e^a and expm1(a) are constant expressions (rounded by the
+!! compiler); expm1(r) is its Taylor series to r^7/7!, the terms from r^4/24 on (below
+!! 2^-52 of r) in hardware extended precision where there is one (converted on the bits,
+!! `hardware_real`, `quad_real`). Errors: a few units in the last place.
 module brachistochrone_fast_exp
-    use brachistochrone_kinds, only: qp
+    use brachistochrone_kinds, only: qp, xp
+    use brachistochrone_fast_math, only: hardware_real, quad_real
     use, intrinsic :: iso_fortran_env, only: real64
     implicit none
     private
@@ -45,6 +49,8 @@ module brachistochrone_fast_exp
     !> log 2 - ln2_high to full precision (mpmath): ln2 - ln2_high would carry the
     !! rounding of ln2 (2^-114), k times, into the reduced argument
     real(qp), parameter :: ln2_low = 6.39062950764503927593536380659998906464430009e-19_qp
+    !> log(2)/2: below it no reduction
+    real(qp), parameter :: half_ln2 = 0.5_qp*ln2
     !> 1/log 2 (k needs only to be near x/log 2: the reduction is exact for any k)
     real(qp), parameter :: inverse_ln2 = 1.0_qp/ln2
     !> The widest hardware kind (x87 extended, 64-bit significand) for the series' tail:
@@ -67,13 +73,21 @@ contains
             y = exp(x)
             return
         end if
-        ! k need only be near x/log 2 (the reduction below is exact for any k)
-        k = nint(real(x, real64)*real(inverse_ln2, real64))
-        if (k == 0) then
-            ! |x| below about log(2)/2: no reduction, no scaling
+        if (abs(x) < half_ln2) then
+            ! |x| below log(2)/2: no reduction, no scaling
             y = 1.0_qp + small_expm1(x)
             return
+        else if (abs(x) < 3.0_qp*half_ln2) then
+            ! k = +-1: the reduction by constants (the same values as below)
+            if (x > 0.0_qp) then
+                y = 2.0_qp*(1.0_qp + small_expm1((x - ln2_high) - ln2_low))
+            else
+                y = 0.5_qp*(1.0_qp + small_expm1((x + ln2_high) + ln2_low))
+            end if
+            return
         end if
+        ! k need only be near x/log 2 (the reduction below is exact for any k)
+        k = nint(real(x, real64)*real(inverse_ln2, real64))
         reduced = (x - real(k, qp)*ln2_high) - real(k, qp)*ln2_low
         y = scale(1.0_qp + small_expm1(reduced), k)
     end function fast_exp
@@ -89,40 +103,71 @@ contains
         end if
     end function fast_expm1
 
-    !> expm1 for |x| < 1/2 (and a little beyond, for the reduced argument of fast_exp):
-    !! x = a1 + a2 + r, a1 = j1/256, a2 = j2/65536 (all with the sign of x, the
-    !! subtractions exact), |r| < 2^-16, expm1(r) by its series to r^7/7! (the remainder
-    !! is below 1e-38 of it), then expm1(a + r) = e^a expm1(r) + expm1(a) twice.
-    elemental function small_expm1(x) result(y)
+    !> |x| = a1 + a2 + r for |x| < 1 (a1 = j1/256, a2 = j2/65536 from one double-precision
+    !! index j = j1 256 + j2: a rounding up by one step leaves r slightly negative, which
+    !! the series takes as well; the subtraction is exact), and expm1(+-r) by its series
+    !! to r^7/7! (the remainder is below 1e-38 of it), the terms from r^4/24 on in
+    !! hardware precision where there is one.
+    elemental subroutine reduce_series(x, j1, j2, series)
         real(qp), intent(in) :: x
-        real(qp) :: y, r, series
+        integer, intent(out) :: j1, j2
+        real(qp), intent(out) :: series
+        real(qp) :: r
         real(tail_kind) :: rt, tail
-        integer :: j1, j2
-        ! the table indices from double precision (a rounding up by one step leaves r
-        ! slightly negative, which the series takes as well), the steps from the tables
-        j1 = max(0, min(int(abs(real(x, real64))*256.0_real64), 255))
-        r = abs(x) - steps_plus(j1)
-        j2 = max(0, min(int(real(r, real64)*65536.0_real64), 255))
-        r = r - fine_plus(j2)
+        integer :: j
+        j = max(0, min(int(abs(real(x, real64))*65536.0_real64), 65535))
+        j1 = ishft(j, -8)
+        j2 = iand(j, 255)
+        r = abs(x) - (steps_plus(j1) + fine_plus(j2))
         if (x < 0.0_qp) r = -r
         if (tail_in_hardware) then
             ! the terms from r^4/24 on in hardware precision (see tail_kind)
-            rt = real(r, tail_kind)
+            rt = to_tail(r)
             tail = 1.0_tail_kind/24 + rt*(1.0_tail_kind/120 + rt*(1.0_tail_kind/720 &
                    + rt*(1.0_tail_kind/5040)))
-            series = r*(1.0_qp + r*(1.0_qp/2 + r*(1.0_qp/6 + r*real(tail, qp))))
+            series = r*(1.0_qp + r*(1.0_qp/2 + r*(1.0_qp/6 + r*to_quad(tail))))
         else
             series = r*(1.0_qp + r*(1.0_qp/2 + r*(1.0_qp/6 + r*(1.0_qp/24 + r*(1.0_qp/120 &
                      + r*(1.0_qp/720 + r*(1.0_qp/5040)))))))
         end if
+    end subroutine reduce_series
+
+    !> expm1 for |x| < 1: expm1(a + r) = e^a expm1(r) + expm1(a) for
+    !! a = a2, then a1 (the terms of one sign: no cancellation).
+    elemental function small_expm1(x) result(y)
+        real(qp), intent(in) :: x
+        real(qp) :: y
+        integer :: j1, j2
+        call reduce_series(x, j1, j2, y)
         if (x >= 0.0_qp) then
-            if (j2 > 0) series = exp_fine(j2)*series + expm1_fine(j2)
-            if (j1 > 0) series = exp_table(j1)*series + expm1_table(j1)
+            if (j2 > 0) y = exp_fine(j2)*y + expm1_fine(j2)
+            if (j1 > 0) y = exp_table(j1)*y + expm1_table(j1)
         else
-            if (j2 > 0) series = exp_fine_minus(j2)*series + expm1_fine_minus(j2)
-            if (j1 > 0) series = exp_table_minus(j1)*series + expm1_table_minus(j1)
+            if (j2 > 0) y = exp_fine_minus(j2)*y + expm1_fine_minus(j2)
+            if (j1 > 0) y = exp_table_minus(j1)*y + expm1_table_minus(j1)
         end if
-        y = series
     end function small_expm1
+
+    !> The series' tail in binary128 (x87 extended: on the bits).
+    elemental function to_quad(t) result(r)
+        real(tail_kind), intent(in) :: t
+        real(qp) :: r
+        if (tail_kind == xp) then
+            r = quad_real(real(t, xp))
+        else
+            r = real(t, qp)
+        end if
+    end function to_quad
+
+    !> r in the hardware kind of the series' tail (x87 extended: on the bits).
+    elemental function to_tail(r) result(t)
+        real(qp), intent(in) :: r
+        real(tail_kind) :: t
+        if (tail_kind == xp) then
+            t = real(hardware_real(r), tail_kind)
+        else
+            t = real(r, tail_kind)
+        end if
+    end function to_tail
 
 end module brachistochrone_fast_exp

@@ -19,7 +19,7 @@ module brachistochrone_fast_math
     implicit none
     private
 
-    public :: inverse_sqrt, hardware_real
+    public :: inverse_sqrt, hardware_real, fast_sqrt, quad_real
 
     !> Widest hardware real kind below quad (x87 extended where available).
     integer, parameter :: seed_kind_candidate = selected_real_kind(18, 4931)
@@ -47,20 +47,73 @@ contains
     elemental function inverse_sqrt(x) result(r)
         real(qp), intent(in) :: x !! positive argument
         real(qp) :: r
+        real(xp) :: x_xp, r_xp
         integer :: step
-        if (x > seed_low .and. x < seed_high) then
-            if (seed_kind == xp) then
-                r = real(1.0_seed_kind/sqrt(real(hardware_real(x), seed_kind)), qp)
-            else
-                r = real(1.0_seed_kind/sqrt(real(x, seed_kind)), qp)
+        if (x87_layout) then
+            ! the range test on the hardware copy (no binary128 comparisons); the seed
+            ! r within 2^-63, then r + r (1 - x r^2)/2: the residual 1 - x r^2 (exact
+            ! subtraction, below 2^-62) in binary128, its product with r/2 in hardware
+            ! precision (2^-64 of a term of 2^-63 r), both conversions on the bits
+            x_xp = hardware_real(x)
+            if (x_xp > 1.0e-300_xp .and. x_xp < 1.0e300_xp) then
+                r_xp = 1.0_xp/sqrt(x_xp)
+                r = quad_real(r_xp)
+                r = r + quad_real(0.5_xp*r_xp*hardware_real(1.0_qp - x*(r*r)))
+                return
             end if
+        else if (x > seed_low .and. x < seed_high) then
+            r = real(1.0_seed_kind/sqrt(real(x, seed_kind)), qp)
             do step = 1, newton_steps
                 r = r*(1.5_qp - 0.5_qp*x*(r*r))
             end do
-        else
-            r = 1.0_qp/sqrt(x)
+            return
         end if
+        r = 1.0_qp/sqrt(x)
     end function inverse_sqrt
+
+    !> sqrt(x) for x >= 0, within about an ulp: the hardware square root s and one
+    !! correction (x - s^2)/(2 s) (the residual in binary128, the quotient in hardware
+    !! precision), where `xp` is x87 extended; sqrt itself elsewhere.
+    elemental function fast_sqrt(x) result(s)
+        real(qp), intent(in) :: x !! non-negative argument
+        real(qp) :: s
+        real(xp) :: x_xp, s_xp
+        if (x87_layout) then
+            x_xp = hardware_real(x)
+            if (x_xp > 1.0e-300_xp .and. x_xp < 1.0e300_xp) then
+                s_xp = sqrt(x_xp)
+                s = quad_real(s_xp)
+                s = s + quad_real(hardware_real(x - s*s)/(2.0_xp*s_xp))
+                return
+            end if
+        end if
+        s = sqrt(x)
+    end function fast_sqrt
+
+    !> real(y, qp) on the bits for normal y where `xp` is x87 extended (the library's
+    !! __extendxftf2 otherwise).
+    elemental function quad_real(y) result(x)
+        real(xp), intent(in) :: y !! any value
+        real(qp) :: x
+        integer(int64), parameter :: low48 = ishft(1_int64, 48) - 1, &
+                                     exponent_mask = int(z'7FFF', int64)
+        integer(int64) :: bits(2), sign_exponent
+        if (.not. x87_layout) then
+            x = real(y, qp)
+            return
+        end if
+        bits = transfer(y, bits)
+        sign_exponent = iand(bits(2), int(z'FFFF', int64))
+        ! zero, subnormal, infinite, NaN or unnormal: the library's conversion
+        if (iand(sign_exponent, exponent_mask) == 0_int64 .or. &
+            iand(sign_exponent, exponent_mask) == exponent_mask .or. &
+            .not. btest(bits(1), 63)) then
+            x = real(y, qp)
+            return
+        end if
+        x = transfer([ishft(bits(1), 49), ior(ishft(sign_exponent, 48), &
+                                              iand(ishft(bits(1), -15), low48))], x)
+    end function quad_real
 
     !> real(x, xp), the same bits, faster for normal x where `xp` is x87 extended.
     elemental function hardware_real(x) result(y)

@@ -24,7 +24,7 @@ module brachistochrone_speed_laws
     use brachistochrone_kinds, only: qp, xp
     use brachistochrone_quad_math, only: expm1, log1p
     use brachistochrone_fast_exp, only: fast_exp, fast_expm1
-    use brachistochrone_fast_math, only: inverse_sqrt
+    use brachistochrone_fast_math, only: inverse_sqrt, hardware_real, fast_sqrt
     use brachistochrone_closed_forms, only: radial_time
     use, intrinsic :: iso_fortran_env, only: real64
     implicit none
@@ -583,6 +583,24 @@ contains
         !> d(log q)/d Lambda at fixed lambda in hardware precision (laws with
         !! has_terms_xp; 0 otherwise)
         real(xp), intent(out), optional :: log_slope
+        call power_node_terms(c, power_slope_constants(c), lambda, delta, q, one_minus_q, &
+                              q_over_v, r_over_x, root_q, log_slope)
+    end subroutine power_arch_terms
+
+    !> [a/E(Lambda), R^a] in hardware precision, for the slopes (`power_finish_terms`).
+    pure function power_slope_constants(c) result(cx)
+        real(qp), intent(in) :: c(8)
+        real(xp) :: cx(2)
+        cx = [hardware_real(c(3)*c(6)), hardware_real(c(4))]
+    end function power_slope_constants
+
+    !> `power_arch_terms` at one node (cx: `power_slope_constants`).
+    pure subroutine power_node_terms(c, cx, lambda, delta, q, one_minus_q, q_over_v, &
+                                     r_over_x, root_q, log_slope)
+        real(qp), intent(in) :: c(8), lambda, delta
+        real(xp), intent(in) :: cx(2)
+        real(qp), intent(out) :: q, one_minus_q, q_over_v, r_over_x, root_q
+        real(xp), intent(out), optional :: log_slope
         real(qp) :: a, om1, om2, e1, e2, eam1, ea, e_delta
         logical :: known  ! E(delta) already at hand
         a = c(3)
@@ -627,37 +645,49 @@ contains
             eam1 = fast_expm1(-a*lambda)
             ea = 1.0_qp + eam1
         end if
-        call power_finish_terms(c, lambda, delta, e1, om2, e2, ea, eam1, known, e_delta, &
-                                q, one_minus_q, q_over_v, r_over_x, root_q, log_slope)
-    end subroutine power_arch_terms
+        call power_finish_terms(c, cx, lambda, delta, e1, om2, e2, ea, eam1, known, &
+                                e_delta, q, one_minus_q, q_over_v, r_over_x, root_q, &
+                                log_slope)
+    end subroutine power_node_terms
 
     !> `power_arch_terms` from exp(-lambda) = e1, 1 - exp(-2 lambda) = om2, e2 =
-    !! exp(-2 lambda), ea = exp(-a lambda), eam1 = ea - 1 and, where known, E(delta).
-    pure subroutine power_finish_terms(c, lambda, delta, e1, om2, e2, ea, eam1, known, &
+    !! exp(-2 lambda), ea = exp(-a lambda), eam1 = ea - 1 and, where known, E(delta)
+    !! (cx: `power_slope_constants`; the slope's factors converted on the bits).
+    pure subroutine power_finish_terms(c, cx, lambda, delta, e1, om2, e2, ea, eam1, known, &
                                        e_delta, q, one_minus_q, q_over_v, r_over_x, root_q, &
                                        log_slope)
         real(qp), intent(in) :: c(8), lambda, delta, e1, om2, e2, ea, eam1
+        real(xp), intent(in) :: cx(2)
         logical, intent(in) :: known
         real(qp), intent(inout) :: e_delta
         real(qp), intent(out) :: q, one_minus_q, q_over_v, r_over_x, root_q
         real(xp), intent(out), optional :: log_slope
         real(qp) :: a, ea_e_delta
-        real(xp) :: ratio_xp
+        real(xp) :: ratio_xp, e_delta_xp
         a = c(3)
         if (delta > c(8) .and. c(4) > 0.0_qp) then
             ! exp(-a lambda) E(delta) = exp(-a lambda) - R^a (no division; E(delta) >=
             ! 1 - e^(-1/4): at most two bits cancel, as in 1 - R^a/exp(-a lambda))
             ea_e_delta = ea - c(4)
-            ratio_xp = real(c(4), xp)/real(ea_e_delta, xp)
+            if (present(log_slope)) ratio_xp = cx(2)/hardware_real(ea_e_delta)
         else if (lambda <= delta .and. c(4) > 0.0_qp) then
             ! nearer the apse, a delta <= 1/4: exp(-a lambda) E(delta) = E(Lambda) -
             ! E(lambda) (delta >= Lambda/2: at most two bits cancel; no expm1)
             ea_e_delta = c(2) + eam1
-            ratio_xp = real(c(4), xp)/real(ea_e_delta, xp)
+            if (present(log_slope)) ratio_xp = cx(2)/hardware_real(ea_e_delta)
         else
             if (.not. known) e_delta = decay(a, delta)
             ea_e_delta = ea*e_delta
-            ratio_xp = real(1.0_qp - e_delta, xp)/real(e_delta, xp)
+            if (present(log_slope)) then
+                ! exp(-a delta)/E(delta) (1 - E(delta) in hardware precision where a delta
+                ! <= 1/4, as where c(4) > 0 here)
+                e_delta_xp = hardware_real(e_delta)
+                if (c(4) > 0.0_qp) then
+                    ratio_xp = (1.0_xp - e_delta_xp)/e_delta_xp
+                else
+                    ratio_xp = hardware_real(1.0_qp - e_delta)/e_delta_xp
+                end if
+            end if
         end if
         root_q = e1*root(ea_e_delta*c(6))
         q = root_q*root_q
@@ -665,8 +695,7 @@ contains
         q_over_v = root_q*e1*c(7)
         r_over_x = e1
         ! a E(lambda) exp(-a delta)/(E(Lambda) E(delta)) (see power_theta_terms_xp)
-        if (present(log_slope)) log_slope = real(a, xp)*real(-eam1, xp)* &
-            ratio_xp*real(c(6), xp)
+        if (present(log_slope)) log_slope = cx(1)*(-hardware_real(eam1))*ratio_xp
     end subroutine power_finish_terms
 
     !> `power_arch_terms` on one panel. Where the panel's variable v is lambda (side 1)
@@ -687,14 +716,24 @@ contains
         real(xp), intent(out), optional :: log_slope(:)
         real(qp), dimension(size(lambda)) :: e1, em1, ea, eam1, e_delta
         real(qp) :: a
+        real(xp) :: cx(2)
         integer :: k
         logical :: known
         a = c(3)
         known = .false.
         e_delta = 0.0_qp
+        cx = power_slope_constants(c)
         if (.not. pair_terms_apply(c, side, lambda, delta)) then
-            call default_panel_terms(self, c, side, mid, offset, lambda, delta, q, &
-                                     one_minus_q, q_over_v, r_over_x, root_q, log_slope)
+            ! node by node (the root panels above all)
+            do k = 1, size(lambda)
+                if (present(log_slope)) then
+                    call power_node_terms(c, cx, lambda(k), delta(k), q(k), one_minus_q(k), &
+                                          q_over_v(k), r_over_x(k), root_q(k), log_slope(k))
+                else
+                    call power_node_terms(c, cx, lambda(k), delta(k), q(k), one_minus_q(k), &
+                                          q_over_v(k), r_over_x(k), root_q(k))
+                end if
+            end do
             return
         end if
         if (side == 1) then
@@ -737,12 +776,12 @@ contains
         end if
         do k = 1, size(lambda)
             if (present(log_slope)) then
-                call power_finish_terms(c, lambda(k), delta(k), e1(k), &
+                call power_finish_terms(c, cx, lambda(k), delta(k), e1(k), &
                                         -em1(k)*(2.0_qp + em1(k)), e1(k)*e1(k), ea(k), &
                                         eam1(k), known, e_delta(k), q(k), one_minus_q(k), &
                                         q_over_v(k), r_over_x(k), root_q(k), log_slope(k))
             else
-                call power_finish_terms(c, lambda(k), delta(k), e1(k), &
+                call power_finish_terms(c, cx, lambda(k), delta(k), e1(k), &
                                         -em1(k)*(2.0_qp + em1(k)), e1(k)*e1(k), ea(k), &
                                         eam1(k), known, e_delta(k), q(k), one_minus_q(k), &
                                         q_over_v(k), r_over_x(k), root_q(k))
@@ -785,7 +824,7 @@ contains
     pure subroutine pair_exps(s, mid, offset, ev, em1v)
         real(qp), intent(in) :: s, mid, offset(:)
         real(qp), intent(out) :: ev(:), em1v(:)
-        real(qp) :: centre, centre_m1, x, y, inverse_y, w
+        real(qp) :: centre, centre_m1, x, y, w
         integer :: k, n, far, near
         n = size(offset)
         if (abs(s*mid) < 0.5_qp) then
@@ -806,19 +845,18 @@ contains
             end if
             far = merge(k, n + 1 - k, s*offset(k) <= 0.0_qp)
             near = n + 1 - far
-            inverse_y = 1.0_qp/y
             ev(far) = centre*y
             em1v(far) = centre_m1 + centre*x
-            ev(near) = centre*inverse_y
-            em1v(near) = centre_m1 - centre*(x*inverse_y)
+            ev(near) = centre/y
+            em1v(near) = centre_m1 - ev(near)*x
         end do
     end subroutine pair_exps
 
-    !> sqrt(z) = z/sqrt(z) with the hardware-seeded inverse square root (within 3 ulp).
+    !> sqrt(z): the hardware square root and one correction (`fast_sqrt`, within an ulp).
     elemental function root(z) result(r)
         real(qp), intent(in) :: z
         real(qp) :: r
-        r = z*inverse_sqrt(z)
+        r = fast_sqrt(z)
     end function root
 
     !> 1/v = sqrt(a/2) exp(-a delta/2)/sqrt(E(delta)).
@@ -1099,10 +1137,22 @@ contains
         real(qp), intent(in) :: offset(:), lambda(:), delta(:)
         real(qp), intent(out) :: q(:), one_minus_q(:), q_over_v(:), r_over_x(:), root_q(:)
         real(xp), intent(out), optional :: log_slope(:)
-        real(qp), dimension(size(lambda)) :: e1, em1, e2
+        real(qp), dimension(size(lambda)) :: e1, em1, e2, om1, om2
+        real(xp) :: inverse_lambda
+        integer :: k
+        inverse_lambda = 1.0_xp/hardware_real(c(1))
         if (.not. pair_terms_apply([c(1:2), 1.0_qp, 1.0_qp, c(5:8)], side, lambda, delta)) then
-            call default_panel_terms(self, c, side, mid, offset, lambda, delta, q, &
-                                     one_minus_q, q_over_v, r_over_x, root_q, log_slope)
+            ! node by node (the root panels above all), as logarithmic_arch_terms
+            do k = 1, size(lambda)
+                call exp_pair(lambda(k), delta(k), c(5), e1(k), om1(k), om2(k), e2(k))
+            end do
+            root_q = e1*root(delta*c(6))
+            q = root_q*root_q
+            one_minus_q = om2 + e2*lambda*c(6)
+            q_over_v = root_q*e1*c(7)
+            r_over_x = e1
+            if (present(log_slope)) log_slope = hardware_real(lambda)*inverse_lambda/ &
+                                                hardware_real(delta)
             return
         end if
         if (side == 1) then
@@ -1119,8 +1169,8 @@ contains
         one_minus_q = -em1*(2.0_qp + em1) + e2*lambda*c(6)
         q_over_v = root_q*e1*c(7)
         r_over_x = e1
-        if (present(log_slope)) log_slope = real(lambda, xp)/(real(delta, xp)* &
-                                                              real(c(1), xp))
+        if (present(log_slope)) log_slope = hardware_real(lambda)*inverse_lambda/ &
+                                            hardware_real(delta)
     end subroutine logarithmic_panel_terms
 
     pure function logarithmic_inverse_speed(self, delta) result(w)
