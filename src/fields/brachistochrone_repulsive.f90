@@ -863,9 +863,41 @@ contains
         end if
     end subroutine curve_of_lambda
 
+    !> A curve within about 1e-19 of lambda's (relative), exactly one of the family:
+    !! g (unbounded) or 3 - 2R, or R - 1 where that is the smaller (bounded), is
+    !! lambda's in hardware precision, rounded there and taken as exact, and the other
+    !! numbers follow from it in binary128 (no binary128 exponential: the Newton step
+    !! of `solve_branch_fast` moves from whatever curve it starts at); next to the
+    !! apse, or where the hardware's exponent range is smaller, `curve_of_lambda`.
+    pure subroutine curve_near_lambda(arch, lambda, curve, rho)
+        integer, intent(in) :: arch
+        real(qp), intent(in) :: lambda
+        type(repulsive_curve), intent(out) :: curve
+        real(qp), intent(in) :: rho
+        real(xp) :: x, e
+        real(qp) :: m
+        if (arch > near_apse .or. arch == near_radial .or. &
+            range(1.0_xp) < range(1.0_qp)) then
+            call curve_of_lambda(arch, lambda, curve, rho)
+            return
+        end if
+        x = real(lambda, xp)
+        e = exp(x)
+        if (arch == arch_unbounded) then
+            call set_from_gap(real(e, qp), curve)
+        else if (e >= 0.5_xp) then
+            ! R - 1 = -expm1(x)/2 = sinh(x/2) exp(x/2) the smaller: 3 - 2R = 1 - 2 (R - 1)
+            m = real(-sinh(0.5_xp*x)*exp(0.5_xp*x), qp)
+            call set_bounded(m, 1.0_qp - 2.0_qp*m, curve)
+        else
+            call set_bounded(0.5_qp*(1.0_qp - real(e, qp)), real(e, qp), curve)
+        end if
+    end subroutine curve_near_lambda
+
     !> `curve_of_lambda` at x = x0 + dx from the curve at x0 (curve0, made by
-    !! `curve_of_lambda`), |dx| <= 1e-12: exp(x0 + dx) = exp(x0) (1 + dx + dx^2/2) to a
-    !! rounding, no binary128 exponential; next to the apse `curve_of_lambda` at x.
+    !! `curve_of_lambda` or `curve_near_lambda`), |dx| <= 1e-12: exp(x0 + dx) = exp(x0)
+    !! (1 + dx + dx^2/2) to a rounding, no binary128 exponential; next to the apse
+    !! `curve_of_lambda` at x.
     pure subroutine curve_after_step(arch, curve0, dx, x, curve, rho)
         integer, intent(in) :: arch
         type(repulsive_curve), intent(in) :: curve0
@@ -1402,7 +1434,7 @@ contains
         steps = steps + 2
         if (any(stat /= status_ok)) return
         ! one binary128 evaluation, the Newton step on the complex-step slopes
-        call curve_of_lambda(arch, x0, curve, rho)
+        call curve_near_lambda(arch, x0, curve, rho)
         call lambda_slopes(arch, curve, rho, rules, slopes, stat(2), v0, stat(1))
         f0 = v0(1) - target
         if (any(stat /= status_ok)) return
@@ -1437,7 +1469,17 @@ contains
         ! error when the curvature is large; the secant below certifies it by the
         ! residual's decrease)
         if (abs(slopes(1) - slope) <= 1.0e-3_qp*abs(slopes(1))) slope = slopes(1)
-        ! else a second binary128 evaluation at the Newton step, and the secant
+        ! else a second binary128 evaluation at the Newton step, and the secant (v0 again
+        ! at x0 itself: the curve of `curve_near_lambda` may be 1e-19 away)
+        if ((arch == arch_unbounded .or. arch == arch_first .or. arch == arch_second) .and. &
+            range(1.0_xp) >= range(1.0_qp)) then
+            call curve_of_lambda(arch, x0, curve, rho)
+            call panel_values(curve, rho, mod(arch, near_apse) == arch_second, rules, &
+                              .false., v0, stat(1))
+            f0 = v0(1) - target
+            steps = steps + 1
+            if (stat(1) /= status_ok) return
+        end if
         x1 = x0 - f0/slope
         call curve_of_lambda(arch, x1, curve, rho)
         call panel_values(curve, rho, mod(arch, near_apse) == arch_second, rules, .false., &

@@ -18,12 +18,14 @@
 !! (37 on the peak's sinh map), and theta alone in the widest hardware precision (`xp`,
 !! x87 extended where there is one) aiming at 20 digits, for the root finder's early
 !! phase. The binary128 loop (`panel_sums`, one piece kind at a time) forms each node's
-!! geometry in binary128 and, in parallel, in `xp` for the seeds of its two inverse
-!! square roots, each then one Newton step (`refine`: three products, one difference;
-!! no binary128 number converted per node); the pieces' constant factors are applied
-!! once per piece (`piece_factors`). The hardware-precision loops likewise take the
-!! curve's square roots and constants out of the node loop (`angle_sum_xp`,
-!! `slopes_sum_c`).
+!! geometry in binary128 and, in parallel, in `xp` for the seeds of its two square
+!! roots, each then one Heron step (`heron`: s + x/s, a division and a sum; the
+!! integrands' inverse roots as divisions by them: 4 to 6 binary128 operations a node
+!! fewer than inverse square roots by Newton steps, and a division costs about a
+!! product; no binary128 number converted per node); the pieces' constant factors are
+!! applied once per piece (`piece_factors`, powers of two in `panel_sums`). The
+!! hardware-precision loops likewise take the curve's square roots and constants out of
+!! the node loop (`angle_sum_xp`, `slopes_sum_c`).
 module brachistochrone_repulsive_panels
     use brachistochrone_kinds, only: qp, xp
     use brachistochrone_status, only: status_ok, status_no_convergence
@@ -321,8 +323,9 @@ contains
             do m = 1, r%n
                 v = a + width*r%node_xp(m)
                 x = 1.0_xp + c(5)*(v*v)
-                rq = r%weight_xp(m)/dual_sqrt((x + c(2))*((x - c(3))**2 + c(4)))
-                sum(1) = sum(1) + (v*v)*rq/x
+                rq = r%weight_xp(m)*dual_inverse(dual_sqrt((x + c(2))*((x - c(3))**2 + &
+                                                                  c(4))))
+                sum(1) = sum(1) + dual_divide((v*v)*rq, x)
                 sum(2) = sum(2) + v*x*dual_sqrt(x)*rq
             end do
         case (piece_below, piece_above)
@@ -331,26 +334,27 @@ contains
             do m = 1, r%n
                 v = a + width*r%node_xp(m)
                 if (stretched) then
-                    inv = 1.0_xp/((1.0_xp - v)*(1.0_xp + v))
+                    inv = dual_inverse((1.0_xp - v)*(1.0_xp + v))
                     h = root_beta4*(v*(1.0_xp + v*v))*(inv*inv)
                     z = inv*inv
                 else
                     h = v
-                    z = 1.0_xp/(v*v + c(4))
+                    z = dual_inverse(v*v + c(4))
                 end if
                 if (kind == piece_below) h = -h
                 x = c(3) + h
                 xm1 = am1 + h
-                rq = r%weight_xp(m)*dual_sqrt(z/(x + c(2)))
-                sum(1) = sum(1) + dual_sqrt(xm1)*rq/x
+                rq = r%weight_xp(m)*dual_sqrt(dual_divide(z, x + c(2)))
+                sum(1) = sum(1) + dual_divide(dual_sqrt(xm1)*rq, x)
                 sum(2) = sum(2) + x*dual_sqrt(x)*rq
             end do
         case (piece_far)
             do m = 1, r%n
                 v = a + width*r%node_xp(m)
-                x = 4.0_xp/v
-                rq = r%weight_xp(m)/((v*v)*dual_sqrt((x + c(2))*((x - c(3))**2 + c(4))))
-                sum(1) = sum(1) + dual_sqrt(x - 1.0_xp)*rq/x
+                x = 4.0_xp*dual_inverse(v)
+                rq = r%weight_xp(m)*dual_inverse((v*v)*dual_sqrt((x + c(2))* &
+                                                                  ((x - c(3))**2 + c(4))))
+                sum(1) = sum(1) + dual_divide(dual_sqrt(x - 1.0_xp)*rq, x)
                 sum(2) = sum(2) + x*dual_sqrt(x)*rq
             end do
         end select
@@ -371,18 +375,18 @@ contains
             ratio2 = 2.0_xp*dual_sqrt(c(7)/c(6))
             do m = 1, r%n
                 v = a + width*r%node_xp(m)
-                inv = 1.0_xp/((1.0_xp - v)*(1.0_xp + v))
+                inv = dual_inverse((1.0_xp - v)*(1.0_xp + v))
                 sn = ratio2*v*inv
                 cs = dual_sqrt((1.0_xp - sn)*(1.0_xp + sn))
                 x = 1.0_xp + c(6)*(cs*cs)
-                rq = r%weight_xp(m)*inv/dual_sqrt(x + c(2))
-                sum(1) = sum(1) + cs*rq/x
+                rq = dual_divide(r%weight_xp(m)*inv, dual_sqrt(x + c(2)))
+                sum(1) = sum(1) + dual_divide(cs*rq, x)
                 sum(2) = sum(2) + x*dual_sqrt(x)*rq
             end do
         case default
             do m = 1, r%n
                 v = a + width*r%node_xp(m)
-                inv = 1.0_xp/(1.0_xp + v*v)
+                inv = dual_inverse(1.0_xp + v*v)
                 sn = 2.0_xp*v*inv
                 cs = (1.0_xp - v)*(1.0_xp + v)*inv
                 if (kind == piece_arch_start) then
@@ -392,8 +396,9 @@ contains
                 end if
                 xm1 = c(6)*(cs*cs)
                 x = 1.0_xp + xm1
-                rq = r%weight_xp(m)*inv/dual_sqrt((c(7) + c(6)*(sn*sn))*(x + c(2)))
-                sum(1) = sum(1) + xm1*rq/x
+                rq = dual_divide(r%weight_xp(m)*inv, dual_sqrt((c(7) + c(6)*(sn*sn))* &
+                                                                (x + c(2))))
+                sum(1) = sum(1) + dual_divide(xm1*rq, x)
                 sum(2) = sum(2) + x*dual_sqrt(x)*cs*rq
             end do
         end select
@@ -437,6 +442,27 @@ contains
             r = sqrt(z)
         end if
     end function dual_sqrt
+
+    !> 1/z for the complex step (z = x + i y, |y| far below |x|): 1/x - i y/x^2, exact
+    !! to first order in y (one division, not the three of a complex division).
+    elemental function dual_inverse(z) result(r)
+        complex(xp), intent(in) :: z
+        complex(xp) :: r
+        real(xp) :: inverse
+        inverse = 1.0_xp/real(z)
+        r = cmplx(inverse, -(aimag(z)*inverse)*inverse, xp)
+    end function dual_inverse
+
+    !> p/q for the complex step (imaginary parts far below the real ones), exact to
+    !! first order in them: one division.
+    elemental function dual_divide(p, q) result(r)
+        complex(xp), intent(in) :: p, q
+        complex(xp) :: r
+        real(xp) :: inverse, re
+        inverse = 1.0_xp/real(q)
+        re = real(p)*inverse
+        r = cmplx(re, (aimag(p) - re*aimag(q))*inverse, xp)
+    end function dual_divide
 
     !> The panels of one piece and the rule (index into the ladder) of each, aiming at
     !! `digits`: bisection until every panel's Bernstein ellipse allows the digits with
@@ -848,9 +874,9 @@ contains
     !> One panel [lo, hi] of a piece for `panel_integrals`: width times the weighted sum
     !! of theta's, s's and t's integrands over the rule r, each integrand divided by its
     !! constant factor (`piece_factors`). The node's geometry is formed in binary128 and,
-    !! in parallel, in hardware precision for the seeds of the inverse square roots
-    !! (`refine`: three products and a difference each), so that no binary128 number is
-    !! converted per node. One loop per piece kind.
+    !! in parallel, in hardware precision for the seeds of the square roots (`heron`:
+    !! a division and a sum each), so that no binary128 number is converted per node.
+    !! One loop per piece kind.
     pure subroutine panel_sums(pc, r, kind, stretched, lo, hi, sums)
         type(prepared_curve), intent(in) :: pc
         type(panel_rule), intent(in) :: r
@@ -883,7 +909,7 @@ contains
         real(qp), intent(in) :: lo, width
         real(xp), intent(in) :: lo_x, width_x
         real(qp), intent(out) :: sums(3)
-        real(qp) :: v, a, x, q, r1, r2, u
+        real(qp) :: v, a, x, q, g, t, hx
         real(xp) :: vx, xx, qx
         integer :: m
         sums = 0.0_qp
@@ -895,14 +921,15 @@ contains
             q = (x + pc%c%p)*((x - pc%c%a)**2 + pc%c%beta)
             xx = 1.0_xp + pc%span_x*(vx*vx)
             qx = (xx + pc%p_x)*((xx - pc%a_x)**2 + pc%beta_x)
-            r1 = r%weight(m)*refine(q, 1.0_xp/sqrt(qx))
-            r2 = refine(x, 1.0_xp/sqrt(xx))
-            u = (x*x)*r1
-            ! (r2^2 = 4/x: one division for two products)
-            sums(1) = sums(1) + (a*r1)/x
-            sums(2) = sums(2) + v*(u*r2)
-            sums(3) = sums(3) + u
+            ! g = w/(2 sqrt(q)), hx = 2 sqrt(x)
+            g = r%weight(m)/heron(q, sqrt(qx))
+            hx = heron(x, sqrt(xx))
+            t = (x*x)*g
+            sums(1) = sums(1) + (a*g)/x
+            sums(2) = sums(2) + (v*t)/hx
+            sums(3) = sums(3) + t
         end do
+        sums = [4.0_qp, 16.0_qp, 4.0_qp]*sums
     end subroutine start_sums
 
     !> `panel_sums` on the unbounded curve's pieces beyond the start: below or above the
@@ -915,7 +942,7 @@ contains
         real(qp), intent(in) :: lo, width
         real(xp), intent(in) :: lo_x, width_x
         real(qp), intent(out) :: sums(3)
-        real(qp) :: v, w, x, xm1, q, h, inv, u, r1, r2, x2
+        real(qp) :: v, w, x, xm1, q, h, inv, h1, xw
         real(xp) :: vx, xx, xm1x, qx, hx, invx
         integer :: m
         sums = 0.0_qp
@@ -933,8 +960,10 @@ contains
             else
                 if (stretched) then
                     ! h = sqrt(beta) 4t (1 + t^2)/(1 - t^2)^2, dxi = 4 dt/(1 - t^2)
-                    inv = 1.0_qp/((1.0_qp - v)*(1.0_qp + v))
-                    h = pc%root_beta4*(v*(1.0_qp + v*v))*(inv*inv)
+                    h = (1.0_qp - v)*(1.0_qp + v)
+                    inv = 1.0_qp/h
+                    ! 1 + v^2 = 2 - (1 - v^2)
+                    h = pc%root_beta4*(v*(2.0_qp - h))*(inv*inv)
                     w = r%weight(m)*inv
                     invx = 1.0_xp/((1.0_xp - vx)*(1.0_xp + vx))
                     hx = pc%root_beta4_x*(vx*(1.0_xp + vx*vx))*(invx*invx)
@@ -958,14 +987,14 @@ contains
                     qx = (vx*vx + pc%beta_x)*qx
                 end if
             end if
-            r1 = refine(q*xm1, 1.0_xp/sqrt(qx*xm1x))
-            r2 = refine(q*x, 1.0_xp/sqrt(qx*xx))
-            u = r1*w
-            x2 = x*x
-            sums(1) = sums(1) + (xm1*u)/x
-            sums(2) = sums(2) + x2*(r2*w)
-            sums(3) = sums(3) + x2*u
+            ! h1 = 2 sqrt(q (x - 1)), 2 sqrt(q x)
+            h1 = heron(q*xm1, sqrt(qx*xm1x))
+            xw = (x*x)*w
+            sums(1) = sums(1) + (xm1*w)/(x*h1)
+            sums(2) = sums(2) + xw/heron(q*x, sqrt(qx*xx))
+            sums(3) = sums(3) + xw/h1
         end do
+        sums = 4.0_qp*sums
     end subroutine peak_sums
 
     !> `panel_sums` on the apse's sinh map (bounded): sin(nu/2) = c 2w/(1 - w^2);
@@ -976,7 +1005,7 @@ contains
         real(qp), intent(in) :: lo, width
         real(xp), intent(in) :: lo_x, width_x
         real(qp), intent(out) :: sums(3)
-        real(qp) :: v, w, x, q, inv, u, r1, r2, x2, a, b
+        real(qp) :: v, w, x, xm1, q, inv, h1, xw, a, b
         real(xp) :: vx, xx, qx, invx, ax, bx
         integer :: m
         sums = 0.0_qp
@@ -986,7 +1015,8 @@ contains
             inv = 1.0_qp/((1.0_qp - v)*(1.0_qp + v))
             a = pc%root_ratio2*v*inv
             b = (1.0_qp - a)*(1.0_qp + a)
-            x = 1.0_qp + pc%c%rm1*b
+            xm1 = pc%c%rm1*b
+            x = 1.0_qp + xm1
             q = x + pc%c%p
             w = r%weight(m)*inv
             invx = 1.0_xp/((1.0_xp - vx)*(1.0_xp + vx))
@@ -994,14 +1024,14 @@ contains
             bx = (1.0_xp - ax)*(1.0_xp + ax)
             xx = 1.0_xp + pc%rm1_x*bx
             qx = xx + pc%p_x
-            r1 = refine(b*q, 1.0_xp/sqrt(bx*qx))
-            r2 = refine(x*q, 1.0_xp/sqrt(xx*qx))
-            u = r1*w
-            x2 = x*x
-            sums(1) = sums(1) + ((pc%c%rm1*b)*u)/x
-            sums(2) = sums(2) + x2*(r2*w)
-            sums(3) = sums(3) + x2*u
+            ! h1 = 2 sqrt(b q), 2 sqrt(x q)
+            h1 = heron(b*q, sqrt(bx*qx))
+            xw = (x*x)*w
+            sums(1) = sums(1) + (xm1*w)/(x*h1)
+            sums(2) = sums(2) + xw/heron(x*q, sqrt(xx*qx))
+            sums(3) = sums(3) + xw/h1
         end do
+        sums = 4.0_qp*sums
     end subroutine apse_sums
 
     !> `panel_sums` on the nu map (bounded): v = tan(nu/4), or tan(mu/4), mu = pi - nu,
@@ -1013,16 +1043,18 @@ contains
         real(qp), intent(in) :: lo, width
         real(xp), intent(in) :: lo_x, width_x
         real(qp), intent(out) :: sums(3)
-        real(qp) :: v, x, xm1, q, h, inv, u, r1, r2, x2, a, b
+        real(qp) :: v, x, xm1, q, inv, g, t, a, b, vv
         real(xp) :: vx, xx, xm1x, qx, invx, ax, bx
         integer :: m
         sums = 0.0_qp
         do m = 1, r%n
             v = lo + width*r%node(m)
             vx = lo_x + width_x*r%node_xp(m)
-            inv = 1.0_qp/(1.0_qp + v*v)
+            vv = v*v
+            inv = 1.0_qp/(1.0_qp + vv)
             a = v*inv
-            b = (1.0_qp - v)*(1.0_qp + v)*inv
+            ! (1 - v^2 to a rounding of 1 where v -> 1: b then weights the terms)
+            b = (1.0_qp - vv)*inv
             invx = 1.0_xp/(1.0_xp + vx*vx)
             ax = vx*invx
             bx = (1.0_xp - vx)*(1.0_xp + vx)*invx
@@ -1042,15 +1074,14 @@ contains
             xx = 1.0_xp + xm1x
             q = q*(x + pc%c%p)
             qx = qx*(xx + pc%p_x)
-            r1 = refine(q, 1.0_xp/sqrt(qx))
-            r2 = refine(x, 1.0_xp/sqrt(xx))
-            u = (r%weight(m)*inv)*r1
-            h = r2*u
-            x2 = x*x
-            sums(1) = sums(1) + xm1*(r2*h)
-            sums(2) = sums(2) + b*(x2*h)
-            sums(3) = sums(3) + x2*u
+            ! g = w inv/(2 sqrt(q)); theta's 1/x^(3/2) as (1/sqrt(x))^2 (1/sqrt(x))
+            g = (r%weight(m)*inv)/heron(q, sqrt(qx))
+            t = (x*x)*g
+            sums(1) = sums(1) + (xm1*g)/x
+            sums(2) = sums(2) + (b*t)/heron(x, sqrt(xx))
+            sums(3) = sums(3) + t
         end do
+        sums = [16.0_qp, 16.0_qp, 4.0_qp]*sums
     end subroutine arch_sums
 
     !> The constant factors of theta's, s's and t's integrands taken out of
@@ -1079,22 +1110,23 @@ contains
         end select
     end function piece_factors
 
-    !> 2/sqrt(x) from a hardware-precision seed of 1/sqrt(x) (relative error about
-    !! 1e-18 on x87): one Newton step s (3 - x s^2), error about 1.5 e^2 (a second
-    !! step where the hardware kind is double); `inverse_sqrt` where the seed is out
-    !! of the hardware's range.
-    elemental function refine(x, seed) result(r)
+    !> 2 sqrt(x) from a hardware-precision seed of sqrt(x) (relative error about 1e-18
+    !! on x87): one Heron step s + x/s, error about e^2/2 plus a rounding of the
+    !! division and of the sum (a second step where the hardware kind is double);
+    !! from `inverse_sqrt` where the seed is out of the hardware's range.
+    elemental function heron(x, seed) result(r)
         real(qp), intent(in) :: x
         real(xp), intent(in) :: seed
         real(qp) :: r
         if (.not. (seed > 0.0_xp .and. seed < huge(1.0_xp))) then
-            r = 2.0_qp*inverse_sqrt(x)
+            r = 0.0_qp
+            if (x > 0.0_qp) r = 2.0_qp*(x*inverse_sqrt(x))
             return
         end if
         r = quad_real(seed)
-        if (digits(1.0_xp) < 60) r = r*(1.5_qp - 0.5_qp*x*(r*r))
-        r = r*(3.0_qp - x*(r*r))
-    end function refine
+        if (digits(1.0_xp) < 60) r = 0.5_qp*(r + x/r)
+        r = r + x/r
+    end function heron
 
     !> A positive normal x87 number in binary128 (exact): the same exponent, the
     !! significand without its explicit leading bit (`real` where `xp` is not x87).
