@@ -465,6 +465,12 @@ contains
                    b%apse_radius < 1.0e-4600_qp, 'rho = 1e-2000, psi = 1e-4000: R-bar ~ 3e-4667')
         call check_close(angle, 1.0e-4000_qp, 64.0_qp, &
                          'rho = 1e-2000, psi = 1e-4000: Upsilon(R-bar) = psi')
+        ! psi within 1e-30 .. 1e-12 of the edge 2 pi/3 (R-bar -> 0, below what the
+        ! hardware rules resolve: about 200 evaluations before `edge_newton`)
+        call edge(0.5_qp, 1.0e-30_qp)
+        call edge(3.6e-30_qp, 1.0e-30_qp)
+        call edge(1.0e-10_qp, 1.0e-20_qp)
+        call edge(1.0_qp, 1.0e-12_qp)
         b = solve_endpoint(model, 0.6_qp, inaccessible_angle)
         call check(b%status == status_inaccessible .and. b%arch == arch_inaccessible, &
                    'psi = 2 pi/3 is inaccessible')
@@ -490,6 +496,27 @@ contains
         call check(b%status == status_not_finite, 'NaN psi refused')
         call check(ieee_is_finite(b%apse_radius) .and. ieee_is_finite(b%arclength) .and. &
                    ieee_is_finite(b%time), 'refused endpoint: outputs finite')
+    contains
+        !> B at rho, psi = (2 pi/3)(1 - gap): solved in few evaluations, and the curve
+        !! found reaches psi to the rounding of Upsilon (R-bar itself is determined only
+        !! to about eps/gap there)
+        subroutine edge(rho, gap)
+            real(qp), intent(in) :: rho, gap
+            type(endpoint_solution) :: e
+            real(qp) :: psi, upsilon, s, t
+            integer :: stat
+            character(len=40) :: label
+            write (label, '(a,es9.2,a,es9.2)') 'rho =', real(rho), ', gap =', real(gap)
+            psi = inaccessible_angle*(1.0_qp - gap)
+            e = solve_endpoint(model, rho, psi)
+            call check(e%status == status_ok .and. e%steps <= 12 .and. e%apse_radius > 0.0_qp, &
+                       'edge of the sector solved in <= 12 evaluations: '//trim(label))
+            call model%half_arch(rho, e%apse_radius, .true., upsilon, s, t, stat)
+            call check(abs(upsilon - psi) <= 16.0_qp*eps_qp*psi, &
+                       'edge of the sector: Upsilon(R-bar) = psi to 16 eps: '//trim(label))
+            call check_close(e%arclength, s, 8.0_qp, 'edge of the sector: s = S(R-bar): ' &
+                             //trim(label))
+        end subroutine edge
     end subroutine special_endpoint_tests
 
     !> The default solver on endpoints where the paper's secant from (0.9 rho, 0.7 rho)

@@ -53,6 +53,11 @@ module brachistochrone_two_point
     !! 2.2e-15, and the full-precision phase takes more steps).
     real(qp), parameter :: hardware_tolerance = 100.0_qp*hardware_epsilon
     real(qp), parameter :: hardware_accuracy = max(1.0e-19_qp, 10.0_qp*hardware_epsilon)
+    !> |2 pi/3 - psi| below this share of psi: the hardware rules do not resolve
+    !! Upsilon - psi near R = 0 (their error is about 1e-17 psi)
+    real(qp), parameter :: edge_resolution = 1.0e-10_qp
+    !> Full-precision Newton steps at most next to the sector's edge (`edge_newton`).
+    integer, parameter :: max_edge_steps = 40
 
     !> Unknowns of the default solver.
     integer, parameter :: unknown_u = 1, unknown_r = 2, unknown_log_r = 3
@@ -283,6 +288,17 @@ contains
                 call below_range(solution)
                 return
             end if
+        else if (fun%unknown == unknown_r .and. abs(b%f_lo) <= edge_resolution*psi) then
+            ! psi next to the sector's edge 2 pi/3 (R-bar -> 0): Upsilon - psi is below the
+            ! resolution of the hardware rules (their Newton steps would wander for
+            ! max_steps evaluations)
+            call edge_newton(fun, model, b, x, solution%steps, status)
+            if (status /= status_ok) then
+                solution%status = status
+                return
+            end if
+            call finish(model, solution, fun%second, x, rho - x)
+            return
         else
             call hardware_phase(fun, model, b, solution%steps, status)
         end if
@@ -550,6 +566,47 @@ contains
         end do
         x = real(y, qp)
     end function hermite_start
+
+    !> The second half-arch next to the sector's edge (2 pi/3 - psi = D below
+    !! edge_resolution psi): Newton steps in y = log R on F = log(D(R)/D), D(R) = 2 pi/3 -
+    !! Upsilon(R) ~ c R + C (R/rho)^(3/2) (F nearly linear in y), on the full rules, from
+    !! R = D/c (c = -dUpsilon/dR at 0: D(R) >= c R, so above the root), until F is at the
+    !! rounding of Upsilon (8 eps psi/D: R-bar's conditioning at the edge) or the step
+    !! below 4 eps. R is returned in x. status_ok, status_no_convergence, or an
+    !! evaluation's status.
+    pure subroutine edge_newton(fun, model, b, x, steps, status)
+        type(upsilon_problem), intent(inout) :: fun  !! the function (unknown R)
+        type(inverse_square_model), intent(in) :: model !! the evaluator
+        type(root_bracket), intent(in) :: b          !! f_lo = D, hi = rho/2
+        real(qp), intent(out) :: x                   !! R-bar
+        integer, intent(inout) :: steps              !! evaluations made
+        integer, intent(out) :: status               !! the phase's status
+        real(qp) :: y, f, df, deficit, big_f, slope, dy
+        integer :: k
+        fun%level = level_fine
+        x = b%f_lo/abs(2.0_qp*model%apse_slope_at_zero)
+        y = log(min(x, b%hi))
+        status = status_no_convergence
+        do k = 1, max_edge_steps
+            x = exp(y)
+            call upsilon_at(fun, model, x, f, df, status)
+            steps = steps + 1
+            if (status /= status_ok) return
+            deficit = b%f_lo - f
+            if (.not. (deficit > 0.0_qp .and. df < 0.0_qp)) exit
+            big_f = log(deficit/b%f_lo)
+            status = status_ok
+            if (abs(big_f) <= 8.0_qp*eps_qp*fun%psi/b%f_lo) return
+            slope = -x*df/deficit
+            dy = -big_f/slope
+            y = min(max(y + dy, log(tiny(1.0_qp))), log(b%hi))
+            if (abs(dy) <= 4.0_qp*eps_qp) then
+                x = exp(y)
+                return
+            end if
+        end do
+        status = status_no_convergence
+    end subroutine edge_newton
 
     !> The first half-arch when R-bar is below the smallest normal binary128 number:
     !! R-bar = 0 and s, t at their limits R -> 0, the radial fall 1 - rho and t0(rho)
