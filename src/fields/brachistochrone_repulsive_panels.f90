@@ -30,8 +30,8 @@ module brachistochrone_repulsive_panels
     use brachistochrone_kinds, only: qp, xp
     use brachistochrone_status, only: status_ok, status_no_convergence
     use brachistochrone_quadrature, only: gauss_legendre_rule, gauss_legendre
-    use brachistochrone_fast_math, only: inverse_sqrt, hardware_real
-    use, intrinsic :: iso_fortran_env, only: real64, int64
+    use brachistochrone_fast_math, only: inverse_sqrt, hardware_real, quad_real
+    use, intrinsic :: iso_fortran_env, only: real64
     implicit none
     private
 
@@ -108,14 +108,6 @@ module brachistochrone_repulsive_panels
                     root_ratio2_x = 0.0_xp, rm1_4_x = 0.0_xp
     end type prepared_curve
 
-    !> The seeds' conversion on the bits (`quad_real`) where `xp` is x87 extended.
-    integer(int64), parameter :: quad_bits(2) = transfer(1.5_qp, [0_int64, 0_int64])
-    integer(int64), parameter :: extended_bits(2) = transfer(1.5_xp, [0_int64, 0_int64])
-    logical, parameter :: x87_layout = xp /= real64 .and. digits(1.0_xp) == 64 .and. &
-        storage_size(1.0_xp) == 128 .and. quad_bits(1) == 0_int64 .and. &
-        quad_bits(2) == ishft(int(z'3FFF8', int64), 44) .and. &
-        extended_bits(1) == ishft(3_int64, 62) .and. &
-        iand(extended_bits(2), int(z'FFFF', int64)) == int(z'3FFF', int64)
 
 contains
 
@@ -1127,22 +1119,6 @@ contains
         if (digits(1.0_xp) < 60) r = 0.5_qp*(r + x/r)
         r = r + x/r
     end function heron
-
-    !> A positive normal x87 number in binary128 (exact): the same exponent, the
-    !! significand without its explicit leading bit (`real` where `xp` is not x87).
-    elemental function quad_real(x) result(y)
-        real(xp), intent(in) :: x
-        real(qp) :: y
-        integer(int64), parameter :: low48 = ishft(1_int64, 48) - 1
-        integer(int64) :: bits(2)
-        if (.not. x87_layout) then
-            y = real(x, qp)
-            return
-        end if
-        bits = transfer(x, bits)
-        y = transfer([ishft(bits(1), 49), ior(ishft(iand(bits(2), int(z'FFFF', int64)), &
-                     48), iand(ishft(bits(1), -15), low48))], y)
-    end function quad_real
 
     !> The weighted sum of theta's integrand over one panel [start, start + width] in
     !! hardware precision (the maps of `integrands`), without the piece's constant
