@@ -192,6 +192,7 @@ module brachistochrone_harmonic
         real(qp) :: radius = 0.0_qp     !! r_B
         real(qp) :: angle = 0.0_qp      !! theta_B
         real(qp) :: side = 1.0_qp       !! +1 before the deepest point, -1 after
+        real(qp) :: across = 1.0_qp     !! sqrt(1 - r_B^2)
         logical :: complement = .false. !! the unknown is gamma = pi/2 - beta
     contains
         procedure :: evaluate => endpoint_angle_evaluate
@@ -506,6 +507,7 @@ contains
         else
             fun%radius = radius
             fun%angle = angle
+            fun%across = across
             if (angle < apse_angle) then
                 fun%side = 1.0_qp
                 tunnel%arch = arch_first
@@ -546,16 +548,15 @@ contains
         real(qp), intent(in) :: f_lo, f_hi, x0  !! f at beta = 0, pi/2; first guess
         real(qp), intent(out) :: beta           !! the root (gamma if fun%complement)
         integer, intent(out) :: steps, status   !! binary128 evaluations, status
-        real(qp) :: start, curvature, across, shallow_start, shallow_curvature
+        real(qp) :: start, curvature, shallow_start, shallow_curvature
         integer :: more
-        across = sqrt((1.0_qp - fun%radius)*(1.0_qp + fun%radius))
         fun%complement = .false.
         call early_beta(fun%radius, fun%angle, fun%side, .false., x0, start, curvature)
-        if (curvature == 0.0_qp .and. across < 0.5_qp) then
+        if (curvature == 0.0_qp .and. fun%across < 0.5_qp) then
             ! a shallow B (r_B next to 1): theta moves only within gamma of the order of
             ! sqrt(1 - r_B^2) of the deepest point, where the start x0 (linear in beta) is
             ! not; the early phase in gamma from there
-            call early_beta(fun%radius, fun%angle, fun%side, .true., across, &
+            call early_beta(fun%radius, fun%angle, fun%side, .true., fun%across, &
                             shallow_start, shallow_curvature)
             if (shallow_curvature > 0.0_qp) then
                 fun%complement = .true.
@@ -588,7 +589,7 @@ contains
             k_used = k
             f_0 = merge(f_hi, f_lo, fun%complement)
             f_end = merge(f_lo, f_hi, fun%complement)
-            abs_tol = merge(4.0_qp*eps_qp*across, 0.0_qp, fun%complement)
+            abs_tol = merge(4.0_qp*eps_qp*fun%across, 0.0_qp, fun%complement)
             if (k > 0.0_qp) then
                 call newton_bracketed(fun, 0.0_qp, f_0, 0.5_qp*pi, f_end, x_start, &
                                       4.0_qp*eps_qp, abs_tol, max_steps, root, used, stat, &
@@ -643,7 +644,7 @@ contains
         call beta_trig(x, self%complement, sine, cosine, half)
         call beta_to_rho(self%radius, sine, half, rho_m, d)
         d_plus = d*(1.0_qp + rho_m)
-        across = sqrt((1.0_qp - self%radius)*(1.0_qp + self%radius))
+        across = self%across
         along = self%side*self%radius*cosine
         h = atan2(across, along)
         call position_kernel(h, across/sqrt(d_plus), along/sqrt(d_plus), rho_m, d, px, py)

@@ -581,11 +581,12 @@ contains
         real(qp), intent(out) :: x                   !! R-bar
         integer, intent(inout) :: steps              !! evaluations made
         integer, intent(out) :: status               !! the phase's status
-        real(qp) :: y, f, df, deficit, big_f, slope, dy
+        real(qp) :: y, f, df, deficit, big_f, slope, dy, y_hi
         integer :: k
         fun%level = level_fine
         x = b%f_lo/abs(2.0_qp*model%apse_slope_at_zero)
-        y = log(min(x, b%hi))
+        y_hi = log(b%hi)
+        y = min(log(x), y_hi)
         status = status_no_convergence
         do k = 1, max_edge_steps
             x = exp(y)
@@ -599,7 +600,7 @@ contains
             if (abs(big_f) <= 8.0_qp*eps_qp*fun%psi/b%f_lo) return
             slope = -x*df/deficit
             dy = -big_f/slope
-            y = min(max(y + dy, log(tiny(1.0_qp))), log(b%hi))
+            y = min(max(y + dy, lowest_log_r), y_hi)
             if (abs(dy) <= 4.0_qp*eps_qp) then
                 x = exp(y)
                 return
