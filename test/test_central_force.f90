@@ -55,6 +55,7 @@ contains
         call next_to_the_apse_angle()
         call whole_tables()
         call far_tables()
+        call conserved_momentum()
         call general_references('power1.5', power_law(n=1.5_qp))
         call general_references('power3', power_law(n=3.0_qp))
         call general_references('logarithmic', logarithmic_law())
@@ -74,6 +75,43 @@ contains
     !! below 1e-35, s and t against their R -> 0 limits (1 - rho) + 2 rho and
     !! 2 t0(0) - t0(rho), t0 by mpmath on int_r^1 dx/v (60 and 45 digits agreeing to 46;
     !! in x = 1 - s^2: the mpmath command in the comment below) to 4 eps.
+    !> K = R/v(R) (Tee eq. 25) from the laws' apse constants against R/sqrt(P(R)) by an
+    !! independent path: `speed_squared` (expm1 and log; for the power laws only where a
+    !! Lambda <= 1, beyond which log R's rounding, a Lambda eps, would dominate) or P(R) =
+    !! 2 (R^-a - 1)/a with R^-a by `**`; R from 0.999 down to 1e-30.
+    subroutine conserved_momentum()
+        real(qp), parameter :: radii(5) = [0.999_qp, 0.5_qp, 0.1_qp, 1.0e-5_qp, 1.0e-30_qp]
+        real(qp) :: worst, big_lambda, k, a, p
+        integer :: i, j
+        type(power_law) :: powers(4)
+        type(logarithmic_law) :: logarithmic
+        call section('conserved K = R/v(R) from the apse constants')
+        powers = [power_law(n=1.1_qp), power_law(n=1.5_qp), power_law(n=6.0_qp), &
+                  power_law(n=32.0_qp)]
+        worst = 0.0_qp
+        do i = 1, size(radii)
+            big_lambda = -log(radii(i))
+            do j = 1, size(powers)
+                a = powers(j)%n - 1.0_qp
+                k = powers(j)%conserved(powers(j)%apse_constants(radii(i), &
+                    1.0_qp - radii(i), big_lambda))
+                if (a*big_lambda <= 1.0_qp) then
+                    p = powers(j)%speed_squared(radii(i))
+                else
+                    p = 2.0_qp*(radii(i)**(-a) - 1.0_qp)/a
+                end if
+                worst = max(worst, abs(k*sqrt(p)/radii(i) - 1.0_qp)/eps_qp)
+            end do
+            k = logarithmic%conserved(logarithmic%apse_constants(radii(i), &
+                1.0_qp - radii(i), big_lambda))
+            worst = max(worst, abs(k*sqrt(logarithmic%speed_squared(radii(i)))/radii(i) &
+                                   - 1.0_qp)/eps_qp)
+        end do
+        write (output_unit, '(a,f0.1)') '   largest error of K / eps: ', worst
+        call check(worst <= 16.0_qp, 'K = R/v(R) within 16 eps for power n = 1.1, 1.5, 6, '// &
+                   '32 and the logarithmic law, R = 0.999 .. 1e-30')
+    end subroutine conserved_momentum
+
     subroutine to_the_edge()
         real(qp), parameter :: exponents(6) = [1.1_qp, 1.5_qp, 2.0_qp, 3.0_qp, 10.0_qp, &
                                                32.0_qp]

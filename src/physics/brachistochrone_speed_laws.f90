@@ -1080,11 +1080,13 @@ contains
         tail = real(sum, qp)
     end function series_tail
 
+    !> K = R/v(R) = sqrt(a/(2 E(Lambda))) R^(1 + a/2) = R c(7) (no exponential: c(7) =
+    !! sqrt(a R^a/(2 E(Lambda))) from `power_apse_constants`).
     pure function power_conserved(self, c) result(k)
         class(power_law), intent(in) :: self
         real(qp), intent(in) :: c(8)
         real(qp) :: k
-        k = sqrt(0.5_qp*c(3)/c(2))*exp(-(1.0_qp + 0.5_qp*c(3))*c(1))
+        k = c(5)*c(7)
     end function power_conserved
 
     !> w(x) = w(R) at lambda = 2 pi i/(n+1) (small R); P(x) = 0 at delta = 2 pi i/(n-1).
@@ -1203,11 +1205,12 @@ contains
         t = sqrt(0.5_qp*acos(-1.0_qp))*t
     end subroutine logarithmic_closed_fall
 
+    !> K = R/v(R) = R/sqrt(2 Lambda) = R c(7) (`logarithmic_apse_constants`).
     pure function logarithmic_conserved(self, c) result(k)
         class(logarithmic_law), intent(in) :: self
         real(qp), intent(in) :: c(8)
         real(qp) :: k
-        k = exp(-c(1))/sqrt(2.0_qp*c(1))
+        k = c(5)*c(7)
     end function logarithmic_conserved
 
     !> w(x) = w(R) at lambda = i pi (small R); P has no zero but x = 1.
