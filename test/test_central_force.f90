@@ -49,6 +49,7 @@ contains
         call harmonic_closed_forms()
         call power_laws()
         call closed_fall_times()
+        call fall_time_tables()
         call fast_exponentials()
         call next_to_the_start()
         call two_root_finders()
@@ -909,5 +910,37 @@ contains
         write (output_unit, '(a,f6.2)') '   power law n = 2 = fast path, 9 endpoints: ', worst
         call check(worst >= 32.0_qp, 'power law n = 2: R, s, t = fast path to >= 32 digits')
     end subroutine closed_fall_times
+
+    !> The power law's fall time from the coefficients kept by `prepare` (n >= 3/2) and
+    !! from the series computed at each call against mpmath on the original integral
+    !! (data/reference/power_fall_time_mpmath.csv: 7 exponents, delta = 1e-34 .. 40).
+    subroutine fall_time_tables()
+        type(csv_table) :: table
+        type(power_law) :: tabulated, series
+        real(qp) :: n, delta, reference, t(2), worst(2)
+        integer :: i
+        logical :: ok, found
+        call section('central force: the power law''s fall time against mpmath')
+        call read_reference('data/reference/power_fall_time_mpmath.csv', 60, table, ok)
+        if (.not. ok) return
+        worst = 0.0_qp
+        do i = 1, table%row_count()
+            n = table%real_value(i, 'n')
+            delta = table%real_value(i, 'delta')
+            reference = table%real_value(i, 't0')
+            tabulated = power_law(n=n)
+            call tabulated%prepare()
+            series = tabulated
+            series%fall_table = .false.
+            call check(tabulated%fall_table, 'fall-time coefficients kept for n >= 3/2')
+            call tabulated%closed_fall(0.0_qp, delta, t(1), found)
+            call series%closed_fall(0.0_qp, delta, t(2), found)
+            ! (delta rounded to binary128 moves t0 by at most eps t0/2)
+            worst = max(worst, abs(t - reference)/(eps_qp*reference))
+        end do
+        write (output_unit, '(a,2f7.2)') '   worst error in eps (tables, series): ', worst
+        call check(worst(1) <= 8.0_qp, 'fall time from the kept coefficients = mpmath to 8 eps')
+        call check(worst(2) <= 8.0_qp, 'fall time from the series = mpmath to 8 eps')
+    end subroutine fall_time_tables
 
 end module test_central_force

@@ -52,6 +52,11 @@ module brachistochrone_speed_laws
     real(qp), parameter :: half_step(0:max_series_terms) = &
         [((real(k_, qp) + 0.5_qp)/real(k_ + 1, qp), k_ = 0, max_series_terms)]
     real(qp), parameter :: log_two = log(2.0_qp)
+    !> Coefficients kept per power law for `tabulated_fall_time` (ratio <= 1/2: at most
+    !! 121 terms for 1e-36) and the least a = n - 1 that gets them (below it the series
+    !! in W^2 cancels: `mild_fall_time`)
+    integer, parameter :: fall_terms = 124
+    real(qp), parameter :: table_min_a = 0.5_qp
 
     !> sqrt(z/sinh z) = sum_m sinh_root(m) z^(2m) (radius pi), for the fall time of the
     !! power laws n < 3 where (n - 1) delta <= 2 log 2 (`mild_fall_time`); 40 digits from
@@ -173,6 +178,13 @@ module brachistochrone_speed_laws
         real(qp) :: n = 2.0_qp !! exponent of the force, n > 1
         !> t0(0) = B(1/a + 1/2, 1/2)/sqrt(2 a), a = n - 1 (`prepare`; 0: not kept)
         real(qp) :: fall_limit = 0.0_qp
+        !> The fall time's series with their coefficients computed once (`power_prepare`,
+        !! for n >= 3/2: `tabulated_fall_time`): c_k/(2k+1) in W^2 and d_k/(p+k) in y,
+        !! in binary128 and hardware precision, and the factors sqrt(2/a), 1/sqrt(2 a)
+        logical :: fall_table = .false.
+        real(qp) :: fall_w(0:fall_terms) = 0.0_qp, fall_y(0:fall_terms) = 0.0_qp
+        real(xp) :: fall_w_xp(0:fall_terms) = 0.0_xp, fall_y_xp(0:fall_terms) = 0.0_xp
+        real(qp) :: fall_scale(2) = 0.0_qp
     contains
         procedure :: speed_squared => power_p
         procedure :: divided_difference => power_d
@@ -473,13 +485,30 @@ contains
 
     !> The fall time to the centre, t0(0) = B(p, 1/2)/sqrt(2 a), p = 1/a + 1/2, for
     !! `power_fall_time` (two gamma functions, about 20 us, per call otherwise); a >= 1/100
-    !! (below it the fall time never needs it).
+    !! (below it the fall time never needs it). For a >= 1/2 also the coefficients of the
+    !! fall time's two series (`tabulated_fall_time`): c_0 = 1, c_(k+1) = c_k (k+1-p)/(k+1)
+    !! (the binomial series of (1 - w^2)^(p-1)), d_0 = 1, d_(k+1) = d_k (k+1/2)/(k+1).
     pure subroutine power_prepare(self)
         class(power_law), intent(inout) :: self
-        real(qp) :: a
+        real(qp) :: a, p, c, d
+        integer :: k
         a = self%n - 1.0_qp
         self%fall_limit = 0.0_qp
         if (a >= 0.01_qp) self%fall_limit = fall_beta(a)/sqrt(2.0_qp*a)
+        self%fall_table = a >= table_min_a .and. a == a
+        if (.not. self%fall_table) return
+        p = 1.0_qp/a + 0.5_qp
+        c = 1.0_qp
+        d = 1.0_qp
+        do k = 0, fall_terms
+            self%fall_w(k) = c/real(2*k + 1, qp)
+            self%fall_y(k) = d/(p + real(k, qp))
+            c = c*(real(k + 1, qp) - p)/real(k + 1, qp)
+            d = d*(real(k, qp) + 0.5_qp)/real(k + 1, qp)
+        end do
+        self%fall_w_xp = real(self%fall_w, xp)
+        self%fall_y_xp = real(self%fall_y, xp)
+        self%fall_scale = [sqrt(2.0_qp/a), 1.0_qp/sqrt(2.0_qp*a)]
     end subroutine power_prepare
 
     !> B(p, 1/2) = Gamma(p) sqrt(pi)/Gamma(p + 1/2), p = 1/a + 1/2.
@@ -895,7 +924,8 @@ contains
 
     !> n = 3: t0(x) = sqrt(1 - x^2); n = 2: the inverse-square fall time (Tee eq. 46);
     !! other n: a series of incomplete gamma functions or an incomplete beta function
-    !! (`power_fall_time`). (exp and expm1: `fast_exp`'s, a few units in the last place,
+    !! (`power_fall_time`; n >= 3/2: `tabulated_fall_time`, the same series' coefficients
+    !! kept by `power_prepare`). (exp and expm1: `fast_exp`'s, a few units in the last place,
     !! several times faster than libquadmath's; t0(1) = 0 not evaluated.)
     pure subroutine power_closed_fall(self, delta_lo, delta_hi, t, found)
         class(power_law), intent(in) :: self
@@ -912,6 +942,9 @@ contains
         else if (self%n == 2.0_qp) then
             t = inverse_square_fall(delta_hi)
             if (delta_lo > 0.0_qp) t = t - inverse_square_fall(delta_lo)
+        else if (self%fall_table) then
+            t = tabulated_fall_time(self, delta_hi)
+            if (delta_lo > 0.0_qp) t = t - tabulated_fall_time(self, delta_lo)
         else if (found) then
             t = power_fall_time(a, delta_hi, self%fall_limit)
             if (delta_lo > 0.0_qp) t = t - power_fall_time(a, delta_lo, self%fall_limit)
@@ -1048,6 +1081,55 @@ contains
             end if
         end if
     end function power_fall_time
+
+    !> `power_fall_time`'s two series (a >= 1/2, no `mild_fall_time`) with the coefficients
+    !! kept by `power_prepare`: t0 = sqrt(2/a) W sum_k w_k u^k, u = W^2 = 1 - y <= 1/2, or
+    !! t0 = t0(0) - y^p sum_k y_k y^k/sqrt(2 a), y = exp(-a delta) < 1/2, by Horner's rule
+    !! (`fall_series`): no divisions, two operations per term.
+    pure function tabulated_fall_time(law, delta) result(t)
+        type(power_law), intent(in) :: law
+        real(qp), intent(in) :: delta
+        real(qp) :: t, a, u, y
+        a = law%n - 1.0_qp
+        if (a*delta <= log_two) then
+            u = -fast_expm1(-a*delta)
+            t = law%fall_scale(1)*fast_sqrt(u)*fall_series(law%fall_w, law%fall_w_xp, u)
+        else
+            y = fast_exp(-a*delta)
+            t = law%fall_limit - fast_exp(-(1.0_qp + 0.5_qp*a)*delta)*law%fall_scale(2)* &
+                fall_series(law%fall_y, law%fall_y_xp, y)
+        end if
+    end function tabulated_fall_time
+
+    !> sum_k c_k r^k, 0 <= r <= 1/2, |c_k| <= 1 falling slower than r^k: the terms to
+    !! r^k < 1e-36 (after the first, the sums' least terms relative to their first), those
+    !! from r^k < 2^-64 on in hardware precision (their error below 1e-37 of the sum).
+    pure function fall_series(c, c_xp, r) result(total)
+        real(qp), intent(in) :: c(0:fall_terms), r
+        real(xp), intent(in) :: c_xp(0:fall_terms)
+        real(qp) :: total
+        real(xp) :: tail, r_xp
+        real(real64) :: log_r
+        integer :: top, head, k
+        total = c(0)
+        if (r <= 0.0_qp) return
+        log_r = log(max(real(r, real64), tiny(1.0_real64)))
+        top = min(fall_terms, 1 + ceiling(log(1.0e-36_real64)/log_r))
+        head = min(top, 1 + ceiling(log(2.0_real64**(-64))/log_r))
+        if (top > head) then
+            r_xp = hardware_real(r)
+            tail = c_xp(top)
+            do k = top - 1, head + 1, -1
+                tail = tail*r_xp + c_xp(k)
+            end do
+            total = c(head) + r*real(tail, qp)
+        else
+            total = c(top)
+        end if
+        do k = head - 1, 0, -1
+            total = total*r + c(k)
+        end do
+    end function fall_series
 
     !> The tail of `power_fall_time`'s series from term k on (c, power: its coefficient
     !! and power there, ratio: the power's ratio; `binomial`: the series in W, else the
