@@ -1869,7 +1869,7 @@ contains
         integer, intent(in), optional :: given_count
         type(panel) :: panels(max_panels)
         real(xp) :: part(2), last, v, lambda, delta, jacobian, g, omq, log_slope, big
-        real(xp) :: scale, share, lo, width
+        real(xp) :: scale, share, lo, width, exp_shift
         integer :: count, p, k, j
         if (present(given) .and. present(given_count)) then
             count = given_count
@@ -1881,6 +1881,10 @@ contains
         slope = 0.0_xp
         last = 0.0_xp
         big = real(a%big_lambda, xp)
+        ! the scale factor once for all nodes (0: beyond the hardware kind's range, the
+        ! law scales each node by exp(shift - its decay) itself)
+        exp_shift = 0.0_xp
+        if (shift <= 11000.0_xp) exp_shift = exp(shift)
         do p = 1, count
             associate (pan => panels(p))
             share = 1.0_xp
@@ -1900,7 +1904,7 @@ contains
                 v = lo + width*model%gauss(j)%offset_xp(k)
                 call node_point_xp(pan%kind, scale, big, v, lambda, delta, jacobian)
                 call model%law%theta_terms_xp(a%cx, lambda, delta, shift, rough, g, omq, &
-                                              log_slope)
+                                              log_slope, exp_shift)
                 part(1) = part(1) + model%gauss(j)%weight_xp(k)*g*jacobian
                 part(2) = part(2) + model%gauss(j)%weight_xp(k)*g*jacobian* &
                           (0.5_xp*log_slope/omq)

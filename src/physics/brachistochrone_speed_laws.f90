@@ -1356,7 +1356,7 @@ contains
 
     !> No hardware-precision terms: zeros (see has_terms_xp).
     pure subroutine default_theta_terms_xp(self, c, lambda, delta, shift, rough, g, &
-                                           one_minus_q, log_slope)
+                                           one_minus_q, log_slope, exp_shift)
         class(speed_law), intent(in) :: self
         real(xp), intent(in) :: c(4)                 !! from apse_constants_xp
         real(xp), intent(in) :: lambda, delta        !! offsets from the apse and the start
@@ -1365,6 +1365,10 @@ contains
         real(xp), intent(out) :: g                   !! sqrt(q/(1 - q)) exp(shift)
         real(xp), intent(out) :: one_minus_q         !! 1 - q
         real(xp), intent(out) :: log_slope           !! d(log q)/d Lambda at fixed lambda
+        !> exp(shift) where the caller has it (one exponential per evaluation rather than
+        !! one per node; 0: not at hand); the laws then scale the node's own decay
+        !! factors by it where they stay in range (`scaled_decay`)
+        real(xp), intent(in), optional :: exp_shift
         g = 0.0_xp
         one_minus_q = 1.0_xp
         log_slope = 0.0_xp
@@ -1407,6 +1411,23 @@ contains
         end if
     end subroutine exp_and_decay_xp
 
+    !> exp(shift - y) from exp(-y) = `decay` at hand: exp(shift) decay where the caller
+    !! gives exp(shift) (`exp_shift` > 0) and decay (0: not normal, or not at hand), else
+    !! `scaled_exp`.
+    elemental function scaled_decay(shift, y, decay, rough, exp_shift) result(e)
+        real(xp), intent(in) :: shift, y, decay
+        logical, intent(in) :: rough
+        real(xp), intent(in), optional :: exp_shift
+        real(xp) :: e
+        if (present(exp_shift)) then
+            if (exp_shift > 0.0_xp .and. decay > 0.0_xp) then
+                e = exp_shift*decay
+                return
+            end if
+        end if
+        e = scaled_exp(shift - y, rough)
+    end function scaled_decay
+
     !> exp(y) in hardware precision, or `rough`ly in double precision (0 below its range).
     elemental function scaled_exp(y, rough) result(e)
         real(xp), intent(in) :: y
@@ -1419,27 +1440,31 @@ contains
         end if
     end function scaled_exp
 
-    !> Power law: [Lambda, E(Lambda), a, 0].
+    !> Power law: [Lambda, E(Lambda), a, exp(-a Lambda)].
     pure function power_apse_constants_xp(self, big_lambda) result(c)
         class(power_law), intent(in) :: self
         real(xp), intent(in) :: big_lambda
-        real(xp) :: c(4), a, e
+        real(xp) :: c(4), a
         a = real(self%n - 1.0_qp, xp)
         c = [big_lambda, 0.0_xp, a, 0.0_xp]
-        call exp_and_decay_xp(a*big_lambda, e, c(2), .false.)
+        call exp_and_decay_xp(a*big_lambda, c(4), c(2), .false.)
     end function power_apse_constants_xp
 
     !> Power law: q = exp(-(a+2) lambda) E(delta)/E(Lambda), 1 - q = (1 - exp(-2 lambda))
     !! + exp(-2 lambda) E(lambda)/E(Lambda) and, since exp(-a lambda) E(delta) =
     !! exp(-a lambda) - exp(-a Lambda), d(log q)/d Lambda = a E(lambda) exp(-a delta)/
-    !! (E(Lambda) E(delta)).
+    !! (E(Lambda) E(delta)). Two exponentials per node at most: exp(-a delta) =
+    !! exp(-a Lambda)/exp(-a lambda) where a delta >= 1/2 (E(delta) loses under a bit) and
+    !! exp(-a Lambda) is normal, and exp(shift - (a+2) lambda/2) = exp(shift) sqrt(exp(-2
+    !! lambda) exp(-a lambda)) with `exp_shift` (`scaled_decay`).
     pure subroutine power_theta_terms_xp(self, c, lambda, delta, shift, rough, g, &
-                                         one_minus_q, log_slope)
+                                         one_minus_q, log_slope, exp_shift)
         class(power_law), intent(in) :: self
         real(xp), intent(in) :: c(4), lambda, delta, shift
         logical, intent(in) :: rough
         real(xp), intent(out) :: g, one_minus_q, log_slope
-        real(xp) :: e2, om2, ea, e_lambda, ead, e_delta
+        real(xp), intent(in), optional :: exp_shift
+        real(xp) :: e2, om2, ea, e_lambda, ead, e_delta, top, decay
         logical :: known  ! E(delta) at hand
         known = .false.
         if (c(3) == 1.0_xp) then
@@ -1470,18 +1495,28 @@ contains
                 call exp_and_decay_xp(c(3)*lambda, ea, e_lambda, rough)
             end if
         end if
+        ! (exp(-2 lambda), exp(-a lambda) normal: from double precision where `rough`)
+        top = merge(700.0_xp, 11000.0_xp, rough)
         if (.not. known) then
             if (c(3)*delta <= 0.25_xp .and. lambda <= delta) then
                 ! nearer the apse: exp(-a lambda) E(delta) = E(Lambda) - E(lambda)
                 e_delta = (c(2) - e_lambda)/ea
                 ead = 1.0_xp - e_delta
+            else if (c(3)*delta >= 0.5_xp .and. c(4) > tiny(1.0_xp) .and. &
+                     c(3)*lambda <= top) then
+                ! exp(-a delta) = exp(-a Lambda)/exp(-a lambda)
+                ead = c(4)/ea
+                e_delta = 1.0_xp - ead
             else
                 call exp_and_decay_xp(c(3)*delta, ead, e_delta, rough)
             end if
         end if
         one_minus_q = om2 + e2*e_lambda/c(2)
-        g = sqrt(e_delta/(one_minus_q*c(2)))*scaled_exp(shift - 0.5_xp*(c(3) + 2.0_xp)*lambda, &
-                                                         rough)
+        ! exp(-(a+2) lambda/2) from both where their product is normal
+        decay = 0.0_xp
+        if (merge(max(2.0_xp, c(3)), c(3) + 2.0_xp, rough)*lambda <= top) decay = sqrt(e2*ea)
+        g = sqrt(e_delta/(one_minus_q*c(2)))* &
+            scaled_decay(shift, 0.5_xp*(c(3) + 2.0_xp)*lambda, decay, rough, exp_shift)
         log_slope = c(3)*e_lambda*ead/(c(2)*e_delta)
     end subroutine power_theta_terms_xp
 
@@ -1496,15 +1531,19 @@ contains
     !> Logarithmic law: q = exp(-2 lambda) delta/Lambda, 1 - q = (1 - exp(-2 lambda)) +
     !! exp(-2 lambda) lambda/Lambda, d(log q)/d Lambda = lambda/(delta Lambda).
     pure subroutine logarithmic_theta_terms_xp(self, c, lambda, delta, shift, rough, g, &
-                                               one_minus_q, log_slope)
+                                               one_minus_q, log_slope, exp_shift)
         class(logarithmic_law), intent(in) :: self
         real(xp), intent(in) :: c(4), lambda, delta, shift
         logical, intent(in) :: rough
         real(xp), intent(out) :: g, one_minus_q, log_slope
-        real(xp) :: e2, om2
+        real(xp), intent(in), optional :: exp_shift
+        real(xp) :: e2, om2, decay
         call exp_and_decay_xp(2.0_xp*lambda, e2, om2, rough)
         one_minus_q = om2 + e2*lambda/c(1)
-        g = sqrt(delta/(one_minus_q*c(1)))*scaled_exp(shift - lambda, rough)
+        ! exp(-lambda) = sqrt(exp(-2 lambda)) where that is normal
+        decay = 0.0_xp
+        if (2.0_xp*lambda <= merge(700.0_xp, 11000.0_xp, rough)) decay = sqrt(e2)
+        g = sqrt(delta/(one_minus_q*c(1)))*scaled_decay(shift, lambda, decay, rough, exp_shift)
         log_slope = lambda/(delta*c(1))
     end subroutine logarithmic_theta_terms_xp
 
@@ -1525,16 +1564,20 @@ contains
     !> Harmonic law: q = exp(-2 lambda) (1 - x^2)/(1 - R^2), 1 - q = (1 - exp(-2 lambda))/
     !! (1 - R^2), d(log q)/d Lambda = 2 x^2 (1 - exp(-2 lambda))/((1 - x^2)(1 - R^2)).
     pure subroutine harmonic_theta_terms_xp(self, c, lambda, delta, shift, rough, g, &
-                                            one_minus_q, log_slope)
+                                            one_minus_q, log_slope, exp_shift)
         class(harmonic_law), intent(in) :: self
         real(xp), intent(in) :: c(4), lambda, delta, shift
         logical, intent(in) :: rough
         real(xp), intent(out) :: g, one_minus_q, log_slope
-        real(xp) :: e2, om2, x2, p_x
+        real(xp), intent(in), optional :: exp_shift
+        real(xp) :: e2, om2, x2, p_x, decay
         call exp_and_decay_xp(2.0_xp*lambda, e2, om2, rough)
         call exp_and_decay_xp(2.0_xp*delta, x2, p_x, rough)
         one_minus_q = om2/c(2)
-        g = sqrt(p_x/om2)*scaled_exp(shift - lambda, rough)
+        ! exp(-lambda) = sqrt(exp(-2 lambda)) where that is normal
+        decay = 0.0_xp
+        if (2.0_xp*lambda <= merge(700.0_xp, 11000.0_xp, rough)) decay = sqrt(e2)
+        g = sqrt(p_x/om2)*scaled_decay(shift, lambda, decay, rough, exp_shift)
         log_slope = 2.0_xp*x2*om2/(p_x*c(2))
     end subroutine harmonic_theta_terms_xp
 
