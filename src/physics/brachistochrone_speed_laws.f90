@@ -1375,41 +1375,98 @@ contains
     end subroutine default_theta_terms_xp
 
     !> exp(-y) and E = 1 - exp(-y) = -expm1(-y), y >= 0, both to full relative precision
-    !! in hardware precision (for y < 1/2 E by its Taylor series, nested: y (1 - y/2 (1 -
-    !! y/3 (...))), 18 terms, the last below 2^-70 of E; one exponential's cost), or
-    !! `rough`ly, in double precision.
+    !! in hardware precision (`table_exp_xp`), or `rough`ly: for y >= 1/2 in double
+    !! precision (E then loses nothing), below it as the full ones (cheaper than double
+    !! precision's exp and sinh for E without cancellation).
     elemental subroutine exp_and_decay_xp(y, e, one_minus_e, rough)
         real(xp), intent(in) :: y
         real(xp), intent(out) :: e, one_minus_e
         logical, intent(in) :: rough
-        real(real64) :: y64, e64
-        integer, parameter :: decay_terms = 18
-        real(xp), parameter :: inverse_xp(2:decay_terms) = &
-            [(1.0_xp/real(k_, xp), k_ = 2, decay_terms)]
-        integer :: k
-        if (rough) then
-            y64 = real(y, real64)
-            if (y64 < 0.5_real64) then
-                e64 = exp(-0.5_real64*y64)
-                one_minus_e = real(2.0_real64*e64*sinh(0.5_real64*y64), xp)
-                e = real(e64*e64, xp)
-            else
-                e64 = exp(-y64)
-                e = real(e64, xp)
-                one_minus_e = real(1.0_real64 - e64, xp)
-            end if
-        else if (y < 0.5_xp) then
-            one_minus_e = 1.0_xp
-            do k = decay_terms, 2, -1
-                one_minus_e = 1.0_xp - y*one_minus_e*inverse_xp(k)
-            end do
-            one_minus_e = y*one_minus_e
-            e = 1.0_xp - one_minus_e
+        real(real64) :: e64
+        if (rough .and. y >= 0.5_xp) then
+            e64 = exp(-real(y, real64))
+            e = real(e64, xp)
+            one_minus_e = real(1.0_real64 - e64, xp)
         else
-            e = exp(-y)
-            one_minus_e = 1.0_xp - e
+            call table_exp_xp(y, e, one_minus_e)
         end if
     end subroutine exp_and_decay_xp
+
+    !> exp(-y) (and 1 - exp(-y) for y >= 0) in hardware precision for |y| <= 11000, both
+    !! within about an ulp: y = (64 m + j) log(2)/64 + r, |r| <= log(2)/128 (k log(2)/64
+    !! exact in two parts), exp(-y) = 2^-m 2^(-j/64) (1 - E(r)), E(r) = -expm1(-r) by its
+    !! Taylor series (8 terms, the next below 2^-68 of it); for m = 0 (y < 0.69) 1 -
+    !! exp(-y) = (1 - 2^(-j/64)) + 2^(-j/64) E(r) (at most a bit cancels, for r < 0), else
+    !! 1 - exp(-y). Both tables rounded from binary128 constants; k and 2^-m on the bits
+    !! of the x87 format (no library calls: several times cheaper than the library's long
+    !! double exp). Elsewhere (|y| > 11000, or no x87 format) the library's exp, and for
+    !! 0 <= y < 1/2 1 - exp(-y) by its Taylor series (18 terms).
+    elemental subroutine table_exp_xp(y, e, one_minus_e)
+        use, intrinsic :: iso_fortran_env, only: int64
+        real(xp), intent(in) :: y
+        real(xp), intent(out) :: e, one_minus_e
+        integer, parameter :: decay_terms = 18
+        integer :: i_, i, j
+        integer(int64) :: k, m
+        real(xp), parameter :: power(0:63) = &
+            [(real(2.0_qp**(-real(i_, qp)/64.0_qp), xp), i_ = 0, 63)]
+        real(xp), parameter :: decay(0:63) = &
+            [(real(1.0_qp - 2.0_qp**(-real(i_, qp)/64.0_qp), xp), i_ = 0, 63)]
+        real(xp), parameter :: inverse(2:decay_terms) = &
+            [(1.0_xp/real(i_, xp), i_ = 2, decay_terms)]
+        ! the Taylor coefficients of -expm1(-r), (-1)^(i+1)/i!
+        real(xp), parameter :: c(8) = [(real((-1.0_qp)**(i_ + 1)/gamma(real(i_ + 1, qp)), &
+                                             xp), i_ = 1, 8)]
+        ! log(2)/64 in two parts, the first with 43 significant bits (k times it exact
+        ! for |k| < 2^21); 1.5 2^52, whose ulp in double precision is 1 (adding it rounds
+        ! to an integer)
+        real(qp), parameter :: step = log(2.0_qp)/64.0_qp
+        real(xp), parameter :: step_hi = real(anint(step*2.0_qp**49)*2.0_qp**(-49), xp)
+        real(xp), parameter :: step_lo = real(step - real(step_hi, qp), xp)
+        real(real64), parameter :: per_step = real(64.0_qp/log(2.0_qp), real64)
+        real(real64), parameter :: shifter = 1.5_real64*2.0_real64**52
+        integer(int64), parameter :: one_bits(2) = transfer(1.0_xp, [0_int64, 0_int64])
+        logical, parameter :: x87 = digits(1.0_xp) == 64 .and. &
+            storage_size(1.0_xp) == 128 .and. one_bits(1) == ishft(1_int64, 63) .and. &
+            iand(one_bits(2), 65535_int64) == 16383_int64
+        real(xp) :: r, r2, em
+        if (.not. (x87 .and. abs(y) <= 11000.0_xp)) then
+            if (y >= 0.0_xp .and. y < 0.5_xp) then
+                one_minus_e = 1.0_xp
+                do i = decay_terms, 2, -1
+                    one_minus_e = 1.0_xp - y*one_minus_e*inverse(i)
+                end do
+                one_minus_e = y*one_minus_e
+                e = 1.0_xp - one_minus_e
+            else
+                e = exp(-y)
+                one_minus_e = 1.0_xp - e
+            end if
+            return
+        end if
+        ! k = y 64/log(2) rounded (in double precision: |r| may exceed log(2)/128 by 1e-16)
+        k = int((real(y, real64)*per_step + shifter) - shifter, int64)
+        j = int(iand(k, 63_int64))
+        r = (y - real(k, xp)*step_hi) - real(k, xp)*step_lo
+        ! odd and even terms apart (two short chains)
+        r2 = r*r
+        em = r*(c(1) + r2*(c(3) + r2*(c(5) + r2*c(7)))) + &
+             r2*(c(2) + r2*(c(4) + r2*(c(6) + r2*c(8))))
+        e = power(j) - power(j)*em
+        if (k >= 0_int64 .and. k < 64_int64) then
+            one_minus_e = decay(j) + power(j)*em
+        else
+            ! times 2^-m (|m| < 16000: a normal power of two; in double precision where
+            ! |m| < 1000)
+            m = (k - j)/64_int64
+            if (abs(m) < 1000_int64) then
+                e = e*real(transfer(ishft(1023_int64 - m, 52), 1.0_real64), xp)
+            else
+                e = e*transfer([ishft(1_int64, 63), 16383_int64 - m], 1.0_xp)
+            end if
+            one_minus_e = 1.0_xp - e
+        end if
+    end subroutine table_exp_xp
 
     !> exp(shift - y) from exp(-y) = `decay` at hand: exp(shift) decay where the caller
     !! gives exp(shift) (`exp_shift` > 0) and decay (0: not normal, or not at hand), else
@@ -1433,10 +1490,11 @@ contains
         real(xp), intent(in) :: y
         logical, intent(in) :: rough
         real(xp) :: e
+        real(xp) :: one_minus_e
         if (rough) then
             e = real(exp(real(max(y, -745.0_xp), real64)), xp)
         else
-            e = exp(y)
+            call table_exp_xp(-y, e, one_minus_e)
         end if
     end function scaled_exp
 
