@@ -1393,10 +1393,10 @@ contains
     end subroutine exp_and_decay_xp
 
     !> exp(-y) (and 1 - exp(-y) for y >= 0) in hardware precision for |y| <= 11000, both
-    !! within about an ulp: y = (64 m + j) log(2)/64 + r, |r| <= log(2)/128 (k log(2)/64
-    !! exact in two parts), exp(-y) = 2^-m 2^(-j/64) (1 - E(r)), E(r) = -expm1(-r) by its
-    !! Taylor series (8 terms, the next below 2^-68 of it); for m = 0 (y < 0.69) 1 -
-    !! exp(-y) = (1 - 2^(-j/64)) + 2^(-j/64) E(r) (at most a bit cancels, for r < 0), else
+    !! within about an ulp: y = (64 m + j) log(2)/64 + r, 0 <= r < log(2)/64 for y >= 0
+    !! (k log(2)/64 exact in two parts), exp(-y) = 2^-m 2^(-j/64) (1 - E(r)), E(r) =
+    !! -expm1(-r) by its Taylor series (8 terms, the next below 2^-70 of it); for m = 0
+    !! (y < 0.69) 1 - exp(-y) = (1 - 2^(-j/64)) + 2^(-j/64) E(r) (positive terms), else
     !! 1 - exp(-y). Both tables rounded from binary128 constants; k and 2^-m on the bits
     !! of the x87 format (no library calls: several times cheaper than the library's long
     !! double exp). Elsewhere (|y| > 11000, or no x87 format) the library's exp, and for
@@ -1418,13 +1418,11 @@ contains
         real(xp), parameter :: c(8) = [(real((-1.0_qp)**(i_ + 1)/gamma(real(i_ + 1, qp)), &
                                              xp), i_ = 1, 8)]
         ! log(2)/64 in two parts, the first with 43 significant bits (k times it exact
-        ! for |k| < 2^21); 1.5 2^52, whose ulp in double precision is 1 (adding it rounds
-        ! to an integer)
+        ! for |k| < 2^21)
         real(qp), parameter :: step = log(2.0_qp)/64.0_qp
         real(xp), parameter :: step_hi = real(anint(step*2.0_qp**49)*2.0_qp**(-49), xp)
         real(xp), parameter :: step_lo = real(step - real(step_hi, qp), xp)
         real(real64), parameter :: per_step = real(64.0_qp/log(2.0_qp), real64)
-        real(real64), parameter :: shifter = 1.5_real64*2.0_real64**52
         integer(int64), parameter :: one_bits(2) = transfer(1.0_xp, [0_int64, 0_int64])
         logical, parameter :: x87 = digits(1.0_xp) == 64 .and. &
             storage_size(1.0_xp) == 128 .and. one_bits(1) == ishft(1_int64, 63) .and. &
@@ -1444,14 +1442,15 @@ contains
             end if
             return
         end if
-        ! k = y 64/log(2) rounded (in double precision: |r| may exceed log(2)/128 by 1e-16)
-        k = int((real(y, real64)*per_step + shifter) - shifter, int64)
+        ! k = y 64/log(2) rounded down for y >= 0 (r >= 0 up to the double-precision
+        ! product's rounding: 1 - exp(-y) below adds positive terms), toward 0 below
+        k = int(real(y, real64)*per_step, int64)
         j = int(iand(k, 63_int64))
         r = (y - real(k, xp)*step_hi) - real(k, xp)*step_lo
-        ! odd and even terms apart (two short chains)
+        ! r plus the rest (below r/2: the last rounding dominates), in pairs of terms
         r2 = r*r
-        em = r*(c(1) + r2*(c(3) + r2*(c(5) + r2*c(7)))) + &
-             r2*(c(2) + r2*(c(4) + r2*(c(6) + r2*c(8))))
+        em = r + r2*((c(2) + r*c(3)) + r2*((c(4) + r*c(5)) + r2*((c(6) + r*c(7)) + &
+                                                                 r2*c(8))))
         e = power(j) - power(j)*em
         if (k >= 0_int64 .and. k < 64_int64) then
             one_minus_e = decay(j) + power(j)*em
