@@ -7,6 +7,7 @@ program test_main
     use test_namelist, only: run_namelist_tests
     use test_format, only: run_format_tests
     use test_hardware_level, only: run_hardware_level_tests
+    use test_hardware_terms, only: run_hardware_terms_tests
     use test_central_force, only: run_central_force_tests
     use test_curves, only: run_curve_tests
     use test_harmonic, only: run_harmonic_tests
@@ -24,6 +25,7 @@ program test_main
     call run_namelist_tests()
     call run_format_tests()
     call run_hardware_level_tests()
+    call run_hardware_terms_tests()
     call run_physics_tests()
     call run_central_force_tests()
     call run_curve_tests()

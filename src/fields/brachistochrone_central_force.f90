@@ -1812,7 +1812,7 @@ contains
                 (a%weight_below == 0.0_qp .or. a%weight_below == 2.0_qp)
         if (found) then
             ! as `table_sums`, Theta scaled by exp(shift)
-            whole = whole*exp(shift)
+            if (shift /= 0.0_xp) whole = whole*exp(shift)
             call split_panels(model, a, below, panels_below, n_below, above, panels_above, &
                               n_above)
             ! (the hardware-precision evaluations straight to int_lambda_r^Lambda where the
@@ -1869,7 +1869,7 @@ contains
         integer, intent(in), optional :: given_count
         type(panel) :: panels(max_panels)
         real(xp) :: part(2), last, v, lambda, delta, jacobian, g, omq, log_slope, big
-        real(xp) :: scale, share, lo, width
+        real(xp) :: scale, share, lo, width, exp_shift
         integer :: count, p, k, j
         if (present(given) .and. present(given_count)) then
             count = given_count
@@ -1881,6 +1881,14 @@ contains
         slope = 0.0_xp
         last = 0.0_xp
         big = real(a%big_lambda, xp)
+        ! the scale factor once for all nodes (0: beyond the hardware kind's range, the
+        ! law scales each node by exp(shift - its decay) itself)
+        exp_shift = 1.0_xp
+        if (shift > 11000.0_xp) then
+            exp_shift = 0.0_xp
+        else if (shift /= 0.0_xp) then
+            exp_shift = exp(shift)
+        end if
         do p = 1, count
             associate (pan => panels(p))
             share = 1.0_xp
@@ -1900,7 +1908,7 @@ contains
                 v = lo + width*model%gauss(j)%offset_xp(k)
                 call node_point_xp(pan%kind, scale, big, v, lambda, delta, jacobian)
                 call model%law%theta_terms_xp(a%cx, lambda, delta, shift, rough, g, omq, &
-                                              log_slope)
+                                              log_slope, exp_shift)
                 part(1) = part(1) + model%gauss(j)%weight_xp(k)*g*jacobian
                 part(2) = part(2) + model%gauss(j)%weight_xp(k)*g*jacobian* &
                           (0.5_xp*log_slope/omq)
@@ -2018,26 +2026,29 @@ contains
         logical, intent(in) :: rough
         real(xp), intent(out) :: f, slope
         type(arch_setup) :: a
-        real(xp) :: scaled, scaled_slope, shift, lambda_slope, upsilon, limit
+        real(xp) :: scaled, scaled_slope, shift, lambda_slope, upsilon, limit, unscale
         call setup_xp(model, prob, x, a, lambda_slope)
         call theta_xp(model, a, rough, scaled, scaled_slope, shift)
+        ! exp(-shift) where used (1 on the second half-arch: no library call)
+        unscale = 1.0_xp
+        if (shift /= 0.0_xp .and. (prob%form /= 1 .or. prob%use_u)) unscale = exp(-shift)
         select case (prob%form)
         case (1)
             ! log(Upsilon/psi) (the unknown u: the ratio first, as `residual64`)
             if (prob%use_u) then
-                f = log(scaled*exp(-shift)/real(prob%psi, xp))
+                f = log(scaled*unscale/real(prob%psi, xp))
             else
                 f = log(max(scaled, tiny(1.0_xp))) - shift - log(real(prob%psi, xp))
             end if
             slope = scaled_slope/scaled*lambda_slope
         case (2)
-            upsilon = scaled*exp(-shift)
+            upsilon = scaled*unscale
             limit = real(prob%limit, xp)
             f = log(max(limit - upsilon, tiny(1.0_xp))/real(prob%limit - prob%psi, xp))
-            slope = -scaled_slope*exp(-shift)*lambda_slope/(limit - upsilon)
+            slope = -scaled_slope*unscale*lambda_slope/(limit - upsilon)
         case default
-            f = scaled*exp(-shift) - real(prob%psi, xp)
-            slope = scaled_slope*exp(-shift)*lambda_slope
+            f = scaled*unscale - real(prob%psi, xp)
+            slope = scaled_slope*unscale*lambda_slope
         end select
     end subroutine residual_xp
 
@@ -3021,9 +3032,13 @@ contains
             ! as a rough early evaluation (with the tables)
             call theta_xp(self, setup_at64(self, prob, sqrt(prob%rho - half)), .true., &
                           theta_xp_half, slope_xp, shift_xp)
-            theta_half = real(theta_xp_half*exp(-shift_xp), real64)
+            if (shift_xp /= 0.0_xp) then
+                theta_xp_half = theta_xp_half*exp(-shift_xp)
+                slope_xp = slope_xp*exp(-shift_xp)
+            end if
+            theta_half = real(theta_xp_half, real64)
             ! d Upsilon/du = d Upsilon/d Lambda 2u/R at u = sqrt(rho - half), R = half
-            lambda_slope = real(slope_xp*exp(-shift_xp), real64)
+            lambda_slope = real(slope_xp, real64)
             upsilon_slope = lambda_slope*real(2.0_qp*sqrt(prob%rho - half)/half, real64)
         else
             call theta64(self, setup_at64(self, prob, sqrt(prob%rho - half)), scaled, shift)

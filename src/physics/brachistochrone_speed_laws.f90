@@ -1441,7 +1441,7 @@ contains
 
     !> No hardware-precision terms: zeros (see has_terms_xp).
     pure subroutine default_theta_terms_xp(self, c, lambda, delta, shift, rough, g, &
-                                           one_minus_q, log_slope)
+                                           one_minus_q, log_slope, exp_shift)
         class(speed_law), intent(in) :: self
         real(xp), intent(in) :: c(4)                 !! from apse_constants_xp
         real(xp), intent(in) :: lambda, delta        !! offsets from the apse and the start
@@ -1450,81 +1450,163 @@ contains
         real(xp), intent(out) :: g                   !! sqrt(q/(1 - q)) exp(shift)
         real(xp), intent(out) :: one_minus_q         !! 1 - q
         real(xp), intent(out) :: log_slope           !! d(log q)/d Lambda at fixed lambda
+        !> exp(shift) where the caller has it (one exponential per evaluation rather than
+        !! one per node; 0: not at hand); the laws then scale the node's own decay
+        !! factors by it where they stay in range (`scaled_decay`)
+        real(xp), intent(in), optional :: exp_shift
         g = 0.0_xp
         one_minus_q = 1.0_xp
         log_slope = 0.0_xp
     end subroutine default_theta_terms_xp
 
     !> exp(-y) and E = 1 - exp(-y) = -expm1(-y), y >= 0, both to full relative precision
-    !! in hardware precision (for y < 1/2 E by its Taylor series, nested: y (1 - y/2 (1 -
-    !! y/3 (...))), 18 terms, the last below 2^-70 of E; one exponential's cost), or
-    !! `rough`ly, in double precision.
+    !! in hardware precision (`table_exp_xp`), or `rough`ly: for y >= 1/2 in double
+    !! precision (E then loses nothing), below it as the full ones (cheaper than double
+    !! precision's exp and sinh for E without cancellation).
     elemental subroutine exp_and_decay_xp(y, e, one_minus_e, rough)
         real(xp), intent(in) :: y
         real(xp), intent(out) :: e, one_minus_e
         logical, intent(in) :: rough
-        real(real64) :: y64, e64
-        integer, parameter :: decay_terms = 18
-        real(xp), parameter :: inverse_xp(2:decay_terms) = &
-            [(1.0_xp/real(k_, xp), k_ = 2, decay_terms)]
-        integer :: k
-        if (rough) then
-            y64 = real(y, real64)
-            if (y64 < 0.5_real64) then
-                e64 = exp(-0.5_real64*y64)
-                one_minus_e = real(2.0_real64*e64*sinh(0.5_real64*y64), xp)
-                e = real(e64*e64, xp)
-            else
-                e64 = exp(-y64)
-                e = real(e64, xp)
-                one_minus_e = real(1.0_real64 - e64, xp)
-            end if
-        else if (y < 0.5_xp) then
-            one_minus_e = 1.0_xp
-            do k = decay_terms, 2, -1
-                one_minus_e = 1.0_xp - y*one_minus_e*inverse_xp(k)
-            end do
-            one_minus_e = y*one_minus_e
-            e = 1.0_xp - one_minus_e
+        real(real64) :: e64
+        if (rough .and. y >= 0.5_xp) then
+            e64 = exp(-real(y, real64))
+            e = real(e64, xp)
+            one_minus_e = real(1.0_real64 - e64, xp)
         else
-            e = exp(-y)
-            one_minus_e = 1.0_xp - e
+            call table_exp_xp(y, e, one_minus_e)
         end if
     end subroutine exp_and_decay_xp
+
+    !> exp(-y) (and 1 - exp(-y) for y >= 0) in hardware precision for |y| <= 11000, both
+    !! within about an ulp: y = (64 m + j) log(2)/64 + r, 0 <= r < log(2)/64 for y >= 0
+    !! (k log(2)/64 exact in two parts), exp(-y) = 2^-m 2^(-j/64) (1 - E(r)), E(r) =
+    !! -expm1(-r) by its Taylor series (8 terms, the next below 2^-70 of it); for m = 0
+    !! (y < 0.69) 1 - exp(-y) = (1 - 2^(-j/64)) + 2^(-j/64) E(r) (positive terms), else
+    !! 1 - exp(-y). Both tables rounded from binary128 constants; k and 2^-m on the bits
+    !! of the x87 format (no library calls: several times cheaper than the library's long
+    !! double exp). Elsewhere (|y| > 11000, or no x87 format) the library's exp, and for
+    !! 0 <= y < 1/2 1 - exp(-y) by its Taylor series (18 terms).
+    elemental subroutine table_exp_xp(y, e, one_minus_e)
+        use, intrinsic :: iso_fortran_env, only: int64
+        real(xp), intent(in) :: y
+        real(xp), intent(out) :: e, one_minus_e
+        integer, parameter :: decay_terms = 18
+        integer :: i_, i, j
+        integer(int64) :: k, m
+        real(xp), parameter :: power(0:63) = &
+            [(real(2.0_qp**(-real(i_, qp)/64.0_qp), xp), i_ = 0, 63)]
+        real(xp), parameter :: decay(0:63) = &
+            [(real(1.0_qp - 2.0_qp**(-real(i_, qp)/64.0_qp), xp), i_ = 0, 63)]
+        real(xp), parameter :: inverse(2:decay_terms) = &
+            [(1.0_xp/real(i_, xp), i_ = 2, decay_terms)]
+        ! the Taylor coefficients of -expm1(-r), (-1)^(i+1)/i!
+        real(xp), parameter :: c(8) = [(real((-1.0_qp)**(i_ + 1)/gamma(real(i_ + 1, qp)), &
+                                             xp), i_ = 1, 8)]
+        ! log(2)/64 in two parts, the first with 43 significant bits (k times it exact
+        ! for |k| < 2^21)
+        real(qp), parameter :: step = log(2.0_qp)/64.0_qp
+        real(xp), parameter :: step_hi = real(anint(step*2.0_qp**49)*2.0_qp**(-49), xp)
+        real(xp), parameter :: step_lo = real(step - real(step_hi, qp), xp)
+        real(real64), parameter :: per_step = real(64.0_qp/log(2.0_qp), real64)
+        integer(int64), parameter :: one_bits(2) = transfer(1.0_xp, [0_int64, 0_int64])
+        logical, parameter :: x87 = digits(1.0_xp) == 64 .and. &
+            storage_size(1.0_xp) == 128 .and. one_bits(1) == ishft(1_int64, 63) .and. &
+            iand(one_bits(2), 65535_int64) == 16383_int64
+        real(xp) :: r, r2, em
+        if (.not. (x87 .and. abs(y) <= 11000.0_xp)) then
+            if (y >= 0.0_xp .and. y < 0.5_xp) then
+                one_minus_e = 1.0_xp
+                do i = decay_terms, 2, -1
+                    one_minus_e = 1.0_xp - y*one_minus_e*inverse(i)
+                end do
+                one_minus_e = y*one_minus_e
+                e = 1.0_xp - one_minus_e
+            else
+                e = exp(-y)
+                one_minus_e = 1.0_xp - e
+            end if
+            return
+        end if
+        ! k = y 64/log(2) rounded down for y >= 0 (r >= 0 up to the double-precision
+        ! product's rounding: 1 - exp(-y) below adds positive terms), toward 0 below
+        k = int(real(y, real64)*per_step, int64)
+        j = int(iand(k, 63_int64))
+        r = (y - real(k, xp)*step_hi) - real(k, xp)*step_lo
+        ! r plus the rest (below r/2: the last rounding dominates), in pairs of terms
+        r2 = r*r
+        em = r + r2*((c(2) + r*c(3)) + r2*((c(4) + r*c(5)) + r2*((c(6) + r*c(7)) + &
+                                                                 r2*c(8))))
+        e = power(j) - power(j)*em
+        if (k >= 0_int64 .and. k < 64_int64) then
+            one_minus_e = decay(j) + power(j)*em
+        else
+            ! times 2^-m (|m| < 16000: a normal power of two; in double precision where
+            ! |m| < 1000)
+            m = (k - j)/64_int64
+            if (abs(m) < 1000_int64) then
+                e = e*real(transfer(ishft(1023_int64 - m, 52), 1.0_real64), xp)
+            else
+                e = e*transfer([ishft(1_int64, 63), 16383_int64 - m], 1.0_xp)
+            end if
+            one_minus_e = 1.0_xp - e
+        end if
+    end subroutine table_exp_xp
+
+    !> exp(shift - y) from exp(-y) = `decay` at hand: exp(shift) decay where the caller
+    !! gives exp(shift) (`exp_shift` > 0) and decay (0: not normal, or not at hand), else
+    !! `scaled_exp`.
+    elemental function scaled_decay(shift, y, decay, rough, exp_shift) result(e)
+        real(xp), intent(in) :: shift, y, decay
+        logical, intent(in) :: rough
+        real(xp), intent(in), optional :: exp_shift
+        real(xp) :: e
+        if (present(exp_shift)) then
+            if (exp_shift > 0.0_xp .and. decay > 0.0_xp) then
+                e = exp_shift*decay
+                return
+            end if
+        end if
+        e = scaled_exp(shift - y, rough)
+    end function scaled_decay
 
     !> exp(y) in hardware precision, or `rough`ly in double precision (0 below its range).
     elemental function scaled_exp(y, rough) result(e)
         real(xp), intent(in) :: y
         logical, intent(in) :: rough
         real(xp) :: e
+        real(xp) :: one_minus_e
         if (rough) then
             e = real(exp(real(max(y, -745.0_xp), real64)), xp)
         else
-            e = exp(y)
+            call table_exp_xp(-y, e, one_minus_e)
         end if
     end function scaled_exp
 
-    !> Power law: [Lambda, E(Lambda), a, 0].
+    !> Power law: [Lambda, E(Lambda), a, exp(-a Lambda)].
     pure function power_apse_constants_xp(self, big_lambda) result(c)
         class(power_law), intent(in) :: self
         real(xp), intent(in) :: big_lambda
-        real(xp) :: c(4), a, e
+        real(xp) :: c(4), a
         a = real(self%n - 1.0_qp, xp)
         c = [big_lambda, 0.0_xp, a, 0.0_xp]
-        call exp_and_decay_xp(a*big_lambda, e, c(2), .false.)
+        call exp_and_decay_xp(a*big_lambda, c(4), c(2), .false.)
     end function power_apse_constants_xp
 
     !> Power law: q = exp(-(a+2) lambda) E(delta)/E(Lambda), 1 - q = (1 - exp(-2 lambda))
     !! + exp(-2 lambda) E(lambda)/E(Lambda) and, since exp(-a lambda) E(delta) =
     !! exp(-a lambda) - exp(-a Lambda), d(log q)/d Lambda = a E(lambda) exp(-a delta)/
-    !! (E(Lambda) E(delta)).
+    !! (E(Lambda) E(delta)). Two exponentials per node at most: exp(-a delta) =
+    !! exp(-a Lambda)/exp(-a lambda) where a delta >= 1/2 (E(delta) loses under a bit) and
+    !! exp(-a Lambda) is normal, and exp(shift - (a+2) lambda/2) = exp(shift) sqrt(exp(-2
+    !! lambda) exp(-a lambda)) with `exp_shift` (`scaled_decay`).
     pure subroutine power_theta_terms_xp(self, c, lambda, delta, shift, rough, g, &
-                                         one_minus_q, log_slope)
+                                         one_minus_q, log_slope, exp_shift)
         class(power_law), intent(in) :: self
         real(xp), intent(in) :: c(4), lambda, delta, shift
         logical, intent(in) :: rough
         real(xp), intent(out) :: g, one_minus_q, log_slope
-        real(xp) :: e2, om2, ea, e_lambda, ead, e_delta
+        real(xp), intent(in), optional :: exp_shift
+        real(xp) :: e2, om2, ea, e_lambda, ead, e_delta, top, decay
         logical :: known  ! E(delta) at hand
         known = .false.
         if (c(3) == 1.0_xp) then
@@ -1555,18 +1637,28 @@ contains
                 call exp_and_decay_xp(c(3)*lambda, ea, e_lambda, rough)
             end if
         end if
+        ! (exp(-2 lambda), exp(-a lambda) normal: from double precision where `rough`)
+        top = merge(700.0_xp, 11000.0_xp, rough)
         if (.not. known) then
             if (c(3)*delta <= 0.25_xp .and. lambda <= delta) then
                 ! nearer the apse: exp(-a lambda) E(delta) = E(Lambda) - E(lambda)
                 e_delta = (c(2) - e_lambda)/ea
                 ead = 1.0_xp - e_delta
+            else if (c(3)*delta >= 0.5_xp .and. c(4) > tiny(1.0_xp) .and. &
+                     c(3)*lambda <= top) then
+                ! exp(-a delta) = exp(-a Lambda)/exp(-a lambda)
+                ead = c(4)/ea
+                e_delta = 1.0_xp - ead
             else
                 call exp_and_decay_xp(c(3)*delta, ead, e_delta, rough)
             end if
         end if
         one_minus_q = om2 + e2*e_lambda/c(2)
-        g = sqrt(e_delta/(one_minus_q*c(2)))*scaled_exp(shift - 0.5_xp*(c(3) + 2.0_xp)*lambda, &
-                                                         rough)
+        ! exp(-(a+2) lambda/2) from both where their product is normal
+        decay = 0.0_xp
+        if (merge(max(2.0_xp, c(3)), c(3) + 2.0_xp, rough)*lambda <= top) decay = sqrt(e2*ea)
+        g = sqrt(e_delta/(one_minus_q*c(2)))* &
+            scaled_decay(shift, 0.5_xp*(c(3) + 2.0_xp)*lambda, decay, rough, exp_shift)
         log_slope = c(3)*e_lambda*ead/(c(2)*e_delta)
     end subroutine power_theta_terms_xp
 
@@ -1581,15 +1673,19 @@ contains
     !> Logarithmic law: q = exp(-2 lambda) delta/Lambda, 1 - q = (1 - exp(-2 lambda)) +
     !! exp(-2 lambda) lambda/Lambda, d(log q)/d Lambda = lambda/(delta Lambda).
     pure subroutine logarithmic_theta_terms_xp(self, c, lambda, delta, shift, rough, g, &
-                                               one_minus_q, log_slope)
+                                               one_minus_q, log_slope, exp_shift)
         class(logarithmic_law), intent(in) :: self
         real(xp), intent(in) :: c(4), lambda, delta, shift
         logical, intent(in) :: rough
         real(xp), intent(out) :: g, one_minus_q, log_slope
-        real(xp) :: e2, om2
+        real(xp), intent(in), optional :: exp_shift
+        real(xp) :: e2, om2, decay
         call exp_and_decay_xp(2.0_xp*lambda, e2, om2, rough)
         one_minus_q = om2 + e2*lambda/c(1)
-        g = sqrt(delta/(one_minus_q*c(1)))*scaled_exp(shift - lambda, rough)
+        ! exp(-lambda) = sqrt(exp(-2 lambda)) where that is normal
+        decay = 0.0_xp
+        if (2.0_xp*lambda <= merge(700.0_xp, 11000.0_xp, rough)) decay = sqrt(e2)
+        g = sqrt(delta/(one_minus_q*c(1)))*scaled_decay(shift, lambda, decay, rough, exp_shift)
         log_slope = lambda/(delta*c(1))
     end subroutine logarithmic_theta_terms_xp
 
@@ -1610,16 +1706,20 @@ contains
     !> Harmonic law: q = exp(-2 lambda) (1 - x^2)/(1 - R^2), 1 - q = (1 - exp(-2 lambda))/
     !! (1 - R^2), d(log q)/d Lambda = 2 x^2 (1 - exp(-2 lambda))/((1 - x^2)(1 - R^2)).
     pure subroutine harmonic_theta_terms_xp(self, c, lambda, delta, shift, rough, g, &
-                                            one_minus_q, log_slope)
+                                            one_minus_q, log_slope, exp_shift)
         class(harmonic_law), intent(in) :: self
         real(xp), intent(in) :: c(4), lambda, delta, shift
         logical, intent(in) :: rough
         real(xp), intent(out) :: g, one_minus_q, log_slope
-        real(xp) :: e2, om2, x2, p_x
+        real(xp), intent(in), optional :: exp_shift
+        real(xp) :: e2, om2, x2, p_x, decay
         call exp_and_decay_xp(2.0_xp*lambda, e2, om2, rough)
         call exp_and_decay_xp(2.0_xp*delta, x2, p_x, rough)
         one_minus_q = om2/c(2)
-        g = sqrt(p_x/om2)*scaled_exp(shift - lambda, rough)
+        ! exp(-lambda) = sqrt(exp(-2 lambda)) where that is normal
+        decay = 0.0_xp
+        if (2.0_xp*lambda <= merge(700.0_xp, 11000.0_xp, rough)) decay = sqrt(e2)
+        g = sqrt(p_x/om2)*scaled_decay(shift, lambda, decay, rough, exp_shift)
         log_slope = 2.0_xp*x2*om2/(p_x*c(2))
     end subroutine harmonic_theta_terms_xp
 
