@@ -1413,7 +1413,9 @@ contains
     !! kappa = pi/sigma_apse, and so does T's, (q/v) e^lambda = sqrt(w(R) q)/R (v =
     !! x/sqrt(w)) over (sqrt(1 - q)(1 + sqrt(1 - q))); S's, q e^lambda over the same, at
     !! most twice as fast. The largest of the rules; a sum whose share is below
-    !! `negligible` asks for nothing.
+    !! `negligible` asks for nothing, and Theta and T nothing beyond S where the shares are
+    !! the same (the first panel: the same digits and ellipse, S's growth twice theirs;
+    !! one `bernstein_log` then).
     pure function panel_rule(model, big_lambda, pan, digits, shares, want_length_time) &
         result(j)
         type(central_force_model), intent(in) :: model
@@ -1430,7 +1432,8 @@ contains
             ! Theta and T at rate kappa, S at 2 kappa
             share = merge(max(shares(1), merge(shares(3), 0.0_qp, want_length_time)), &
                           shares(2), group == 1)
-            if (share < negligible) cycle
+            if (share < negligible .or. (group == 1 .and. want_length_time .and. &
+                                         shares(2) == share)) cycle
             wanted = digits + real(min(0.0_real64, log10(max(real(share, real64), &
                                                              1.0e-60_real64))), qp)
             p%log_rho = bernstein_log(model, big_lambda, p, digits=wanted)
