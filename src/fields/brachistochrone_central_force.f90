@@ -26,10 +26,12 @@
 !! endpoint on the apse side the root variable continued from it (up to 8 sigma_apse
 !! further). The node count of each panel comes from the Bernstein ellipse through the
 !! nearest singularity (as on the inverse-square fast path), each singularity counted by
-!! the integrands' size there (`bernstein_log`), and the growth of the integrands off
-!! the real axis (`rule_for`, `panel_growth`). Away from the apse the integrands decay like
-!! exp(-(n+1) lambda/2) or faster: each panel is asked only for the digits its share of
-!! the running sum needs, and panels below 1e-40 of it are skipped. Transcendentals:
+!! the integrands' size there for the digits asked (`bernstein_log`), and the growth of
+!! the integrands off the real axis (`rule_for`, `panel_growth`). Away from the apse the
+!! integrands decay like exp(-(n+1) lambda/2) or faster: each panel is asked only for
+!! the digits its share of each running sum needs, each sum with the growth of its own
+!! decay rate (Theta's and T's kappa = pi/sigma_apse, S's at most 2 kappa; `panel_rule`),
+!! and panels below 1e-40 of every sum are skipped. Transcendentals:
 !! one or two fast exp/expm1 per node (`brachistochrone_fast_exp`; one for n = 2, 3),
 !! square roots by a hardware seed and a Newton step. The fall time t0 is in closed form
 !! for power laws and the logarithmic law (`speed_law%closed_fall`), a
@@ -867,19 +869,25 @@ contains
     !! at the real part lambda* adds about |f(lambda*)| rho*^(-2n) to the error, a share
     !! exp(-kappa (lambda* - lambda_0)) of that of the panel's largest value at lambda_0.
     !! A singularity of weight w (<= 0) on the ellipse rho* is taken as one of weight 1 on
-    !! log rho* (1 + w/(35 log 10)) (the same rule for 35 digits, fewer nodes than it
-    !! needs for fewer digits), beyond reach below exp(-35 log 10). With `unweighted`
-    !! (integrands not decaying from the apse: `fall_piece`) every singularity counts.
-    pure function bernstein_log(model, big_lambda, p, unweighted) result(log_rho)
+    !! log rho* (1 + w/(D log 10)) for D digits (`digits`, default 35; rule_for's n for D
+    !! digits on that ellipse, D log 10/(2 log rho*) (1 + w/(D log 10)), is then exactly
+    !! the n for which the singularity's term e^w rho*^(-2n) is below 10^-D), beyond reach
+    !! below exp(-D log 10). With `unweighted` (integrands not decaying from the apse:
+    !! `fall_piece`) every singularity counts.
+    pure function bernstein_log(model, big_lambda, p, unweighted, digits) result(log_rho)
         type(central_force_model), intent(in) :: model
         real(qp), intent(in) :: big_lambda
         type(panel), intent(in) :: p
         logical, intent(in), optional :: unweighted
+        !> the digits asked of the panel (`rule_for`'s); default 35
+        real(qp), intent(in), optional :: digits
         real(real64) :: log_rho
-        real(real64), parameter :: reach = 35.0_real64*log(10.0_real64), most = 8.0_real64
+        real(real64), parameter :: most = 8.0_real64
         complex(real64) :: zeta(8), point, image(3), t, arc
-        real(real64) :: lo, hi, big, sa, ss, log_min, kappa, near, w, lr
+        real(real64) :: lo, hi, big, sa, ss, log_min, kappa, near, w, lr, reach
         integer :: k, m, images
+        reach = 35.0_real64*log(10.0_real64)
+        if (present(digits)) reach = real(max(digits, 2.0_qp), real64)*log(10.0_real64)
         lo = real(p%lo, real64)
         hi = real(p%hi, real64)
         big = real(big_lambda, real64)
@@ -1088,10 +1096,11 @@ contains
         !> no panel skipped and each on the full rules (the tables' build)
         logical, intent(in), optional :: every_panel
         type(panel) :: panels(max_panels)
-        real(qp) :: part(3), last(3), share, jacobian, q, omq, qv, rx
+        real(qp) :: part(3), last(3), jacobian, q, omq, qv, rx
         real(qp) :: root_omq, common, g(3), root_q, weighted, width, terms(max_nodes, 6)
         real(xp) :: part_xp(2), carry(2), carry_all(2), log_slope, g_xp, slopes_k(max_nodes)
         integer :: count, p, k, j
+        real(qp) :: shares(3)
         logical :: all_panels
         all_panels = .false.
         if (present(every_panel)) all_panels = every_panel
@@ -1107,16 +1116,13 @@ contains
         carry_all = 0.0_xp
         do p = 1, count
             associate (pan => panels(p))
-            share = 1.0_qp
+            shares = 1.0_qp
             if (p > 1 .and. .not. all_panels) then
-                share = panel_share(pan, last, sums, merge(3, 1, want_length_time))
+                shares = panel_share(pan, last, sums, merge(3, 1, want_length_time))
                 ! skipped, not ended: a sliver next to a split is followed by a full panel
-                if (share < negligible) cycle
+                if (maxval(shares) < negligible) cycle
             end if
-            pan%log_rho = bernstein_log(model, a%big_lambda, pan)
-            j = rule_for(pan%log_rho, digits + real(min(0.0_real64, log10(max(real(share, &
-                         real64), 1.0e-60_real64))), qp), &
-                         panel_growth(pan, 2.0_qp*pi/model%sigma_apse))
+            j = panel_rule(model, a%big_lambda, pan, digits, shares, want_length_time)
             part = 0.0_qp
             part_xp = 0.0_xp
             carry = 0.0_xp
@@ -1384,21 +1390,57 @@ contains
             (a%angle_hint > 0.0_qp .and. a%angle_hint < 0.45_qp*whole_angle))
     end function above_first
 
-    !> Bound on a panel's share of the sums so far: its length in lambda times the
+    !> Bounds on a panel's shares of the sums so far: its length in lambda times the
     !! integrands at the nearest node of the previous panel (they decay away from the
-    !! apse), for the first `count` sums.
+    !! apse), for the first `count` sums (the others 0).
     pure function panel_share(pan, last, sums, count) result(share)
         type(panel), intent(in) :: pan
         real(qp), intent(in) :: last(3), sums(3)
         integer, intent(in) :: count
-        real(qp) :: share, length
+        real(qp) :: share(3), length
         integer :: m
         length = panel_length(pan)
         share = 0.0_qp
         do m = 1, count
-            if (sums(m) > 0.0_qp) share = max(share, 4.0_qp*length*last(m)/sums(m))
+            if (sums(m) > 0.0_qp) share(m) = 4.0_qp*length*last(m)/sums(m)
         end do
     end function panel_share
+
+    !> The rule (element of model%gauss) for a panel of `arch_sums`, each sum asked for
+    !! `digits` less the digits of its share (`shares`: of Theta, S, T) on the ellipse
+    !! and with the growth of its own decay rate (`bernstein_log`, `rule_for`,
+    !! `panel_growth`): Theta's integrand sqrt(q/(1 - q)) decays like exp(-kappa lambda),
+    !! kappa = pi/sigma_apse, and so does T's, (q/v) e^lambda = sqrt(w(R) q)/R (v =
+    !! x/sqrt(w)) over (sqrt(1 - q)(1 + sqrt(1 - q))); S's, q e^lambda over the same, at
+    !! most twice as fast. The largest of the rules; a sum whose share is below
+    !! `negligible` asks for nothing, and Theta and T nothing beyond S where the shares are
+    !! the same (the first panel: the same digits and ellipse, S's growth twice theirs;
+    !! one `bernstein_log` then).
+    pure function panel_rule(model, big_lambda, pan, digits, shares, want_length_time) &
+        result(j)
+        type(central_force_model), intent(in) :: model
+        real(qp), intent(in) :: big_lambda, digits, shares(3)
+        type(panel), intent(in) :: pan
+        logical, intent(in) :: want_length_time
+        integer :: j
+        type(panel) :: p
+        real(qp) :: share, wanted
+        integer :: group
+        p = pan
+        j = min_nodes/2
+        do group = 1, merge(2, 1, want_length_time)
+            ! Theta and T at rate kappa, S at 2 kappa
+            share = merge(max(shares(1), merge(shares(3), 0.0_qp, want_length_time)), &
+                          shares(2), group == 1)
+            if (share < negligible .or. (group == 1 .and. want_length_time .and. &
+                                         shares(2) == share)) cycle
+            wanted = digits + real(min(0.0_real64, log10(max(real(share, real64), &
+                                                             1.0e-60_real64))), qp)
+            p%log_rho = bernstein_log(model, big_lambda, p, digits=wanted)
+            j = max(j, rule_for(p%log_rho, wanted, panel_growth(p, real(group, qp)*pi/ &
+                                                                model%sigma_apse)))
+        end do
+    end function panel_rule
 
     !> sums = sums + terms with Kahan's compensation (carry: the running correction).
     pure subroutine add_compensated(sums, carry, terms)
