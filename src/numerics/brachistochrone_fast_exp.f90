@@ -84,7 +84,8 @@ contains
         else if (abs(x) < real(max_whole, qp) + 0.5_qp) then
             ! x = +-m + f, m = nint(|x|) (f exact, |f| <= 1/2), e^(+-m) from the tables
             ! (one rounding) times 1 + expm1(f)
-            m = nint(abs(real(x, real64)))
+            ! (|x| rounded to double may reach max_whole + 1/2: f then just above 1/2)
+            m = min(nint(abs(real(x, real64))), max_whole)
             if (x > 0.0_qp) then
                 y = exp_whole(m)*(1.0_qp + small_expm1(x - whole_plus(m)))
             else
