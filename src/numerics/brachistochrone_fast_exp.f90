@@ -67,44 +67,52 @@ module brachistochrone_fast_exp
 
 contains
 
-    !> exp(x) for binary128 x (overflow to +Inf, underflow to 0 as exp does).
+    !> exp(x) for binary128 x (overflow to +Inf, underflow to 0 as exp does). The range
+    !! tests on the double-precision copy of x (no binary128 comparisons; rounding to
+    !! double keeps |x| < c for the bounds c used, and the sign, zeros included).
     elemental function fast_exp(x) result(y)
         real(qp), intent(in) :: x !! argument
         real(qp) :: y
         real(qp) :: reduced
+        real(real64) :: xd
         integer :: k, m
-        if (.not. (abs(x) < 11000.0_qp)) then
+        xd = real(x, real64)
+        if (.not. (abs(xd) < 11000.0_real64)) then
             y = exp(x)
             return
         end if
-        if (abs(x) < 0.5_qp) then
+        if (abs(xd) < 0.5_real64) then
             ! no reduction, no scaling
-            y = 1.0_qp + small_expm1(x)
+            y = 1.0_qp + small_expm1(x, xd)
             return
-        else if (abs(x) < real(max_whole, qp) + 0.5_qp) then
+        else if (abs(xd) < real(max_whole, real64) + 0.5_real64) then
             ! x = +-m + f, m = nint(|x|) (f exact, |f| <= 1/2), e^(+-m) from the tables
-            ! (one rounding) times 1 + expm1(f)
-            ! (|x| rounded to double may reach max_whole + 1/2: f then just above 1/2)
-            m = min(nint(abs(real(x, real64))), max_whole)
-            if (x > 0.0_qp) then
-                y = exp_whole(m)*(1.0_qp + small_expm1(x - whole_plus(m)))
+            ! (one rounding) times 1 + expm1(f); (|x| rounded to double may reach a
+            ! half-integer: f then just above 1/2)
+            m = min(nint(abs(xd)), max_whole)
+            if (xd > 0.0_real64) then
+                reduced = x - whole_plus(m)
+                y = exp_whole(m)*(1.0_qp + small_expm1(reduced, real(reduced, real64)))
             else
-                y = exp_whole_minus(m)*(1.0_qp + small_expm1(x + whole_plus(m)))
+                reduced = x + whole_plus(m)
+                y = exp_whole_minus(m)*(1.0_qp + small_expm1(reduced, real(reduced, real64)))
             end if
             return
         end if
         ! k need only be near x/log 2 (the reduction below is exact for any k)
-        k = nint(real(x, real64)*real(inverse_ln2, real64))
+        k = nint(xd*real(inverse_ln2, real64))
         reduced = (x - real(k, qp)*ln2_high) - real(k, qp)*ln2_low
-        y = scale(1.0_qp + small_expm1(reduced), k)
+        y = scale(1.0_qp + small_expm1(reduced, real(reduced, real64)), k)
     end function fast_exp
 
     !> expm1(x) = exp(x) - 1 to full relative precision.
     elemental function fast_expm1(x) result(y)
         real(qp), intent(in) :: x !! argument
         real(qp) :: y
-        if (abs(x) < 1.0_qp) then
-            y = small_expm1(x)
+        real(real64) :: xd
+        xd = real(x, real64)
+        if (abs(xd) < 1.0_real64) then
+            y = small_expm1(x, xd)
         else
             y = fast_exp(x) - 1.0_qp
         end if
@@ -114,20 +122,21 @@ contains
     !! index j = j1 256 + j2: a rounding up by one step leaves r slightly negative, which
     !! the series takes as well; the subtraction is exact), and expm1(+-r) by its series
     !! to r^7/7! (the remainder is below 1e-38 of it), the terms from r^4/24 on in
-    !! hardware precision where there is one.
-    elemental subroutine reduce_series(x, j1, j2, series)
+    !! hardware precision where there is one (xd: x in double precision, its sign x's).
+    elemental subroutine reduce_series(x, xd, j1, j2, series)
         real(qp), intent(in) :: x
+        real(real64), intent(in) :: xd
         integer, intent(out) :: j1, j2
         real(qp), intent(out) :: series
         real(qp) :: r
         real(tail_kind) :: rt, tail
         integer :: j
-        j = max(0, min(int(abs(real(x, real64))*65536.0_real64), 65535))
+        j = max(0, min(int(abs(xd)*65536.0_real64), 65535))
         j1 = ishft(j, -8)
         j2 = iand(j, 255)
         ! j/65536 = a1 + a2 exactly, converted on the bits (no binary128 addition)
         r = abs(x) - quad_real(real(j, xp)*(1.0_xp/65536))
-        if (x < 0.0_qp) r = -r
+        if (sign(1.0_real64, xd) < 0.0_real64) r = -r
         if (tail_in_hardware) then
             ! the terms from r^4/24 on in hardware precision (see tail_kind)
             rt = to_tail(r)
@@ -141,13 +150,14 @@ contains
     end subroutine reduce_series
 
     !> expm1 for |x| < 1: expm1(a + r) = e^a expm1(r) + expm1(a) for
-    !! a = a2, then a1 (the terms of one sign: no cancellation).
-    elemental function small_expm1(x) result(y)
+    !! a = a2, then a1 (the terms of one sign: no cancellation); xd = real(x, real64).
+    elemental function small_expm1(x, xd) result(y)
         real(qp), intent(in) :: x
+        real(real64), intent(in) :: xd
         real(qp) :: y
         integer :: j1, j2
-        call reduce_series(x, j1, j2, y)
-        if (x >= 0.0_qp) then
+        call reduce_series(x, xd, j1, j2, y)
+        if (sign(1.0_real64, xd) > 0.0_real64) then
             if (j2 > 0) y = exp_fine(j2)*y + expm1_fine(j2)
             if (j1 > 0) y = exp_table(j1)*y + expm1_table(j1)
         else
