@@ -815,7 +815,8 @@ contains
 
     !> The engine's fast exp and expm1 against libquadmath's, on arguments next to the
     !! table steps j/256 and j/65536 (where the table index is taken in double precision)
-    !! and spread over the range the integrands use.
+    !! and e^(+-m) (m + 1/2, where m switches, and past the tables' end 127.5), and spread
+    !! over the range the integrands use.
     subroutine fast_exponentials()
         use brachistochrone_fast_exp, only: fast_exp, fast_expm1
         use brachistochrone_quad_math, only: expm1
@@ -829,9 +830,20 @@ contains
                     ! next to j/256 + (j mod 7)/65536, a few ulps either side
                     x = real(sign_, qp)*(real(j, qp)/256.0_qp + real(mod(j, 7), qp)/65536.0_qp)
                     x = x + real(k, qp)*spacing(max(abs(x), tiny(1.0_qp)))
-                    if (abs(x) < 0.5_qp .and. x /= 0.0_qp) worst = max(worst, &
+                    if (abs(x) < 1.0_qp .and. x /= 0.0_qp) worst = max(worst, &
                         abs(fast_expm1(x) - expm1(x))/(eps_qp*abs(expm1(x))))
                     worst = max(worst, abs(fast_exp(x) - exp(x))/(eps_qp*exp(x)))
+                end do
+            end do
+            ! next to the switches between the tables e^(+-m), m + 1/2, up to 127.5 and
+            ! past it (x +- a few ulps)
+            do j = 0, 130
+                do k = -2, 2
+                    x = real(sign_, qp)*(real(j, qp) + 0.5_qp)
+                    x = x + real(k, qp)*spacing(x)
+                    worst = max(worst, abs(fast_exp(x) - exp(x))/(eps_qp*exp(x)))
+                    if (abs(x) < 1.0_qp) worst = max(worst, &
+                        abs(fast_expm1(x) - expm1(x))/(eps_qp*abs(expm1(x))))
                 end do
             end do
         end do
@@ -839,7 +851,7 @@ contains
         do j = -255, 255
             x = real(j, qp)/256.0_qp + sign(real(mod(abs(j), 256), qp) + 0.999_qp, &
                                           real(j, qp))/65536.0_qp
-            if (abs(x) < 0.5_qp .and. x /= 0.0_qp) worst = max(worst, &
+            if (abs(x) < 1.0_qp .and. x /= 0.0_qp) worst = max(worst, &
                 abs(fast_expm1(x) - expm1(x))/(eps_qp*abs(expm1(x))))
             worst = max(worst, abs(fast_exp(x) - exp(x))/(eps_qp*exp(x)))
         end do

@@ -1097,7 +1097,7 @@ contains
         logical, intent(in), optional :: every_panel
         type(panel) :: panels(max_panels)
         real(qp) :: part(3), last(3), jacobian, q, omq, qv, rx
-        real(qp) :: root_omq, common, g(3), root_q, weighted, width, terms(max_nodes, 6)
+        real(qp) :: root_omq, common, g(3), root_q, weighted, width, terms(max_nodes, 6), rest
         real(xp) :: part_xp(2), carry(2), carry_all(2), log_slope, g_xp, slopes_k(max_nodes)
         integer :: count, p, k, j
         real(qp) :: shares(3)
@@ -1141,18 +1141,21 @@ contains
                 rx = terms(k, 5)
                 root_q = terms(k, 6)
                 if (present(slopes)) log_slope = slopes_k(k)
-                ! sqrt(1 - q) by a hardware root and one correction, then two divisions
-                ! (g: weighted integrands)
+                ! sqrt(1 - q) by a hardware root and one correction, then one division
+                ! (g: weighted integrands; jacobian/sqrt(1 - q) = common times the rest
+                ! of its denominator)
                 root_omq = fast_sqrt(omq)
-                weighted = jacobian/root_omq
-                g(1) = root_q*weighted
                 if (want_length_time) then
-                    common = weighted/(rx*(1.0_qp + root_omq))
+                    rest = rx*(1.0_qp + root_omq)
+                    common = jacobian/(root_omq*rest)
+                    weighted = common*rest
                     g(2) = q*common
                     g(3) = qv*common
                 else
+                    weighted = jacobian/root_omq
                     g(2:3) = 0.0_qp
                 end if
+                g(1) = root_q*weighted
                 part = part + g
                 if (present(slopes)) then
                     ! g q'/(2 q (1 - q)) and e^lambda q'/(2 (1 - q)^(3/2)) = the same
@@ -1194,8 +1197,13 @@ contains
         if (pan%kind == kind_start) side = 2
         mid = pan%lo + 0.5_qp*width
         if (side == 0) then
-            ! (the offsets from mid are not used on the root panels)
-            v(1:n) = pan%lo + width*model%gauss(j)%offset
+            ! (the offsets from mid are not used on the root panels; on [0, 1] the nodes
+            ! are the rule's offsets)
+            if (pan%lo == 0.0_qp .and. width == 1.0_qp) then
+                v(1:n) = model%gauss(j)%offset
+            else
+                v(1:n) = pan%lo + width*model%gauss(j)%offset
+            end if
             t(1:n) = 0.0_qp
         else
             do k = 1, n/2

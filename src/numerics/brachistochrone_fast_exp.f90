@@ -1,12 +1,13 @@
 !> exp and expm1 in binary128, several times faster than libquadmath's, for the general
 !! engine's integrands (one or two per quadrature node).
 !!
-!! exp(x) = 2^k (1 + expm1(x - k log 2)), |x - k log 2| <= log(2)/2 (k = +-1 by
-!! constants; other k from double precision: only near x/log 2; k log 2 subtracted in two
-!! parts, log 2 split into 60 + 113 bits, so the reduction is exact to about 2^-170 for
-!! |k| < 2^14); expm1(x) = exp(x) - 1 for |x| >= 1/2. Below (and for the reduced
-!! argument): |x| = j1/256 + j2/65536 + r (j1, j2 from one
-!! double-precision index, |r| < 2^-16, the subtraction exact) and expm1(a + r) =
+!! exp(x) = e^(+-m) (1 + expm1(f)), m = nint(|x|) <= 127, f = x -+ m (exact, |f| <= 1/2;
+!! e^(+-m) from tables: one rounding, no scaling); beyond, exp(x) = 2^k (1 + expm1(x - k
+!! log 2)) (k from double precision: only near x/log 2; k log 2 subtracted in two parts,
+!! log 2 split into 60 + 113 bits, so the reduction is exact to about 2^-170 for |k| <
+!! 2^14); expm1(x) = exp(x) - 1 for |x| >= 1. Below (and for the reduced argument):
+!! |x| = j1/256 + j2/65536 + r (j1, j2 from one double-precision index, |r| < 2^-16,
+!! j/65536 converted exactly on the bits, the subtraction exact) and expm1(a + r) =
 !! e^a expm1(r) + expm1(a) for each table step a (both terms of one sign: no
 !! cancellation). The tables e^a and expm1(a) are constant expressions (rounded by the
 !! compiler); expm1(r) is its Taylor series to r^7/7!, the terms from r^4/24 on (below
@@ -42,6 +43,11 @@ module brachistochrone_fast_exp
     real(qp), parameter :: exp_fine_minus(0:255) = exp(fine_minus)
     real(qp), parameter :: expm1_fine_minus(0:255) = &
         2.0_qp*exp(0.5_qp*fine_minus)*sinh(0.5_qp*fine_minus)
+    !> e^m and e^(-m), m = 0..max_whole, for |x| < max_whole + 1/2 (`fast_exp`)
+    integer, parameter :: max_whole = 127
+    real(qp), parameter :: whole_plus(0:max_whole) = [(real(j_, qp), j_ = 0, max_whole)]
+    real(qp), parameter :: exp_whole(0:max_whole) = exp(whole_plus)
+    real(qp), parameter :: exp_whole_minus(0:max_whole) = exp(-whole_plus)
     !> log 2 in two parts: high (exact times any |k| < 2^50) and low.
     real(qp), parameter :: ln2 = log(2.0_qp)
     real(qp), parameter :: ln2_high = real(int(ln2*2.0_qp**60, kind=selected_int_kind(18)), &
@@ -49,8 +55,6 @@ module brachistochrone_fast_exp
     !> log 2 - ln2_high to full precision (mpmath): ln2 - ln2_high would carry the
     !! rounding of ln2 (2^-114), k times, into the reduced argument
     real(qp), parameter :: ln2_low = 6.39062950764503927593536380659998906464430009e-19_qp
-    !> log(2)/2: below it no reduction
-    real(qp), parameter :: half_ln2 = 0.5_qp*ln2
     !> 1/log 2 (k needs only to be near x/log 2: the reduction is exact for any k)
     real(qp), parameter :: inverse_ln2 = 1.0_qp/ln2
     !> The widest hardware kind (x87 extended, 64-bit significand) for the series' tail:
@@ -63,41 +67,52 @@ module brachistochrone_fast_exp
 
 contains
 
-    !> exp(x) for binary128 x (overflow to +Inf, underflow to 0 as exp does).
+    !> exp(x) for binary128 x (overflow to +Inf, underflow to 0 as exp does). The range
+    !! tests on the double-precision copy of x (no binary128 comparisons; rounding to
+    !! double keeps |x| < c for the bounds c used, and the sign, zeros included).
     elemental function fast_exp(x) result(y)
         real(qp), intent(in) :: x !! argument
         real(qp) :: y
         real(qp) :: reduced
-        integer :: k
-        if (.not. (abs(x) < 11000.0_qp)) then
+        real(real64) :: xd
+        integer :: k, m
+        xd = real(x, real64)
+        if (.not. (abs(xd) < 11000.0_real64)) then
             y = exp(x)
             return
         end if
-        if (abs(x) < half_ln2) then
-            ! |x| below log(2)/2: no reduction, no scaling
-            y = 1.0_qp + small_expm1(x)
+        if (abs(xd) < 0.5_real64) then
+            ! no reduction, no scaling
+            y = 1.0_qp + small_expm1(x, xd)
             return
-        else if (abs(x) < 3.0_qp*half_ln2) then
-            ! k = +-1: the reduction by constants (the same values as below)
-            if (x > 0.0_qp) then
-                y = 2.0_qp*(1.0_qp + small_expm1((x - ln2_high) - ln2_low))
+        else if (abs(xd) < real(max_whole, real64) + 0.5_real64) then
+            ! x = +-m + f, m = nint(|x|) (f exact, |f| <= 1/2), e^(+-m) from the tables
+            ! (one rounding) times 1 + expm1(f); (|x| rounded to double may reach a
+            ! half-integer: f then just above 1/2)
+            m = min(nint(abs(xd)), max_whole)
+            if (xd > 0.0_real64) then
+                reduced = x - whole_plus(m)
+                y = exp_whole(m)*(1.0_qp + small_expm1(reduced, real(reduced, real64)))
             else
-                y = 0.5_qp*(1.0_qp + small_expm1((x + ln2_high) + ln2_low))
+                reduced = x + whole_plus(m)
+                y = exp_whole_minus(m)*(1.0_qp + small_expm1(reduced, real(reduced, real64)))
             end if
             return
         end if
         ! k need only be near x/log 2 (the reduction below is exact for any k)
-        k = nint(real(x, real64)*real(inverse_ln2, real64))
+        k = nint(xd*real(inverse_ln2, real64))
         reduced = (x - real(k, qp)*ln2_high) - real(k, qp)*ln2_low
-        y = scale(1.0_qp + small_expm1(reduced), k)
+        y = scale(1.0_qp + small_expm1(reduced, real(reduced, real64)), k)
     end function fast_exp
 
     !> expm1(x) = exp(x) - 1 to full relative precision.
     elemental function fast_expm1(x) result(y)
         real(qp), intent(in) :: x !! argument
         real(qp) :: y
-        if (abs(x) < 0.5_qp) then
-            y = small_expm1(x)
+        real(real64) :: xd
+        xd = real(x, real64)
+        if (abs(xd) < 1.0_real64) then
+            y = small_expm1(x, xd)
         else
             y = fast_exp(x) - 1.0_qp
         end if
@@ -107,19 +122,21 @@ contains
     !! index j = j1 256 + j2: a rounding up by one step leaves r slightly negative, which
     !! the series takes as well; the subtraction is exact), and expm1(+-r) by its series
     !! to r^7/7! (the remainder is below 1e-38 of it), the terms from r^4/24 on in
-    !! hardware precision where there is one.
-    elemental subroutine reduce_series(x, j1, j2, series)
+    !! hardware precision where there is one (xd: x in double precision, its sign x's).
+    elemental subroutine reduce_series(x, xd, j1, j2, series)
         real(qp), intent(in) :: x
+        real(real64), intent(in) :: xd
         integer, intent(out) :: j1, j2
         real(qp), intent(out) :: series
         real(qp) :: r
         real(tail_kind) :: rt, tail
         integer :: j
-        j = max(0, min(int(abs(real(x, real64))*65536.0_real64), 65535))
+        j = max(0, min(int(abs(xd)*65536.0_real64), 65535))
         j1 = ishft(j, -8)
         j2 = iand(j, 255)
-        r = abs(x) - (steps_plus(j1) + fine_plus(j2))
-        if (x < 0.0_qp) r = -r
+        ! j/65536 = a1 + a2 exactly, converted on the bits (no binary128 addition)
+        r = abs(x) - quad_real(real(j, xp)*(1.0_xp/65536))
+        if (sign(1.0_real64, xd) < 0.0_real64) r = -r
         if (tail_in_hardware) then
             ! the terms from r^4/24 on in hardware precision (see tail_kind)
             rt = to_tail(r)
@@ -133,13 +150,14 @@ contains
     end subroutine reduce_series
 
     !> expm1 for |x| < 1: expm1(a + r) = e^a expm1(r) + expm1(a) for
-    !! a = a2, then a1 (the terms of one sign: no cancellation).
-    elemental function small_expm1(x) result(y)
+    !! a = a2, then a1 (the terms of one sign: no cancellation); xd = real(x, real64).
+    elemental function small_expm1(x, xd) result(y)
         real(qp), intent(in) :: x
+        real(real64), intent(in) :: xd
         real(qp) :: y
         integer :: j1, j2
-        call reduce_series(x, j1, j2, y)
-        if (x >= 0.0_qp) then
+        call reduce_series(x, xd, j1, j2, y)
+        if (sign(1.0_real64, xd) > 0.0_real64) then
             if (j2 > 0) y = exp_fine(j2)*y + expm1_fine(j2)
             if (j1 > 0) y = exp_table(j1)*y + expm1_table(j1)
         else
