@@ -103,7 +103,7 @@ module brachistochrone_repulsive
             gauss_legendre, integrate_adaptive
     use brachistochrone_roots, only: root_function, bracketed_secant, anderson_bjorck_update
     use brachistochrone_quad_math, only: expm1
-    use brachistochrone_fast_math, only: inverse_sqrt
+    use brachistochrone_fast_math, only: inverse_sqrt, fast_sqrt
     use brachistochrone_solution, only: endpoint_status, region_outside
     use brachistochrone_arches, only: arch_unbounded, arch_first, arch_second
     use brachistochrone_repulsive_panels, only: panel_rules, new_panel_rules, panel_piece, &
@@ -321,14 +321,14 @@ contains
         curve%gap = g
         curve%p = p
         curve%k2 = p**3/(2.0_qp*(1.0_qp + p))
-        curve%k = sqrt(curve%k2)
+        curve%k = fast_sqrt(curve%k2)
         if (g >= 0.0_qp) then
             curve%bounded = .false.
             curve%centre = 0.5_qp*p
             curve%width2 = p*p*g/(4.0_qp*(p + 1.0_qp))
         else
             curve%bounded = .true.
-            curve%split = p*sqrt(-g/(p + 1.0_qp))
+            curve%split = p*fast_sqrt(-g/(p + 1.0_qp))
             curve%apse_m1 = 2.0_qp/((p + 1.0_qp)*(p - 2.0_qp + curve%split))
             curve%apse = 1.0_qp + curve%apse_m1
             if (curve%apse_m1 < 0.25_qp) then
@@ -347,7 +347,7 @@ contains
         call set_from_gap(3.0_qp - p, curve)
         curve%p = p
         curve%k2 = p**3/(2.0_qp*(1.0_qp + p))
-        curve%k = sqrt(curve%k2)
+        curve%k = fast_sqrt(curve%k2)
         curve%centre = 0.5_qp*p
         curve%width2 = p*p*curve%gap/(4.0_qp*(p + 1.0_qp))
     end subroutine set_from_p
@@ -358,17 +358,17 @@ contains
         real(qp) :: big_r, s, e
         big_r = 1.0_qp + apse_m1
         e = apse_gap
-        s = sqrt((big_r + 3.0_qp)/apse_m1)
+        s = fast_sqrt((big_r + 3.0_qp)/apse_m1)
         curve%bounded = .true.
         curve%apse = big_r
         curve%apse_m1 = apse_m1
         curve%apse_gap = e
         curve%split = 2.0_qp*big_r*e/(apse_m1*(s + 3.0_qp))
         curve%gap = -4.0_qp*e*e/(apse_m1*(s + 3.0_qp)* &
-                                 (sqrt((big_r + 3.0_qp)*apse_m1) + 3.0_qp - big_r))
+                                 (fast_sqrt((big_r + 3.0_qp)*apse_m1) + 3.0_qp - big_r))
         curve%p = 2.0_qp*big_r + curve%split
         curve%k2 = big_r**3/(2.0_qp*apse_m1)
-        curve%k = sqrt(curve%k2)
+        curve%k = fast_sqrt(curve%k2)
     end subroutine set_bounded
 
     !> The integrand of one piece (`brachistochrone_repulsive_panels%integrands`).
@@ -1878,8 +1878,15 @@ contains
         real(qp), intent(in) :: rho, target
         below_range = rho > 1.0_qp .and. target > 0.0_qp
         if (.not. below_range) return
-        below_range = 2.0_qp*log(1.5_qp*target) - log(2.0_qp) &
-            - 3.0_qp*log((rho - 1.0_qp)/rho) < log(tiny(1.0_qp))
+        ! in hardware precision where its exponent range is binary128's (x87): the
+        ! threshold is far from any rounding of the logarithms
+        if (range(1.0_xp) >= range(1.0_qp)) then
+            below_range = 2.0_xp*log(1.5_xp*real(target, xp)) - log(2.0_xp) &
+                - 3.0_xp*log(real((rho - 1.0_qp)/rho, xp)) < real(log(tiny(1.0_qp)), xp)
+        else
+            below_range = 2.0_qp*log(1.5_qp*target) - log(2.0_qp) &
+                - 3.0_qp*log((rho - 1.0_qp)/rho) < log(tiny(1.0_qp))
+        end if
     end function below_range
 
     !> One target on one branch: the fast path, else the adaptive one.
