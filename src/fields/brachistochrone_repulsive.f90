@@ -103,7 +103,7 @@ module brachistochrone_repulsive
             gauss_legendre, integrate_adaptive
     use brachistochrone_roots, only: root_function, bracketed_secant, anderson_bjorck_update
     use brachistochrone_quad_math, only: expm1
-    use brachistochrone_fast_math, only: inverse_sqrt, fast_sqrt
+    use brachistochrone_fast_math, only: inverse_sqrt, fast_sqrt, hardware_real, quad_real
     use brachistochrone_solution, only: endpoint_status, region_outside
     use brachistochrone_arches, only: arch_unbounded, arch_first, arch_second
     use brachistochrone_repulsive_panels, only: panel_rules, new_panel_rules, panel_piece, &
@@ -509,7 +509,7 @@ contains
             real(qp), intent(in) :: x
             real(qp) :: y
             if (rough .and. range(1.0_xp) >= range(1.0_qp)) then
-                y = real(sqrt(max(real(x, xp), 0.0_xp)), qp)
+                y = quad_real(sqrt(max(hardware_real(x), 0.0_xp)))
             else
                 y = root(x)
             end if
@@ -521,8 +521,8 @@ contains
             real(qp) :: t
             real(xp) :: sx
             if (rough .and. range(1.0_xp) >= range(1.0_qp)) then
-                sx = real(s, xp)
-                t = real(sx/(1.0_xp + sqrt(1.0_xp + sx*sx)), qp)
+                sx = hardware_real(s)
+                t = quad_real(sx/(1.0_xp + sqrt(1.0_xp + sx*sx)))
             else
                 t = half_tanh(s)
             end if
@@ -535,9 +535,9 @@ contains
             real(qp) :: t
             real(xp) :: sx, ch
             if (range(1.0_xp) >= range(1.0_qp)) then
-                sx = real(s, xp)
+                sx = hardware_real(s)
                 ch = sqrt(0.5_xp*(1.0_xp + sqrt(1.0_xp + sx*sx)))
-                t = real(0.5_xp*sx/(ch*(1.0_xp + ch)), qp)
+                t = quad_real(0.5_xp*sx/(ch*(1.0_xp + ch)))
             else
                 t = quarter_tanh(s)
             end if
@@ -566,13 +566,15 @@ contains
             integer, intent(in) :: kind
             real(qp), intent(in) :: h_lo, h_hi
             real(qp) :: width, h_mid
+            real(xp) :: width_x
             if (.not. (h_hi > h_lo)) return
             width = rt(curve%width2)
             if (curve%width2 > 0.0_qp .and. h_lo < peak_stretch*width) then
                 h_mid = width*peak_stretch
+                width_x = hardware_real(width)
                 call add(pieces, n, kind, .true., &
-                         on_map(qt(real(real(h_lo, xp)/real(width, xp), qp)), h_lo, width), &
-                         on_map(qt(min(real(real(h_hi, xp)/real(width, xp), qp), &
+                         on_map(qt(quad_real(hardware_real(h_lo)/width_x)), h_lo, width), &
+                         on_map(qt(min(quad_real(hardware_real(h_hi)/width_x), &
                                        peak_stretch)), min(h_hi, h_mid), width))
                 if (h_hi > h_mid) call add(pieces, n, kind, .false., h_mid, h_hi)
             else
@@ -590,10 +592,10 @@ contains
         type(panel_piece), intent(inout) :: pieces(max_pieces)
         integer, intent(inout) :: n
         real(xp) :: gap, rm1, d, c, s_mid, sin_mid, v_mid, v_r, big, r_m1
-        gap = real(r_gap, xp)
-        rm1 = real(curve%apse_m1, xp)
-        d = real(curve%split, xp)
-        r_m1 = real(r - 1.0_qp, xp)
+        gap = hardware_real(r_gap)
+        rm1 = hardware_real(curve%apse_m1)
+        d = hardware_real(curve%split)
+        r_m1 = hardware_real(r - 1.0_qp)
         c = sqrt(d/rm1)
         s_mid = min(real(stretch, xp), real(apse_split, xp)/c)
         sin_mid = min(c*s_mid, 1.0_xp)
@@ -605,14 +607,14 @@ contains
             v_r = sqrt(gap)/(sqrt(r_m1) + big)
         end if
         if (v_r < v_mid) then
-            call add(pieces, n, piece_apse, .false., real(half_tanh_xp(sqrt(gap/d)), qp), &
-                     real(half_tanh_xp(s_mid), qp))
-            call add(pieces, n, piece_arch, .false., real(v_mid, qp), 1.0_qp)
+            call add(pieces, n, piece_apse, .false., quad_real(half_tanh_xp(sqrt(gap/d))), &
+                     quad_real(half_tanh_xp(s_mid)))
+            call add(pieces, n, piece_arch, .false., quad_real(v_mid), 1.0_qp)
         else if (r_m1 < gap) then
             call add(pieces, n, piece_arch_start, .false., 0.0_qp, &
-                     real(sqrt(r_m1)/(sqrt(gap) + big), qp))
+                     quad_real(sqrt(r_m1)/(sqrt(gap) + big)))
         else
-            call add(pieces, n, piece_arch, .false., real(v_r, qp), 1.0_qp)
+            call add(pieces, n, piece_arch, .false., quad_real(v_r), 1.0_qp)
         end if
     end subroutine bounded_pieces_xp
 
@@ -937,7 +939,7 @@ contains
         type(repulsive_curve), intent(out) :: curve
         real(qp), intent(in) :: rho
         real(xp) :: x, e
-        x = real(lambda, xp)
+        x = hardware_real(lambda)
         e = exp(x)
         if (arch > near_apse) then
             call set_near_apse(rho, real(x*x, qp), curve)
@@ -958,7 +960,7 @@ contains
         type(repulsive_curve), intent(out) :: curve
         real(xp) :: big_r, s, split, k2
         if (range(1.0_xp) < range(1.0_qp)) then
-            call set_bounded(real(apse_m1, qp), real(apse_gap, qp), curve)
+            call set_bounded(quad_real(apse_m1), quad_real(apse_gap), curve)
             return
         end if
         big_r = 1.0_xp + apse_m1
@@ -966,15 +968,15 @@ contains
         split = 2.0_xp*big_r*apse_gap/(apse_m1*(s + 3.0_xp))
         k2 = big_r**3/(2.0_xp*apse_m1)
         curve%bounded = .true.
-        curve%apse_m1 = real(apse_m1, qp)
+        curve%apse_m1 = quad_real(apse_m1)
         curve%apse = 1.0_qp + curve%apse_m1
-        curve%apse_gap = real(apse_gap, qp)
-        curve%split = real(split, qp)
-        curve%gap = real(-4.0_xp*apse_gap*apse_gap/(apse_m1*(s + 3.0_xp)* &
-                         (sqrt((big_r + 3.0_xp)*apse_m1) + 3.0_xp - big_r)), qp)
-        curve%p = real(2.0_xp*big_r + split, qp)
-        curve%k2 = real(k2, qp)
-        curve%k = real(sqrt(k2), qp)
+        curve%apse_gap = quad_real(apse_gap)
+        curve%split = quad_real(split)
+        curve%gap = quad_real(-4.0_xp*apse_gap*apse_gap/(apse_m1*(s + 3.0_xp)* &
+                              (sqrt((big_r + 3.0_xp)*apse_m1) + 3.0_xp - big_r)))
+        curve%p = quad_real(2.0_xp*big_r + split)
+        curve%k2 = quad_real(k2)
+        curve%k = quad_real(sqrt(k2))
     end subroutine set_bounded_rough
 
     !> `set_from_gap` of an unbounded curve (g > 0) in hardware precision: the
@@ -985,20 +987,20 @@ contains
         real(xp), intent(in), optional :: p_exact !! P = 3 - g itself (`near_radial`)
         real(xp) :: p, k2
         if (range(1.0_xp) < range(1.0_qp)) then
-            call set_from_gap(real(g, qp), curve)
-            if (present(p_exact)) call set_from_p(real(p_exact, qp), curve)
+            call set_from_gap(quad_real(g), curve)
+            if (present(p_exact)) call set_from_p(quad_real(p_exact), curve)
             return
         end if
         p = 3.0_xp - g
         if (present(p_exact)) p = p_exact
         k2 = p**3/(2.0_xp*(1.0_xp + p))
-        curve%gap = real(g, qp)
-        curve%p = real(p, qp)
-        curve%k2 = real(k2, qp)
-        curve%k = real(sqrt(k2), qp)
+        curve%gap = quad_real(g)
+        curve%p = quad_real(p)
+        curve%k2 = quad_real(k2)
+        curve%k = quad_real(sqrt(k2))
         curve%bounded = .false.
-        curve%centre = real(0.5_xp*p, qp)
-        curve%width2 = real(p*p*g/(4.0_xp*(p + 1.0_xp)), qp)
+        curve%centre = quad_real(0.5_xp*p)
+        curve%width2 = quad_real(p*p*g/(4.0_xp*(p + 1.0_xp)))
     end subroutine set_from_gap_rough
 
     pure subroutine mismatch_evaluate(self, x, f, df, status)

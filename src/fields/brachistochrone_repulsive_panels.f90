@@ -49,8 +49,8 @@ module brachistochrone_repulsive_panels
                           piece_arch_start = 7
     integer, parameter :: max_pieces = 6
     !> The ladder of rules and the most panels for one integral.
-    integer, parameter :: ladder(*) = [6, 8, 10, 12, 14, 16, 18, 20, 22, 24, 26, 28, 30, &
-                                       32, 34, 36, 38, 40, 42, 44, 46, 48]
+    integer, parameter :: ladder(*) = [6, 8, 10, 12, 16, 20, 24, 28, 30, 32, 34, 36, 38, &
+                                       40, 44, 48]
     integer, parameter :: max_nodes = 48, max_panels = 64
     !> Digits aimed at: binary128 (with a margin over 34) and the hardware phase.
     real(real64), parameter :: quad_digits = 35.0_real64, hardware_digits = 20.5_real64
