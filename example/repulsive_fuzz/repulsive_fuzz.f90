@@ -2,6 +2,7 @@
 !!
 !!     fpm run --profile release --example repulsive-fuzz -- COUNT [SHOW [SEED]]
 !!     fpm run --profile release --example repulsive-fuzz -- grid REPEATS
+!!     fpm run --profile release --example repulsive-fuzz -- one RHO PSI REPEATS
 !!
 !! COUNT endpoints (the draws from SEED, default 1: the same draws on every run): rho
 !! from six classes (1 + 10^-U(3, 34), 1 + U(0.001, 0.5), 3/2 -+ 10^-U(2, 30), U(3/2, 10),
@@ -50,6 +51,19 @@ program repulsive_fuzz
             end do
         end do
         write (*, '(a,i0)') 'solved: ', solved
+        stop
+    end if
+    if (trim(text) == 'one') then
+        call get_command_argument(2, text)
+        read (text, *) u(1)
+        call get_command_argument(3, text)
+        read (text, *) u(2)
+        call get_command_argument(4, text)
+        read (text, *) repeats
+        do k = 1, repeats
+            s = field%solve(u(1), u(2))
+        end do
+        write (*, '(a,i0,a,i0,a,i0)') 'status ', s%status, ' arch ', s%arch, ' steps ', s%steps
         stop
     end if
     read (text, *) count
