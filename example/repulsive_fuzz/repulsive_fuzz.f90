@@ -1,6 +1,6 @@
 !> repulsive-fuzz: a developer's fuzz of the repulsive field's two-point problem.
 !!
-!!     fpm run --profile release --example repulsive-fuzz -- COUNT [SHOW [SEED]]
+!!     fpm run --profile release --example repulsive-fuzz -- COUNT [SHOW [SEED [no-apse]]]
 !!     fpm run --profile release --example repulsive-fuzz -- grid REPEATS
 !!     fpm run --profile release --example repulsive-fuzz -- one RHO PSI REPEATS
 !!
@@ -8,9 +8,10 @@
 !! from six classes (1 + 10^-U(3, 34), 1 + U(0.001, 0.5), 3/2 -+ 10^-U(2, 30), U(3/2, 10),
 !! 10^U(1, 6), exactly 1) and psi from four (U(0, pi), pi 10^-U(1, 30), pi - pi
 !! 10^-U(1, 30), and for 1 < rho < 3/2 the apse's angle Theta(rho, rho) -+ 10^-U(5, 30)
-!! of it, else U(0, pi)). Prints the first SHOW (default 5) unsolved endpoints, the count
-!! of unsolved ones, the median and the slowest CPU time per endpoint and their ratio
-!! (issue 11: at most 10); the slowest `retimed` endpoints are timed again (median of 5
+!! of it, else U(0, pi); `no-apse`: U(0, pi) there too). Prints the first SHOW (default
+!! 5) unsolved endpoints (with psi's relative offset from the apse's angle), the count of
+!! unsolved ones, the median and the slowest CPU time per endpoint and their ratio (issue
+!! 11: at most 10); the slowest `retimed` endpoints are timed again (median of 5
 !! solves each), "retimed max". `grid REPEATS` solves field-timing's 36 endpoints
 !! (rho = 1.001 .. 3, psi = 0.001 pi .. 0.99 pi) REPEATS times and prints nothing else
 !! but a count: for operation counts (`perf stat` on libgcc's binary128 routines, runs
@@ -28,11 +29,12 @@ program repulsive_fuzz
     type(repulsive_curve) :: curve
     character(len=32) :: text
     real(qp) :: u(3), apse_angle, dummy(2), frac(6), rhos_grid(6)
-    real(qp), allocatable :: rhos(:), psis(:)
+    real(qp), allocatable :: rhos(:), psis(:), offsets(:)
     real, allocatable :: times(:), order(:)
     real :: t0, t1, again(5), retime_max
     integer :: count, show, seed, seed_size, bad, i, k, repeats, solved, status, worst
     integer, allocatable :: seeds(:)
+    logical :: near_apse_class
 
     field = new_repulsive_field()
     call get_command_argument(1, text)
@@ -77,11 +79,17 @@ program repulsive_fuzz
         call get_command_argument(3, text)
         read (text, *) seed
     end if
+    near_apse_class = .true.
+    if (command_argument_count() >= 4) then
+        call get_command_argument(4, text)
+        near_apse_class = trim(text) /= 'no-apse'
+    end if
     call random_seed(size=seed_size)
     allocate (seeds(seed_size))
     seeds = [(104729*i + 7919*seed, i = 1, seed_size)]
     call random_seed(put=seeds)
-    allocate (rhos(count), psis(count), times(count))
+    allocate (rhos(count), psis(count), times(count), offsets(count))
+    offsets = 0.0_qp
     do i = 1, count
         call random_number(u)
         select case (int(6.0_qp*u(1)))
@@ -108,12 +116,12 @@ program repulsive_fuzz
             psis(i) = pi - pi*10.0_qp**(-1.0_qp - 29.0_qp*u(2))
         case default
             psis(i) = pi*u(2)
-            if (rhos(i) > 1.0_qp .and. rhos(i) < 1.5_qp) then
+            if (rhos(i) > 1.0_qp .and. rhos(i) < 1.5_qp .and. near_apse_class) then
                 call curve_from_apse(rhos(i), curve, status)
                 call repulsive_values(curve, rhos(i), .false., apse_angle, dummy(1), &
                                       dummy(2), status)
-                if (status == status_ok) psis(i) = min(pi, apse_angle* &
-                    (1.0_qp + sign(10.0_qp**(-5.0_qp - 25.0_qp*u(3)), u(2) - 0.5_qp)))
+                offsets(i) = sign(10.0_qp**(-5.0_qp - 25.0_qp*u(3)), u(2) - 0.5_qp)
+                if (status == status_ok) psis(i) = min(pi, apse_angle*(1.0_qp + offsets(i)))
             end if
         end select
     end do
@@ -125,8 +133,9 @@ program repulsive_fuzz
         times(i) = t1 - t0
         if (s%status /= status_ok) then
             bad = bad + 1
-            if (bad <= show) write (*, '(a,es44.35e4,a,es44.35e4,a,i0,a,i0)') 'unsolved rho = ', &
-                rhos(i), ' psi = ', psis(i), ' status ', s%status, ' steps ', s%steps
+            if (bad <= show) write (*, '(a,es44.35e4,a,es44.35e4,a,i0,a,es9.1)') &
+                'unsolved rho = ', rhos(i), ' psi = ', psis(i), ' status ', s%status, &
+                ' psi/Theta(rho, rho) - 1 = ', offsets(i)
         end if
     end do
     order = times
