@@ -27,7 +27,7 @@ program repulsive_fuzz
     type(repulsive_field) :: field
     type(endpoint_solution) :: s
     type(repulsive_curve) :: curve
-    character(len=32) :: text
+    character(len=100) :: text
     real(qp) :: u(3), apse_angle, dummy(2), frac(6), rhos_grid(6)
     real(qp), allocatable :: rhos(:), psis(:), offsets(:)
     real, allocatable :: times(:), order(:)
@@ -66,6 +66,7 @@ program repulsive_fuzz
             s = field%solve(u(1), u(2))
         end do
         write (*, '(a,i0,a,i0,a,i0)') 'status ', s%status, ' arch ', s%arch, ' steps ', s%steps
+        write (*, '(3es45.36e4)') s%apse_radius, s%arclength, s%time
         stop
     end if
     read (text, *) count

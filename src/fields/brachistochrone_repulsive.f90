@@ -156,9 +156,9 @@ module brachistochrone_repulsive
     real(qp), parameter :: peak_stretch = 16.0_qp
     !> sin(nu/2) where the apse's sinh map hands over to the nu map (the map's own
     !! singularity is at sin(nu/2) = 1: at 1/2 its rule needs a third fewer nodes; at
-    !! 0.35 the two pieces need 1% fewer binary128 operations on the field-timing grid
-    !! than at 1/2)
-    real(qp), parameter :: apse_split = 0.35_qp
+    !! 0.35 the two pieces need 1% fewer binary128 operations on the field-timing grid,
+    !! but the complete arches lose 0.7 digits against the mpmath references)
+    real(qp), parameter :: apse_split = 0.5_qp
     integer, parameter :: want_angle = 1, want_length = 2, want_time = 3
     !> The radius argument that means the apse of a bounded curve (R itself may round to
     !! 1 when R - 1 is below binary128's spacing there)
