@@ -166,6 +166,12 @@ module brachistochrone_repulsive
     !> Added to arch_first, arch_second: the solver's unknown is u = sqrt(R - rho) (next
     !! to the apse, where R - rho would be formed by cancellation from lambda)
     integer, parameter :: near_apse = 100
+    !> Next to the apse: |Theta(rho, rho) - psi| below this fraction of psi is below
+    !! what the hardware phase resolves (its noise about 1e-19 of psi): the root is
+    !! started from the square-root law and found by binary128 Newton steps
+    real(qp), parameter :: apse_resolution = 1.0e-16_qp
+    !> Binary128 Newton steps next to the apse at most (`apse_newton`)
+    integer, parameter :: apse_iterations = 6
     !> The unbounded branch next to the radial path (P below 1/2): the unknown is
     !! log P, P = 3 - g (theta ~ (2/3) ((1 - 1/rho) P)^(3/2): log g = log(3 - P) would
     !! carry P only to eps absolutely, K^2 ~ P^3/2 to eps/P relatively)
@@ -456,10 +462,13 @@ contains
         if (curve%bounded) then
             ! R - r from 3 - 2r (exact near 3/2) and the stored 3 - 2R: R itself may not
             ! be representable next to 3/2 (R = 3/2 - d/2 with d below eps)
-            if (r == the_apse .or. r >= curve%apse) then
-                r_gap = 0.0_qp    ! the apse (R itself may be rounded: r = R is the apse)
+            if (r == the_apse) then
+                r_gap = 0.0_qp
             else if (curve%r_gap >= 0.0_qp .and. r == curve%r_gap_radius) then
+                ! kept exactly (R itself rounds to r when R - r is below its rounding)
                 r_gap = curve%r_gap
+            else if (r >= curve%apse) then
+                r_gap = 0.0_qp    ! the apse (R itself may be rounded: r = R is the apse)
             else if (r > gap_switch) then
                 r_gap = 0.5_qp*((3.0_qp - 2.0_qp*r) - curve%apse_gap)
             else
@@ -1149,8 +1158,12 @@ contains
             integer, intent(out) :: st
             type(panel_piece), intent(out) :: pieces(max_pieces)
             integer, intent(out) :: n
-            real(xp), parameter :: h = 1.0e-40_xp
             complex(xp) :: cc(7), lower_c(max_pieces), upper_c(max_pieces)
+            real(xp) :: h
+            ! the step 1e-40, next to the apse far below u = sqrt(R - rho) (the end
+            ! sqrt(R - r) = u + i h is analytic only for h << u)
+            h = 1.0e-40_xp
+            if (curve%r_gap > 0.0_qp) h = min(h, 1.0e-20_xp*sqrt(real(curve%r_gap, xp)))
             v = 0.0_qp
             call plan_pieces(curve, radius, .false., pieces, n, c%span)
             call complex_step(curve, radius, h, c%span, pieces(1:n), cc, lower_c, upper_c, &
@@ -1258,10 +1271,12 @@ contains
               (0.0_xp, 0.0_xp), (0.0_xp, 0.0_xp), rm1, d]
         cc(1:2) = [real_part(cc(1), curve%k), real_part(cc(2), curve%p)]
         ! as in plan_pieces (R - r with its binary128 real part)
-        if (r == the_apse .or. r >= curve%apse) then
+        if (r == the_apse) then
             rg = 0.0_xp
         else if (curve%r_gap >= 0.0_qp .and. r == curve%r_gap_radius) then
             rg = cmplx(real(curve%r_gap, xp), 2.0_xp*sqrt(real(curve%r_gap, xp))*h, xp)
+        else if (r >= curve%apse) then
+            rg = 0.0_xp
         else if (r > gap_switch) then
             rg = real_part(-0.5_xp*e, 0.5_qp*((3.0_qp - 2.0_qp*r) - curve%apse_gap))
         else
@@ -1368,7 +1383,7 @@ contains
         type(repulsive_solution), intent(inout) :: solution
         logical, intent(out) :: done
         real(qp) :: lo, f_lo, hi, f_hi, x0, fx0, x1, x, h, f_plus, f_minus, slope
-        real(qp) :: curvature, v0(3), v1(3), f0, f1, floor, rate(3), slopes(2), dx, conserved
+        real(qp) :: curvature, v0(3), v1(3), f0, f1, floor, rate(3), slopes(2), dx
         real(qp) :: scale, check
         integer :: status, steps, stat(2)
         type(repulsive_curve) :: curve
@@ -1381,7 +1396,15 @@ contains
         f_hi = f_top
         lo = hi
         steps = 0
-        if (arch > near_apse) then
+        if (arch > near_apse .and. abs(f_top) <= apse_resolution*target) then
+            ! theta - target below what the hardware phase resolves: the root from the
+            ! square-root law (f = f_top -+ 2 A u + O(u^2): f there is 0 to O(u^2))
+            lo = 0.0_qp
+            hi = sqrt(0.25_qp*(3.0_qp - 2.0_qp*rho))
+            x0 = min(abs(f_top)/(2.0_qp*sqrt((rho - 1.0_qp)/(rho*(3.0_qp - 2.0_qp*rho)))), &
+                     0.5_qp*hi)
+            fx0 = 0.0_qp
+        else if (arch > near_apse) then
             call near_apse_bracket(rho, target, arch, f_top, rules, lo, f_lo, hi, f_hi, &
                                    steps, status)
             if (status /= status_ok) return
@@ -1400,9 +1423,12 @@ contains
                 f_hi = f_lo
             end do
         end if
-        call falsi_xp(rho, target, arch, rules, lo, f_lo, hi, f_hi, x0, fx0, steps, status, &
-                      seen)
-        if (status /= status_ok) return
+        seen%n = 0
+        if (.not. (arch > near_apse .and. abs(f_top) <= apse_resolution*target)) then
+            call falsi_xp(rho, target, arch, rules, lo, f_lo, hi, f_hi, x0, fx0, steps, &
+                          status, seen)
+            if (status /= status_ok) return
+        end if
         stat = status_ok
         call history_slope(seen, x0, fx0, lambda_scale(arch, x0), slope, curvature, h, found)
         if (arch < near_apse .and. .not. found) then
@@ -1444,34 +1470,28 @@ contains
         end if
         steps = steps + 2
         if (any(stat /= status_ok)) return
+        if (arch > near_apse) then
+            call apse_newton(rho, target, arch, rules, [x0, lo, hi], slope, &
+                             curvature, check*abs(slope) + 1.0e-17_qp*target/h, steps, &
+                             solution, done)
+            return
+        end if
         ! one binary128 evaluation, the Newton step on the complex-step slopes
         call curve_near_lambda(arch, x0, curve, rho)
         call lambda_slopes(arch, curve, rho, rules, slopes, stat(2), v0, stat(1))
         f0 = v0(1) - target
         if (any(stat /= status_ok)) return
         steps = steps + 1
-        ! the error of x that moves theta, s or t by a rounding (next to the apse, where
-        ! they vary like sqrt(R - rho) = exp(x/2), far more than a rounding of x)
+        ! the error of x that moves theta, s or t by a rounding
         scale = lambda_scale(arch, x0)
-        if (arch > near_apse) scale = 1.0_qp/max(abs(slopes(1))/target, &
-            abs(slopes(2)/v0(2)), abs(curve%k*slopes(1)/v0(3)), tiny(1.0_qp))
         ! the cross-check against the central difference, to its rounding noise
         if (abs(slopes(1) - slope) <= check*abs(slopes(1)) + 1.0e-17_qp*target/h) then
             dx = -f0/slopes(1)
             x = x0 + dx
             if (x > lo .and. x < hi .and. 1.0e-17_qp*abs(dx) + curvature*dx*dx <= &
                 2.0_qp*eps_qp*scale) then
-                call curve_after_step(arch, curve, dx, x, solution%curve, rho)
-                ! (K at the midpoint to 1e-19 is ample: it multiplies f0, below 1e-16)
-                call rough_curve_of_lambda(arch, x0 + 0.5_qp*dx, curve, rho)
-                conserved = curve%k
-                solution%arch = mod(arch, near_apse)
-                solution%angle = v0(1) + slopes(1)*dx
-                solution%arclength = v0(2) + slopes(2)*dx
-                ! Hamilton-Jacobi: at fixed rho, dt/dtheta = K, the conserved momentum
-                solution%time = v0(3) - conserved*f0
-                solution%steps = steps
-                solution%status = status_ok
+                call newton_solution(rho, arch, curve, x0, dx, v0, slopes, f0, steps, &
+                                     solution)
                 done = .true.
                 return
             end if
@@ -1515,6 +1535,72 @@ contains
         solution%status = status_ok
         done = .true.
     end subroutine solve_branch_fast
+
+    !> Next to the apse (the unknown u = sqrt(R - rho), R - rho = u^2 kept exactly): Newton
+    !! steps in u on binary128 evaluations of theta, s, t with the complex-step slopes
+    !! (`lambda_slopes`) from u = start(1) (the hardware phase's root, or the square-root
+    !! law's when theta - target is below what that phase resolves), each step certified
+    !! as `solve_branch_fast`'s: accepted when 1e-17 |du| + curvature du^2 is below a
+    !! rounding of u (the u that moves theta, s or t by a rounding), else taken and
+    !! evaluated again (at most `apse_iterations`; theta is analytic in u next to u = 0,
+    !! so each step squares the relative error). `slope`: the hardware phase's
+    !! difference slope, which the first complex-step slope must match to `tolerance`.
+    !! `done` false on any failure or a step leaving (start(2), start(3)).
+    pure subroutine apse_newton(rho, target, arch, rules, start, slope, curvature, &
+                                tolerance, steps, solution, done)
+        real(qp), intent(in) :: rho, target, start(3), slope, curvature, tolerance
+        integer, intent(in) :: arch
+        type(panel_rules), intent(in) :: rules
+        integer, intent(inout) :: steps
+        type(repulsive_solution), intent(inout) :: solution
+        logical, intent(out) :: done
+        type(repulsive_curve) :: curve
+        real(qp) :: u, v(3), slopes(2), f, dx, scale
+        integer :: stat(2), i
+        done = .false.
+        u = start(1)
+        do i = 1, apse_iterations
+            call curve_of_lambda(arch, u, curve, rho)
+            call lambda_slopes(arch, curve, rho, rules, slopes, stat(2), v, stat(1))
+            steps = steps + 1
+            if (any(stat /= status_ok) .or. slopes(1) == 0.0_qp) return
+            if (i == 1 .and. .not. abs(slopes(1) - slope) <= tolerance) return
+            f = v(1) - target
+            ! the error of u that moves theta, s or t by a rounding
+            scale = 1.0_qp/max(abs(slopes(1))/target, abs(slopes(2)/v(2)), &
+                               abs(curve%k*slopes(1)/v(3)), tiny(1.0_qp))
+            dx = -f/slopes(1)
+            if (.not. (u + dx > start(2) .and. u + dx < start(3))) return
+            if (1.0e-17_qp*abs(dx) + curvature*dx*dx <= 2.0_qp*eps_qp*scale) then
+                call newton_solution(rho, arch, curve, u, dx, v, slopes, f, steps, &
+                                     solution)
+                done = .true.
+                return
+            end if
+            u = u + dx
+        end do
+    end subroutine apse_newton
+
+    !> The solution of the certified Newton step dx from x0 (curve, values v0 and
+    !! slopes there, f0 = theta - target): theta and s along the slopes, t by
+    !! Hamilton-Jacobi (at fixed rho dt/dtheta = K, the conserved momentum).
+    pure subroutine newton_solution(rho, arch, curve, x0, dx, v0, slopes, f0, steps, &
+                                    solution)
+        real(qp), intent(in) :: rho, x0, dx, v0(3), slopes(2), f0
+        integer, intent(in) :: arch, steps
+        type(repulsive_curve), intent(in) :: curve
+        type(repulsive_solution), intent(inout) :: solution
+        type(repulsive_curve) :: middle
+        call curve_after_step(arch, curve, dx, x0 + dx, solution%curve, rho)
+        ! (K at the midpoint to 1e-19 is ample: it multiplies f0, below 1e-16)
+        call rough_curve_of_lambda(arch, x0 + 0.5_qp*dx, middle, rho)
+        solution%arch = mod(arch, near_apse)
+        solution%angle = v0(1) + slopes(1)*dx
+        solution%arclength = v0(2) + slopes(2)*dx
+        solution%time = v0(3) - middle%k*f0
+        solution%steps = steps
+        solution%status = status_ok
+    end subroutine newton_solution
 
     !> The bracket of u = sqrt(R - rho) next to the apse, from the square-root law there:
     !! theta(rho) = Theta(rho, rho) -+ 2 A u + O(u^2) on the first (second) half-arch,
