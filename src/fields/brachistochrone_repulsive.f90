@@ -80,7 +80,13 @@
 !! (R - rho below 1e-4 of 3 - 2 rho and rho - 1) the unknown is u = sqrt(R - rho)
 !! instead: theta is linear in u there (theta = Theta(rho, rho) -+ 2 A u, A =
 !! sqrt((rho - 1)/(rho (3 - 2 rho)))), and the curve keeps R - rho = u^2 exactly
-!! (`r_gap`), which lambda would form by cancellation. On the second half-arch the
+!! (`r_gap`), which lambda would form by cancellation, also where u^2 is below R's
+!! rounding (R = rho in binary128: the pieces and the complex step take R - rho from
+!! r_gap, the step h = 1e-20 u, since sqrt(R - r) = u + i h needs h << u). There the
+!! root is found by binary128 Newton steps in u, each certified as above
+!! (`apse_newton`), from the hardware phase's root, or, with |Theta(rho, rho) - psi|
+!! below 1e-16 psi (below what that phase resolves), from the law's u = |Theta(rho,
+!! rho) - psi|/(2 A) directly. On the second half-arch the
 !! values 2 F(R) - F(r) are taken as F(r) + 2 (F(R) - F(r)), the difference integrated
 !! on its own pieces (`complement_pieces`): no cancellation next to the apse, and
 !! fewer nodes than the whole half-arch.
