@@ -17,6 +17,7 @@ module test_repulsive
                          new_panel_rules
     use brachistochrone_arches, only: arch_unbounded, arch_first, arch_second
     use testing, only: check, check_close, check_digits, section, digits_of_agreement
+    use reference_tables, only: csv_table, read_reference
     implicit none
     private
 
@@ -37,6 +38,8 @@ contains
         call two_point()
         call two_point_mpmath()
         call next_to_the_apse()
+        call next_to_the_apse_angle()
+        call next_to_the_apse_mpmath()
         call winding_asymptotics()
         call constructors()
         call cycloid_limit()
@@ -513,6 +516,88 @@ contains
         call check(worst_r >= 15.0_qp, 'next to the apse: R - rho recovered (conditioning: 19)')
         call check(worst_t >= 32.0_qp, 'next to the apse: t to 32 digits')
     end subroutine next_to_the_apse
+
+    !> B next to the apse angle: psi = Theta(rho, rho) (1 +- 1e-8, 1e-17, 1e-25, 1e-30)
+    !! (Theta by the adaptive integrals) for rho = 1 + 1e-20, 1.001, 5/4, 1.45 (an apse
+    !! angle exists only for 1 < rho < 3/2): below 1e-16 of psi the hardware phase
+    !! cannot resolve theta - psi. Every endpoint solved, on the first (-) or second (+)
+    !! half-arch; the curve found (R - rho kept exactly) satisfies the angle equation to
+    !! a few eps by the adaptive integrals, which give s and t there as well.
+    subroutine next_to_the_apse_angle()
+        type(repulsive_curve) :: curve
+        type(repulsive_solution), allocatable :: sol(:)
+        real(qp), parameter :: rhos(4) = [1.0_qp + 1.0e-20_qp, 1.001_qp, 1.25_qp, 1.45_qp]
+        real(qp), parameter :: offsets(4) = [1.0e-8_qp, 1.0e-17_qp, 1.0e-25_qp, 1.0e-30_qp]
+        real(qp) :: apse_angle, dummy(2), v(3), psi, worst(3)
+        integer :: i, k, side, best, status, solved, count
+        call section('repulsive: psi within 1e-8 .. 1e-30 of the apse angle, both sides')
+        worst = 0.0_qp
+        solved = 0
+        count = 0
+        do i = 1, size(rhos)
+            call curve_from_apse(rhos(i), curve, status)
+            call repulsive_values(curve, rhos(i), .false., apse_angle, dummy(1), dummy(2), &
+                                  status)
+            do k = 1, size(offsets)
+                do side = -1, 1, 2
+                    count = count + 1
+                    psi = apse_angle*(1.0_qp + real(side, qp)*offsets(k))
+                    call solve_repulsive(rhos(i), psi, 0, sol, best, status, mirror=.false.)
+                    if (status /= status_ok .or. sol(1)%status /= status_ok) cycle
+                    if (sol(1)%arch /= merge(arch_second, arch_first, side == 1)) cycle
+                    solved = solved + 1
+                    call repulsive_values(sol(1)%curve, rhos(i), side == 1, v(1), v(2), &
+                                          v(3), status)
+                    worst(1) = max(worst(1), abs(v(1) - psi)/(eps_qp*psi))
+                    worst(2) = max(worst(2), abs(sol(1)%arclength - v(2))/(eps_qp*v(2)))
+                    worst(3) = max(worst(3), abs(sol(1)%time - v(3))/(eps_qp*v(3)))
+                end do
+            end do
+        end do
+        write (output_unit, '(a,i0,a,i0,a,3f7.2)') '   solved ', solved, ' of ', count, &
+            ' on the right half-arch; worst |theta - psi|, s, t against adaptive (eps): ', &
+            worst
+        call check(solved == count, 'next to the apse angle: every endpoint solved')
+        call check(worst(1) <= 8.0_qp, 'next to the apse angle: theta(rho; R-bar) = psi')
+        call check(worst(2) <= 8.0_qp .and. worst(3) <= 8.0_qp, &
+                   'next to the apse angle: s, t as the adaptive integrals')
+    end subroutine next_to_the_apse_angle
+
+    !> B next to the apse angle against mpmath on the original integrals
+    !! (data/reference/repulsive_near_apse_mpmath.csv,
+    !! scripts/make_repulsive_near_apse_reference.py: psi within 1e-8 .. 1e-30 of
+    !! Theta(rho, rho), both half-arches, rho = 1 + 1e-20 .. 1.45): R, s, t to >= 33
+    !! digits (R's conditioning credited as in test_field_references).
+    subroutine next_to_the_apse_mpmath()
+        type(csv_table) :: table
+        type(repulsive_solution), allocatable :: sol(:)
+        real(qp) :: rho, psi, digits(3), worst(3)
+        integer :: i, best, status, solved
+        logical :: ok
+        call section('repulsive: next to the apse angle against mpmath (1e-8 .. 1e-30)')
+        call read_reference('data/reference/repulsive_near_apse_mpmath.csv', 32, table, ok)
+        if (.not. ok) return
+        worst = 99.0_qp
+        solved = 0
+        do i = 1, table%row_count()
+            rho = table%real_value(i, 'rho')
+            psi = table%real_value(i, 'psi')
+            call solve_repulsive(rho, psi, 0, sol, best, status, mirror=.false.)
+            if (status /= status_ok .or. sol(1)%status /= status_ok) cycle
+            if (sol(1)%arch /= merge(arch_second, arch_first, &
+                                     table%text(i, 'arch') == 'second')) cycle
+            solved = solved + 1
+            digits = [digits_of_agreement(sol(1)%curve%apse, table%real_value(i, 'R')) + &
+                      log10(max(1.0_qp, table%real_value(i, 'cond_R'))), &
+                      digits_of_agreement(sol(1)%arclength, table%real_value(i, 's')), &
+                      digits_of_agreement(sol(1)%time, table%real_value(i, 't'))]
+            worst = min(worst, digits)
+        end do
+        write (output_unit, '(a,i0,a,i0,a,3f7.2)') '   solved ', solved, ' of ', &
+            table%row_count(), '; fewest digits of R (credited), s, t: ', worst
+        call check(solved == table%row_count(), 'next to the apse angle (mpmath): all solved')
+        call check(minval(worst) >= 33.0_qp, 'next to the apse angle (mpmath): 33 digits')
+    end subroutine next_to_the_apse_mpmath
 
     !> Each extra turn costs, asymptotically, the time of one turn round the circle
     !! r = 3/2 (where the angular speed v/r is largest): 2 pi r/v = 2 pi sqrt(27/8), and

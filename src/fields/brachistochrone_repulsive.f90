@@ -80,7 +80,13 @@
 !! (R - rho below 1e-4 of 3 - 2 rho and rho - 1) the unknown is u = sqrt(R - rho)
 !! instead: theta is linear in u there (theta = Theta(rho, rho) -+ 2 A u, A =
 !! sqrt((rho - 1)/(rho (3 - 2 rho)))), and the curve keeps R - rho = u^2 exactly
-!! (`r_gap`), which lambda would form by cancellation. On the second half-arch the
+!! (`r_gap`), which lambda would form by cancellation, also where u^2 is below R's
+!! rounding (R = rho in binary128: the pieces and the complex step take R - rho from
+!! r_gap, the step h = 1e-20 u, since sqrt(R - r) = u + i h needs h << u). There the
+!! root is found by binary128 Newton steps in u, each certified as above
+!! (`apse_newton`), from the hardware phase's root, or, with |Theta(rho, rho) - psi|
+!! below 1e-16 psi (below what that phase resolves), from the law's u = |Theta(rho,
+!! rho) - psi|/(2 A) directly. On the second half-arch the
 !! values 2 F(R) - F(r) are taken as F(r) + 2 (F(R) - F(r)), the difference integrated
 !! on its own pieces (`complement_pieces`): no cancellation next to the apse, and
 !! fewer nodes than the whole half-arch.
@@ -103,7 +109,7 @@ module brachistochrone_repulsive
             gauss_legendre, integrate_adaptive
     use brachistochrone_roots, only: root_function, bracketed_secant, anderson_bjorck_update
     use brachistochrone_quad_math, only: expm1
-    use brachistochrone_fast_math, only: inverse_sqrt
+    use brachistochrone_fast_math, only: inverse_sqrt, fast_sqrt, hardware_real, quad_real
     use brachistochrone_solution, only: endpoint_status, region_outside
     use brachistochrone_arches, only: arch_unbounded, arch_first, arch_second
     use brachistochrone_repulsive_panels, only: panel_rules, new_panel_rules, panel_piece, &
@@ -135,8 +141,14 @@ module brachistochrone_repulsive
     real(qp), parameter :: sqrt2 = sqrt(2.0_qp), sqrt3 = sqrt(3.0_qp), log_three = log(3.0_qp)
     !> Relative accuracy asked of each integral piece.
     real(qp), parameter :: integral_tolerance = 2.0_qp*eps_qp
-    !> Breakpoints of the unbounded integrals: start piece up to x = 5/4, far piece beyond 4.
-    real(qp), parameter :: start_end = 1.25_qp, far_start = 4.0_qp
+    !> Breakpoints of the unbounded integrals: start piece up to x = 27/20, far piece
+    !! beyond 4 (27/20 rather than 5/4: 3.5% fewer binary128 operations on the
+    !! field-timing grid, the start piece's rule a little longer, the peak's shorter)
+    real(qp), parameter :: start_end = 1.35_qp, far_start = 4.0_qp
+    !> Bounded curves: R - r from 3 - 2r above this radius, from r - 1 below it
+    real(qp), parameter :: gap_switch = 1.25_qp
+    !> 3/2 - start_end: the reach of the pieces below the peak
+    real(qp), parameter :: peak_reach = 1.5_qp - start_end
     integer, parameter :: max_steps = 300
     !> The apse's sinh map reaches `stretch` widths from the near-double root, in
     !! t = tanh(xi/2), where 1 - t (rounded absolutely) stays above 1/9, so that a node
@@ -145,10 +157,13 @@ module brachistochrone_repulsive
     !> The peak's sinh map (unbounded curves) reaches `peak_stretch` widths, in
     !! t = tanh(xi/4) (h/sqrt(beta) = sinh(xi) = 4t (1 + t^2)/(1 - t^2)^2): its poles
     !! t = +-1 stay twice as far (in xi) from the piece as in tanh(xi/2), so a piece
-    !! needs about half the nodes, and 1 - t stays above 1/6
-    real(qp), parameter :: peak_stretch = 32.0_qp
+    !! needs about half the nodes, and 1 - t stays above 1/4 (16 widths rather than
+    !! 32: 1.5% fewer binary128 operations on the field-timing grid)
+    real(qp), parameter :: peak_stretch = 16.0_qp
     !> sin(nu/2) where the apse's sinh map hands over to the nu map (the map's own
-    !! singularity is at sin(nu/2) = 1: at 1/2 its rule needs a third fewer nodes)
+    !! singularity is at sin(nu/2) = 1: at 1/2 its rule needs a third fewer nodes; at
+    !! 0.35 the two pieces need 1% fewer binary128 operations on the field-timing grid,
+    !! but the complete arches lose 0.7 digits against the mpmath references)
     real(qp), parameter :: apse_split = 0.5_qp
     integer, parameter :: want_angle = 1, want_length = 2, want_time = 3
     !> The radius argument that means the apse of a bounded curve (R itself may round to
@@ -157,6 +172,12 @@ module brachistochrone_repulsive
     !> Added to arch_first, arch_second: the solver's unknown is u = sqrt(R - rho) (next
     !! to the apse, where R - rho would be formed by cancellation from lambda)
     integer, parameter :: near_apse = 100
+    !> Next to the apse: |Theta(rho, rho) - psi| below this fraction of psi is below
+    !! what the hardware phase resolves (its noise about 1e-19 of psi): the root is
+    !! started from the square-root law and found by binary128 Newton steps
+    real(qp), parameter :: apse_resolution = 1.0e-16_qp
+    !> Binary128 Newton steps next to the apse at most (`apse_newton`)
+    integer, parameter :: apse_iterations = 6
     !> The unbounded branch next to the radial path (P below 1/2): the unknown is
     !! log P, P = 3 - g (theta ~ (2/3) ((1 - 1/rho) P)^(3/2): log g = log(3 - P) would
     !! carry P only to eps absolutely, K^2 ~ P^3/2 to eps/P relatively)
@@ -321,14 +342,14 @@ contains
         curve%gap = g
         curve%p = p
         curve%k2 = p**3/(2.0_qp*(1.0_qp + p))
-        curve%k = sqrt(curve%k2)
+        curve%k = fast_sqrt(curve%k2)
         if (g >= 0.0_qp) then
             curve%bounded = .false.
             curve%centre = 0.5_qp*p
             curve%width2 = p*p*g/(4.0_qp*(p + 1.0_qp))
         else
             curve%bounded = .true.
-            curve%split = p*sqrt(-g/(p + 1.0_qp))
+            curve%split = p*fast_sqrt(-g/(p + 1.0_qp))
             curve%apse_m1 = 2.0_qp/((p + 1.0_qp)*(p - 2.0_qp + curve%split))
             curve%apse = 1.0_qp + curve%apse_m1
             if (curve%apse_m1 < 0.25_qp) then
@@ -347,7 +368,7 @@ contains
         call set_from_gap(3.0_qp - p, curve)
         curve%p = p
         curve%k2 = p**3/(2.0_qp*(1.0_qp + p))
-        curve%k = sqrt(curve%k2)
+        curve%k = fast_sqrt(curve%k2)
         curve%centre = 0.5_qp*p
         curve%width2 = p*p*curve%gap/(4.0_qp*(p + 1.0_qp))
     end subroutine set_from_p
@@ -358,17 +379,17 @@ contains
         real(qp) :: big_r, s, e
         big_r = 1.0_qp + apse_m1
         e = apse_gap
-        s = sqrt((big_r + 3.0_qp)/apse_m1)
+        s = fast_sqrt((big_r + 3.0_qp)/apse_m1)
         curve%bounded = .true.
         curve%apse = big_r
         curve%apse_m1 = apse_m1
         curve%apse_gap = e
         curve%split = 2.0_qp*big_r*e/(apse_m1*(s + 3.0_qp))
         curve%gap = -4.0_qp*e*e/(apse_m1*(s + 3.0_qp)* &
-                                 (sqrt((big_r + 3.0_qp)*apse_m1) + 3.0_qp - big_r))
+                                 (fast_sqrt((big_r + 3.0_qp)*apse_m1) + 3.0_qp - big_r))
         curve%p = 2.0_qp*big_r + curve%split
         curve%k2 = big_r**3/(2.0_qp*apse_m1)
-        curve%k = sqrt(curve%k2)
+        curve%k = fast_sqrt(curve%k2)
     end subroutine set_bounded
 
     !> The integrand of one piece (`brachistochrone_repulsive_panels%integrands`).
@@ -447,11 +468,14 @@ contains
         if (curve%bounded) then
             ! R - r from 3 - 2r (exact near 3/2) and the stored 3 - 2R: R itself may not
             ! be representable next to 3/2 (R = 3/2 - d/2 with d below eps)
-            if (r == the_apse .or. r >= curve%apse) then
-                r_gap = 0.0_qp    ! the apse (R itself may be rounded: r = R is the apse)
+            if (r == the_apse) then
+                r_gap = 0.0_qp
             else if (curve%r_gap >= 0.0_qp .and. r == curve%r_gap_radius) then
+                ! kept exactly (R itself rounds to r when R - r is below its rounding)
                 r_gap = curve%r_gap
-            else if (r > start_end) then
+            else if (r >= curve%apse) then
+                r_gap = 0.0_qp    ! the apse (R itself may be rounded: r = R is the apse)
+            else if (r > gap_switch) then
                 r_gap = 0.5_qp*((3.0_qp - 2.0_qp*r) - curve%apse_gap)
             else
                 r_gap = curve%apse_m1 - (r - 1.0_qp)
@@ -496,10 +520,10 @@ contains
         ! distances to the peak a = 3/2 - g/2 formed from 3/2 - r (exact near 3/2) and g,
         ! never from a rounded a: the peak's height 1/sqrt(beta) would amplify that
         associate (g2 => 0.5_qp*curve%gap)
-            if (g2 < 0.25_qp) call peak_pieces(pieces, n, piece_below, &
-                                               max((1.5_qp - r) - g2, 0.0_qp), 0.25_qp - g2)
+            if (g2 < peak_reach) call peak_pieces(pieces, n, piece_below, &
+                                               max((1.5_qp - r) - g2, 0.0_qp), peak_reach - g2)
             if ((1.5_qp - r) - g2 < 0.0_qp) call peak_pieces(pieces, n, piece_above, &
-                    max(g2 - 0.25_qp, 0.0_qp), (min(r, far_start) - 1.5_qp) + g2)
+                    max(g2 - peak_reach, 0.0_qp), (min(r, far_start) - 1.5_qp) + g2)
         end associate
         if (r > far_start) call add(pieces, n, piece_far, .false., far_start/r, 1.0_qp)
     contains
@@ -509,7 +533,7 @@ contains
             real(qp), intent(in) :: x
             real(qp) :: y
             if (rough .and. range(1.0_xp) >= range(1.0_qp)) then
-                y = real(sqrt(max(real(x, xp), 0.0_xp)), qp)
+                y = quad_real(sqrt(max(hardware_real(x), 0.0_xp)))
             else
                 y = root(x)
             end if
@@ -521,8 +545,8 @@ contains
             real(qp) :: t
             real(xp) :: sx
             if (rough .and. range(1.0_xp) >= range(1.0_qp)) then
-                sx = real(s, xp)
-                t = real(sx/(1.0_xp + sqrt(1.0_xp + sx*sx)), qp)
+                sx = hardware_real(s)
+                t = quad_real(sx/(1.0_xp + sqrt(1.0_xp + sx*sx)))
             else
                 t = half_tanh(s)
             end if
@@ -535,9 +559,9 @@ contains
             real(qp) :: t
             real(xp) :: sx, ch
             if (range(1.0_xp) >= range(1.0_qp)) then
-                sx = real(s, xp)
+                sx = hardware_real(s)
                 ch = sqrt(0.5_xp*(1.0_xp + sqrt(1.0_xp + sx*sx)))
-                t = real(0.5_xp*sx/(ch*(1.0_xp + ch)), qp)
+                t = quad_real(0.5_xp*sx/(ch*(1.0_xp + ch)))
             else
                 t = quarter_tanh(s)
             end if
@@ -566,13 +590,15 @@ contains
             integer, intent(in) :: kind
             real(qp), intent(in) :: h_lo, h_hi
             real(qp) :: width, h_mid
+            real(xp) :: width_x
             if (.not. (h_hi > h_lo)) return
             width = rt(curve%width2)
             if (curve%width2 > 0.0_qp .and. h_lo < peak_stretch*width) then
                 h_mid = width*peak_stretch
+                width_x = hardware_real(width)
                 call add(pieces, n, kind, .true., &
-                         on_map(qt(real(real(h_lo, xp)/real(width, xp), qp)), h_lo, width), &
-                         on_map(qt(min(real(real(h_hi, xp)/real(width, xp), qp), &
+                         on_map(qt(quad_real(hardware_real(h_lo)/width_x)), h_lo, width), &
+                         on_map(qt(min(quad_real(hardware_real(h_hi)/width_x), &
                                        peak_stretch)), min(h_hi, h_mid), width))
                 if (h_hi > h_mid) call add(pieces, n, kind, .false., h_mid, h_hi)
             else
@@ -590,10 +616,10 @@ contains
         type(panel_piece), intent(inout) :: pieces(max_pieces)
         integer, intent(inout) :: n
         real(xp) :: gap, rm1, d, c, s_mid, sin_mid, v_mid, v_r, big, r_m1
-        gap = real(r_gap, xp)
-        rm1 = real(curve%apse_m1, xp)
-        d = real(curve%split, xp)
-        r_m1 = real(r - 1.0_qp, xp)
+        gap = hardware_real(r_gap)
+        rm1 = hardware_real(curve%apse_m1)
+        d = hardware_real(curve%split)
+        r_m1 = hardware_real(r - 1.0_qp)
         c = sqrt(d/rm1)
         s_mid = min(real(stretch, xp), real(apse_split, xp)/c)
         sin_mid = min(c*s_mid, 1.0_xp)
@@ -605,14 +631,14 @@ contains
             v_r = sqrt(gap)/(sqrt(r_m1) + big)
         end if
         if (v_r < v_mid) then
-            call add(pieces, n, piece_apse, .false., real(half_tanh_xp(sqrt(gap/d)), qp), &
-                     real(half_tanh_xp(s_mid), qp))
-            call add(pieces, n, piece_arch, .false., real(v_mid, qp), 1.0_qp)
+            call add(pieces, n, piece_apse, .false., quad_real(half_tanh_xp(sqrt(gap/d))), &
+                     quad_real(half_tanh_xp(s_mid)))
+            call add(pieces, n, piece_arch, .false., quad_real(v_mid), 1.0_qp)
         else if (r_m1 < gap) then
             call add(pieces, n, piece_arch_start, .false., 0.0_qp, &
-                     real(sqrt(r_m1)/(sqrt(gap) + big), qp))
+                     quad_real(sqrt(r_m1)/(sqrt(gap) + big)))
         else
-            call add(pieces, n, piece_arch, .false., real(v_r, qp), 1.0_qp)
+            call add(pieces, n, piece_arch, .false., quad_real(v_r), 1.0_qp)
         end if
     end subroutine bounded_pieces_xp
 
@@ -937,7 +963,7 @@ contains
         type(repulsive_curve), intent(out) :: curve
         real(qp), intent(in) :: rho
         real(xp) :: x, e
-        x = real(lambda, xp)
+        x = hardware_real(lambda)
         e = exp(x)
         if (arch > near_apse) then
             call set_near_apse(rho, real(x*x, qp), curve)
@@ -958,7 +984,7 @@ contains
         type(repulsive_curve), intent(out) :: curve
         real(xp) :: big_r, s, split, k2
         if (range(1.0_xp) < range(1.0_qp)) then
-            call set_bounded(real(apse_m1, qp), real(apse_gap, qp), curve)
+            call set_bounded(quad_real(apse_m1), quad_real(apse_gap), curve)
             return
         end if
         big_r = 1.0_xp + apse_m1
@@ -966,15 +992,15 @@ contains
         split = 2.0_xp*big_r*apse_gap/(apse_m1*(s + 3.0_xp))
         k2 = big_r**3/(2.0_xp*apse_m1)
         curve%bounded = .true.
-        curve%apse_m1 = real(apse_m1, qp)
+        curve%apse_m1 = quad_real(apse_m1)
         curve%apse = 1.0_qp + curve%apse_m1
-        curve%apse_gap = real(apse_gap, qp)
-        curve%split = real(split, qp)
-        curve%gap = real(-4.0_xp*apse_gap*apse_gap/(apse_m1*(s + 3.0_xp)* &
-                         (sqrt((big_r + 3.0_xp)*apse_m1) + 3.0_xp - big_r)), qp)
-        curve%p = real(2.0_xp*big_r + split, qp)
-        curve%k2 = real(k2, qp)
-        curve%k = real(sqrt(k2), qp)
+        curve%apse_gap = quad_real(apse_gap)
+        curve%split = quad_real(split)
+        curve%gap = quad_real(-4.0_xp*apse_gap*apse_gap/(apse_m1*(s + 3.0_xp)* &
+                              (sqrt((big_r + 3.0_xp)*apse_m1) + 3.0_xp - big_r)))
+        curve%p = quad_real(2.0_xp*big_r + split)
+        curve%k2 = quad_real(k2)
+        curve%k = quad_real(sqrt(k2))
     end subroutine set_bounded_rough
 
     !> `set_from_gap` of an unbounded curve (g > 0) in hardware precision: the
@@ -985,20 +1011,20 @@ contains
         real(xp), intent(in), optional :: p_exact !! P = 3 - g itself (`near_radial`)
         real(xp) :: p, k2
         if (range(1.0_xp) < range(1.0_qp)) then
-            call set_from_gap(real(g, qp), curve)
-            if (present(p_exact)) call set_from_p(real(p_exact, qp), curve)
+            call set_from_gap(quad_real(g), curve)
+            if (present(p_exact)) call set_from_p(quad_real(p_exact), curve)
             return
         end if
         p = 3.0_xp - g
         if (present(p_exact)) p = p_exact
         k2 = p**3/(2.0_xp*(1.0_xp + p))
-        curve%gap = real(g, qp)
-        curve%p = real(p, qp)
-        curve%k2 = real(k2, qp)
-        curve%k = real(sqrt(k2), qp)
+        curve%gap = quad_real(g)
+        curve%p = quad_real(p)
+        curve%k2 = quad_real(k2)
+        curve%k = quad_real(sqrt(k2))
         curve%bounded = .false.
-        curve%centre = real(0.5_xp*p, qp)
-        curve%width2 = real(p*p*g/(4.0_xp*(p + 1.0_xp)), qp)
+        curve%centre = quad_real(0.5_xp*p)
+        curve%width2 = quad_real(p*p*g/(4.0_xp*(p + 1.0_xp)))
     end subroutine set_from_gap_rough
 
     pure subroutine mismatch_evaluate(self, x, f, df, status)
@@ -1138,8 +1164,12 @@ contains
             integer, intent(out) :: st
             type(panel_piece), intent(out) :: pieces(max_pieces)
             integer, intent(out) :: n
-            real(xp), parameter :: h = 1.0e-40_xp
             complex(xp) :: cc(7), lower_c(max_pieces), upper_c(max_pieces)
+            real(xp) :: h
+            ! the step 1e-40, next to the apse far below u = sqrt(R - rho) (the end
+            ! sqrt(R - r) = u + i h is analytic only for h << u)
+            h = 1.0e-40_xp
+            if (curve%r_gap > 0.0_qp) h = min(h, 1.0e-20_xp*sqrt(real(curve%r_gap, xp)))
             v = 0.0_qp
             call plan_pieces(curve, radius, .false., pieces, n, c%span)
             call complex_step(curve, radius, h, c%span, pieces(1:n), cc, lower_c, upper_c, &
@@ -1247,11 +1277,13 @@ contains
               (0.0_xp, 0.0_xp), (0.0_xp, 0.0_xp), rm1, d]
         cc(1:2) = [real_part(cc(1), curve%k), real_part(cc(2), curve%p)]
         ! as in plan_pieces (R - r with its binary128 real part)
-        if (r == the_apse .or. r >= curve%apse) then
+        if (r == the_apse) then
             rg = 0.0_xp
         else if (curve%r_gap >= 0.0_qp .and. r == curve%r_gap_radius) then
             rg = cmplx(real(curve%r_gap, xp), 2.0_xp*sqrt(real(curve%r_gap, xp))*h, xp)
-        else if (r > start_end) then
+        else if (r >= curve%apse) then
+            rg = 0.0_xp
+        else if (r > gap_switch) then
             rg = real_part(-0.5_xp*e, 0.5_qp*((3.0_qp - 2.0_qp*r) - curve%apse_gap))
         else
             rg = real_part(rm1, curve%apse_m1 - (r - 1.0_qp))
@@ -1295,10 +1327,10 @@ contains
             if (kind == piece_below) then
                 h_lo = 0.0_xp
                 if ((1.5_qp - r) - ac > 0.0_qp) h_lo = real_part(a, (1.5_qp - r) - ac)
-                h_hi = real_part(a, 0.25_qp - ac)
+                h_hi = real_part(a, peak_reach - ac)
             else
                 h_lo = 0.0_xp
-                if (ac > 0.25_qp) h_lo = real_part(-a, ac - 0.25_qp)
+                if (ac > peak_reach) h_lo = real_part(-a, ac - peak_reach)
                 h_hi = real_part(-a, (min(r, far_start) - 1.5_qp) + ac)
             end if
             if (stretched) then
@@ -1357,7 +1389,7 @@ contains
         type(repulsive_solution), intent(inout) :: solution
         logical, intent(out) :: done
         real(qp) :: lo, f_lo, hi, f_hi, x0, fx0, x1, x, h, f_plus, f_minus, slope
-        real(qp) :: curvature, v0(3), v1(3), f0, f1, floor, rate(3), slopes(2), dx, conserved
+        real(qp) :: curvature, v0(3), v1(3), f0, f1, floor, rate(3), slopes(2), dx
         real(qp) :: scale, check
         integer :: status, steps, stat(2)
         type(repulsive_curve) :: curve
@@ -1370,7 +1402,15 @@ contains
         f_hi = f_top
         lo = hi
         steps = 0
-        if (arch > near_apse) then
+        if (arch > near_apse .and. abs(f_top) <= apse_resolution*target) then
+            ! theta - target below what the hardware phase resolves: the root from the
+            ! square-root law (f = f_top -+ 2 A u + O(u^2): f there is 0 to O(u^2))
+            lo = 0.0_qp
+            hi = sqrt(0.25_qp*(3.0_qp - 2.0_qp*rho))
+            x0 = min(abs(f_top)/(2.0_qp*sqrt((rho - 1.0_qp)/(rho*(3.0_qp - 2.0_qp*rho)))), &
+                     0.5_qp*hi)
+            fx0 = 0.0_qp
+        else if (arch > near_apse) then
             call near_apse_bracket(rho, target, arch, f_top, rules, lo, f_lo, hi, f_hi, &
                                    steps, status)
             if (status /= status_ok) return
@@ -1389,9 +1429,12 @@ contains
                 f_hi = f_lo
             end do
         end if
-        call falsi_xp(rho, target, arch, rules, lo, f_lo, hi, f_hi, x0, fx0, steps, status, &
-                      seen)
-        if (status /= status_ok) return
+        seen%n = 0
+        if (.not. (arch > near_apse .and. abs(f_top) <= apse_resolution*target)) then
+            call falsi_xp(rho, target, arch, rules, lo, f_lo, hi, f_hi, x0, fx0, steps, &
+                          status, seen)
+            if (status /= status_ok) return
+        end if
         stat = status_ok
         call history_slope(seen, x0, fx0, lambda_scale(arch, x0), slope, curvature, h, found)
         if (arch < near_apse .and. .not. found) then
@@ -1433,34 +1476,28 @@ contains
         end if
         steps = steps + 2
         if (any(stat /= status_ok)) return
+        if (arch > near_apse) then
+            call apse_newton(rho, target, arch, rules, [x0, lo, hi], slope, &
+                             curvature, check*abs(slope) + 1.0e-17_qp*target/h, steps, &
+                             solution, done)
+            return
+        end if
         ! one binary128 evaluation, the Newton step on the complex-step slopes
         call curve_near_lambda(arch, x0, curve, rho)
         call lambda_slopes(arch, curve, rho, rules, slopes, stat(2), v0, stat(1))
         f0 = v0(1) - target
         if (any(stat /= status_ok)) return
         steps = steps + 1
-        ! the error of x that moves theta, s or t by a rounding (next to the apse, where
-        ! they vary like sqrt(R - rho) = exp(x/2), far more than a rounding of x)
+        ! the error of x that moves theta, s or t by a rounding
         scale = lambda_scale(arch, x0)
-        if (arch > near_apse) scale = 1.0_qp/max(abs(slopes(1))/target, &
-            abs(slopes(2)/v0(2)), abs(curve%k*slopes(1)/v0(3)), tiny(1.0_qp))
         ! the cross-check against the central difference, to its rounding noise
         if (abs(slopes(1) - slope) <= check*abs(slopes(1)) + 1.0e-17_qp*target/h) then
             dx = -f0/slopes(1)
             x = x0 + dx
             if (x > lo .and. x < hi .and. 1.0e-17_qp*abs(dx) + curvature*dx*dx <= &
                 2.0_qp*eps_qp*scale) then
-                call curve_after_step(arch, curve, dx, x, solution%curve, rho)
-                ! (K at the midpoint to 1e-19 is ample: it multiplies f0, below 1e-16)
-                call rough_curve_of_lambda(arch, x0 + 0.5_qp*dx, curve, rho)
-                conserved = curve%k
-                solution%arch = mod(arch, near_apse)
-                solution%angle = v0(1) + slopes(1)*dx
-                solution%arclength = v0(2) + slopes(2)*dx
-                ! Hamilton-Jacobi: at fixed rho, dt/dtheta = K, the conserved momentum
-                solution%time = v0(3) - conserved*f0
-                solution%steps = steps
-                solution%status = status_ok
+                call newton_solution(rho, arch, curve, x0, dx, v0, slopes, f0, steps, &
+                                     solution)
                 done = .true.
                 return
             end if
@@ -1504,6 +1541,72 @@ contains
         solution%status = status_ok
         done = .true.
     end subroutine solve_branch_fast
+
+    !> Next to the apse (the unknown u = sqrt(R - rho), R - rho = u^2 kept exactly): Newton
+    !! steps in u on binary128 evaluations of theta, s, t with the complex-step slopes
+    !! (`lambda_slopes`) from u = start(1) (the hardware phase's root, or the square-root
+    !! law's when theta - target is below what that phase resolves), each step certified
+    !! as `solve_branch_fast`'s: accepted when 1e-17 |du| + curvature du^2 is below a
+    !! rounding of u (the u that moves theta, s or t by a rounding), else taken and
+    !! evaluated again (at most `apse_iterations`; theta is analytic in u next to u = 0,
+    !! so each step squares the relative error). `slope`: the hardware phase's
+    !! difference slope, which the first complex-step slope must match to `tolerance`.
+    !! `done` false on any failure or a step leaving (start(2), start(3)).
+    pure subroutine apse_newton(rho, target, arch, rules, start, slope, curvature, &
+                                tolerance, steps, solution, done)
+        real(qp), intent(in) :: rho, target, start(3), slope, curvature, tolerance
+        integer, intent(in) :: arch
+        type(panel_rules), intent(in) :: rules
+        integer, intent(inout) :: steps
+        type(repulsive_solution), intent(inout) :: solution
+        logical, intent(out) :: done
+        type(repulsive_curve) :: curve
+        real(qp) :: u, v(3), slopes(2), f, dx, scale
+        integer :: stat(2), i
+        done = .false.
+        u = start(1)
+        do i = 1, apse_iterations
+            call curve_of_lambda(arch, u, curve, rho)
+            call lambda_slopes(arch, curve, rho, rules, slopes, stat(2), v, stat(1))
+            steps = steps + 1
+            if (any(stat /= status_ok) .or. slopes(1) == 0.0_qp) return
+            if (i == 1 .and. .not. abs(slopes(1) - slope) <= tolerance) return
+            f = v(1) - target
+            ! the error of u that moves theta, s or t by a rounding
+            scale = 1.0_qp/max(abs(slopes(1))/target, abs(slopes(2)/v(2)), &
+                               abs(curve%k*slopes(1)/v(3)), tiny(1.0_qp))
+            dx = -f/slopes(1)
+            if (.not. (u + dx > start(2) .and. u + dx < start(3))) return
+            if (1.0e-17_qp*abs(dx) + curvature*dx*dx <= 2.0_qp*eps_qp*scale) then
+                call newton_solution(rho, arch, curve, u, dx, v, slopes, f, steps, &
+                                     solution)
+                done = .true.
+                return
+            end if
+            u = u + dx
+        end do
+    end subroutine apse_newton
+
+    !> The solution of the certified Newton step dx from x0 (curve, values v0 and
+    !! slopes there, f0 = theta - target): theta and s along the slopes, t by
+    !! Hamilton-Jacobi (at fixed rho dt/dtheta = K, the conserved momentum).
+    pure subroutine newton_solution(rho, arch, curve, x0, dx, v0, slopes, f0, steps, &
+                                    solution)
+        real(qp), intent(in) :: rho, x0, dx, v0(3), slopes(2), f0
+        integer, intent(in) :: arch, steps
+        type(repulsive_curve), intent(in) :: curve
+        type(repulsive_solution), intent(inout) :: solution
+        type(repulsive_curve) :: middle
+        call curve_after_step(arch, curve, dx, x0 + dx, solution%curve, rho)
+        ! (K at the midpoint to 1e-19 is ample: it multiplies f0, below 1e-16)
+        call rough_curve_of_lambda(arch, x0 + 0.5_qp*dx, middle, rho)
+        solution%arch = mod(arch, near_apse)
+        solution%angle = v0(1) + slopes(1)*dx
+        solution%arclength = v0(2) + slopes(2)*dx
+        solution%time = v0(3) - middle%k*f0
+        solution%steps = steps
+        solution%status = status_ok
+    end subroutine newton_solution
 
     !> The bracket of u = sqrt(R - rho) next to the apse, from the square-root law there:
     !! theta(rho) = Theta(rho, rho) -+ 2 A u + O(u^2) on the first (second) half-arch,
@@ -1878,8 +1981,15 @@ contains
         real(qp), intent(in) :: rho, target
         below_range = rho > 1.0_qp .and. target > 0.0_qp
         if (.not. below_range) return
-        below_range = 2.0_qp*log(1.5_qp*target) - log(2.0_qp) &
-            - 3.0_qp*log((rho - 1.0_qp)/rho) < log(tiny(1.0_qp))
+        ! in hardware precision where its exponent range is binary128's (x87): the
+        ! threshold is far from any rounding of the logarithms
+        if (range(1.0_xp) >= range(1.0_qp)) then
+            below_range = 2.0_xp*log(1.5_xp*real(target, xp)) - log(2.0_xp) &
+                - 3.0_xp*log(real((rho - 1.0_qp)/rho, xp)) < real(log(tiny(1.0_qp)), xp)
+        else
+            below_range = 2.0_qp*log(1.5_qp*target) - log(2.0_qp) &
+                - 3.0_qp*log((rho - 1.0_qp)/rho) < log(tiny(1.0_qp))
+        end if
     end function below_range
 
     !> One target on one branch: the fast path, else the adaptive one.

@@ -30,7 +30,7 @@ module brachistochrone_repulsive_panels
     use brachistochrone_kinds, only: qp, xp
     use brachistochrone_status, only: status_ok, status_no_convergence
     use brachistochrone_quadrature, only: gauss_legendre_rule, gauss_legendre
-    use brachistochrone_fast_math, only: inverse_sqrt, hardware_real, quad_real
+    use brachistochrone_fast_math, only: inverse_sqrt, hardware_real, quad_real, fast_sqrt
     use, intrinsic :: iso_fortran_env, only: real64
     implicit none
     private
@@ -111,22 +111,22 @@ module brachistochrone_repulsive_panels
 
 contains
 
-    !> The constants of `integrands` for one curve.
+    !> The constants of `integrands` for one curve (square roots by `fast_sqrt`).
     pure function prepare(c) result(pc)
         type(panel_curve), intent(in) :: c
         type(prepared_curve) :: pc
         pc%c = c
         pc%k_root2 = c%k*sqrt2
-        pc%root_span = sqrt(c%span)
+        pc%root_span = fast_sqrt(c%span)
         pc%span_root_span = c%span*pc%root_span
         pc%start_factor = [pc%k_root2*2.0_qp*pc%span_root_span, 2.0_qp*c%span, &
                            sqrt2*pc%root_span]
-        pc%root_beta = sqrt(c%beta)
+        pc%root_beta = fast_sqrt(c%beta)
         pc%a_m1 = c%a - 1.0_qp
         if (c%bounded) then
-            pc%root_rm1 = sqrt(c%rm1)
+            pc%root_rm1 = fast_sqrt(c%rm1)
             pc%inverse_root_rm1 = 1.0_qp/pc%root_rm1
-            pc%root_ratio = sqrt(c%d/c%rm1)
+            pc%root_ratio = fast_sqrt(c%d/c%rm1)
         end if
         pc%root_beta4 = 4.0_qp*pc%root_beta
         pc%root_ratio2 = 2.0_qp*pc%root_ratio
@@ -743,8 +743,9 @@ contains
         complex(real64), intent(inout) :: points(:)
         integer, intent(inout) :: np
         complex(real64), intent(in) :: point
-        ! points at infinity (or not finite) bound nothing
-        if (.not. abs(point) < huge(1.0_real64)) return
+        ! points at infinity (or not finite) bound nothing (no hypot: the parts)
+        if (.not. (abs(real(point)) < huge(1.0_real64) .and. &
+                   abs(aimag(point)) < huge(1.0_real64))) return
         if (np < size(points)) then
             np = np + 1
             points(np) = point
