@@ -2909,9 +2909,10 @@ contains
         if (.not. prob%use_u) then
             ! the quad phase in R itself: y = log R resolves R only to eps |log R|
             prob%use_r = .true.
-            x = exp(x)
+            ! (iterates, not results: `fast_exp`'s few ulps are far below their error)
+            x = fast_exp(x)
             slope = slope/real(x, real64)
-            lo = exp(lo)
+            lo = fast_exp(lo)
             hi = half
         end if
         if (edge) then
