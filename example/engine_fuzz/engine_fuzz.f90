@@ -13,6 +13,7 @@
 !! Endpoints within 1e-10 of the edge (second half-arch, R-bar > 0) are checked as
 !! solutions: the largest |Upsilon(R-bar) - psi| / (eps psi), Upsilon by `half_arch`.
 program engine_fuzz
+    use brachistochrone_run_support, only: sort_times
     use brachistochrone_kinds, only: qp, eps_qp
     use brachistochrone_speed_laws, only: power_law, logarithmic_law
     use brachistochrone_central_force, only: central_force_model, new_central_force_model
@@ -102,7 +103,7 @@ program engine_fuzz
         end if
     end do
     order = times(1:solved)
-    call sort(order)
+    call sort_times(order)
     retime_max = 0.0
     do i = 1, solved
         if (times(i) < order(max(1, solved - retimed + 1))) cycle
@@ -112,7 +113,7 @@ program engine_fuzz
             call cpu_time(t1)
             again(k) = t1 - t0
         end do
-        call sort(again)
+        call sort_times(again)
         if (again(3) > retime_max) then
             retime_max = again(3)
             worst_rho = rhos(i)
@@ -129,20 +130,4 @@ program engine_fuzz
         real(worst_rho), real(1.0_qp - worst_psi/limit), ' steps ', worst_steps
     print '(a,i0,a,f7.2)', '   edge endpoints checked ', checked, &
         ', largest |Upsilon(R-bar) - psi|/(eps psi) ', real(residual)
-contains
-    subroutine sort(a)
-        real, intent(inout) :: a(:)
-        integer :: i, j
-        real :: x
-        do i = 2, size(a)
-            x = a(i)
-            j = i - 1
-            do while (j >= 1)
-                if (a(j) <= x) exit
-                a(j + 1) = a(j)
-                j = j - 1
-            end do
-            a(j + 1) = x
-        end do
-    end subroutine sort
 end program engine_fuzz

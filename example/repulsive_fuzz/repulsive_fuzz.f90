@@ -17,6 +17,7 @@
 !! but a count: for operation counts (`perf stat` on libgcc's binary128 routines, runs
 !! with two REPEATS subtracted); `grid 1 steps` prints each endpoint's arch and evaluations.
 program repulsive_fuzz
+    use brachistochrone_run_support, only: sort_times
     use brachistochrone_kinds, only: qp, pi
     use brachistochrone_status, only: status_ok
     use brachistochrone_solution, only: endpoint_solution
@@ -140,7 +141,7 @@ program repulsive_fuzz
         end if
     end do
     order = times
-    call sort(order)
+    call sort_times(order)
     ! the slowest endpoints again, the median of 5 solves each
     retime_max = 0.0
     worst = 1
@@ -152,7 +153,7 @@ program repulsive_fuzz
             call cpu_time(t1)
             again(solved) = t1 - t0
         end do
-        call sort(again)
+        call sort_times(again)
         if (again(3) > retime_max) then
             retime_max = again(3)
             worst = i
@@ -165,24 +166,5 @@ program repulsive_fuzz
     write (*, '(a,es10.3,a,f0.2,a,es12.5,a,es12.5)') 'retimed max s: ', retime_max, &
         ', retimed max/median: ', retime_max/order((count + 1)/2), ' at rho = ', &
         rhos(worst), ' psi = ', psis(worst)
-
-contains
-
-    !> Insertion sort (a few thousand values).
-    pure subroutine sort(a)
-        real, intent(inout) :: a(:)
-        real :: key
-        integer :: i, j
-        do i = 2, size(a)
-            key = a(i)
-            j = i - 1
-            do while (j >= 1)
-                if (a(j) <= key) exit
-                a(j + 1) = a(j)
-                j = j - 1
-            end do
-            a(j + 1) = key
-        end do
-    end subroutine sort
 
 end program repulsive_fuzz

@@ -7,7 +7,7 @@ module brachistochrone_run_support
     implicit none
     private
 
-    public :: timestamp, progress_type, median
+    public :: timestamp, progress_type, median, sort_times
 
     !> Progress of a long loop, reported on stderr (never stdout): percent, rate, time
     !! left; the first report after 2 s, then every 5 s. Safe to step from OpenMP threads.
@@ -166,5 +166,23 @@ contains
         end do
         middle = sorted((size(sorted) + 1)/2)
     end function median
+
+    !> Sort CPU times (default real, as `cpu_time` gives them) ascending in place
+    !! (insertion sort: the timing examples' few thousand values).
+    pure subroutine sort_times(times)
+        real, intent(inout) :: times(:) !! the values, sorted on return
+        real :: key
+        integer :: i, j
+        do i = 2, size(times)
+            key = times(i)
+            j = i - 1
+            do while (j >= 1)
+                if (times(j) <= key) exit
+                times(j + 1) = times(j)
+                j = j - 1
+            end do
+            times(j + 1) = key
+        end do
+    end subroutine sort_times
 
 end module brachistochrone_run_support
