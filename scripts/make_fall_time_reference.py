@@ -15,7 +15,9 @@ binary128 moves t0 by t0'(delta) delta eps, which the test allows for).
 """
 import mpmath as mp
 
-EXPONENTS = ["1.5", "1.75", "2.5", "4.3", "6", "10", "32"]
+# (the first: n = 1 + 2^-100 to 51 digits, read as exactly that binary128 number)
+EXPONENTS = ["1.00000000000000000000000000000078886090522101180541", "1.0000000001",
+             "1.000001", "1.1", "1.3", "1.5", "1.75", "2.5", "4.3", "6", "10", "32"]
 DELTAS = ["1e-34", "1e-12", "0.001", "0.04", "0.3", "1", "2.5", "7", "40"]
 
 
