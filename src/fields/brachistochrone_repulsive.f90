@@ -1394,7 +1394,7 @@ contains
         integer :: status, steps, stat(2)
         type(repulsive_curve) :: curve
         type(iterates) :: seen
-        logical :: found
+        logical :: found, from_law
         done = .false.
         if (f_top == 0.0_qp) return
         floor = log(critical_floor)
@@ -1402,9 +1402,10 @@ contains
         f_hi = f_top
         lo = hi
         steps = 0
-        if (arch > near_apse .and. abs(f_top) <= apse_resolution*target) then
-            ! theta - target below what the hardware phase resolves: the root from the
-            ! square-root law (f = f_top -+ 2 A u + O(u^2): f there is 0 to O(u^2))
+        ! theta - target below what the hardware phase resolves next to the apse
+        from_law = arch > near_apse .and. abs(f_top) <= apse_resolution*target
+        if (from_law) then
+            ! the root from the square-root law (f = f_top -+ 2 A u + O(u^2): f there is 0 to O(u^2))
             lo = 0.0_qp
             hi = sqrt(0.25_qp*(3.0_qp - 2.0_qp*rho))
             x0 = min(abs(f_top)/(2.0_qp*sqrt((rho - 1.0_qp)/(rho*(3.0_qp - 2.0_qp*rho)))), &
@@ -1430,7 +1431,7 @@ contains
             end do
         end if
         seen%n = 0
-        if (.not. (arch > near_apse .and. abs(f_top) <= apse_resolution*target)) then
+        if (.not. from_law) then
             call falsi_xp(rho, target, arch, rules, lo, f_lo, hi, f_hi, x0, fx0, steps, &
                           status, seen)
             if (status /= status_ok) return

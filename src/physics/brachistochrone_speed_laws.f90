@@ -183,7 +183,6 @@ module brachistochrone_speed_laws
     !! the Chebyshev coefficients in u in [-1, 1] (binary128 and hardware precision), the
     !! last one above 2^-66 (head) and the last one kept (top), and t0(100) (far)
     type :: fall_pieces
-        logical :: built = .false.
         real(qp) :: c(0:mild_degree, 0:mild_pieces - 1) = 0.0_qp
         real(xp) :: c_xp(0:mild_degree, 0:mild_pieces - 1) = 0.0_xp
         integer :: head(0:mild_pieces - 1) = 0, top(0:mild_pieces - 1) = 0
@@ -576,7 +575,6 @@ contains
         end do
         pieces%c_xp = real(pieces%c, xp)
         pieces%far = power_fall_time(a, real(mild_pieces**2, qp), limit)
-        pieces%built = .true.
     end subroutine build_fall_pieces
 
     !> c_i = (2/N) sum_j'' f_j T_i(u_j) (c_0, c_N and the terms j = 0, N halved) at the
@@ -1717,6 +1715,14 @@ contains
         end if
     end subroutine table_exp_xp
 
+    !> The largest y for which exp(-y) is normal in the kind the early phase's terms take
+    !! it in: double precision where `rough`, else the hardware kind (`table_exp_xp`).
+    elemental function normal_reach(rough) result(y)
+        logical, intent(in) :: rough
+        real(xp) :: y
+        y = merge(700.0_xp, 11000.0_xp, rough)
+    end function normal_reach
+
     !> exp(shift - y) from exp(-y) = `decay` at hand: exp(shift) decay where the caller
     !! gives exp(shift) (`exp_shift` > 0) and decay (0: not normal, or not at hand), else
     !! `scaled_exp`.
@@ -1803,7 +1809,7 @@ contains
             end if
         end if
         ! (exp(-2 lambda), exp(-a lambda) normal: from double precision where `rough`)
-        top = merge(700.0_xp, 11000.0_xp, rough)
+        top = normal_reach(rough)
         if (.not. known) then
             if (c(3)*delta <= 0.25_xp .and. lambda <= delta) then
                 ! nearer the apse: exp(-a lambda) E(delta) = E(Lambda) - E(lambda)
@@ -1849,7 +1855,7 @@ contains
         one_minus_q = om2 + e2*lambda/c(1)
         ! exp(-lambda) = sqrt(exp(-2 lambda)) where that is normal
         decay = 0.0_xp
-        if (2.0_xp*lambda <= merge(700.0_xp, 11000.0_xp, rough)) decay = sqrt(e2)
+        if (2.0_xp*lambda <= normal_reach(rough)) decay = sqrt(e2)
         g = sqrt(delta/(one_minus_q*c(1)))*scaled_decay(shift, lambda, decay, rough, exp_shift)
         log_slope = lambda/(delta*c(1))
     end subroutine logarithmic_theta_terms_xp
@@ -1883,7 +1889,7 @@ contains
         one_minus_q = om2/c(2)
         ! exp(-lambda) = sqrt(exp(-2 lambda)) where that is normal
         decay = 0.0_xp
-        if (2.0_xp*lambda <= merge(700.0_xp, 11000.0_xp, rough)) decay = sqrt(e2)
+        if (2.0_xp*lambda <= normal_reach(rough)) decay = sqrt(e2)
         g = sqrt(p_x/om2)*scaled_decay(shift, lambda, decay, rough, exp_shift)
         log_slope = 2.0_xp*x2*om2/(p_x*c(2))
     end subroutine harmonic_theta_terms_xp
