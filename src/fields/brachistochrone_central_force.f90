@@ -2624,7 +2624,8 @@ contains
     !! alone would need several more full evaluations; the steps in y may be large (100
     !! and more: F' is n - 1 where A dominates). Also from the early phase's root (F, F'
     !! of the hardware-precision evaluation: `edge_steps`), where A is resolved only if
-    !! it is at least `share` of limit - Upsilon (default 1e-6).
+    !! it is at least `share` of limit - Upsilon (default 1e-6), and P by the rough rules
+    !! (12 digits: limit - Upsilon there is resolved to about 1e-9 of itself).
     pure subroutine edge_model_point(model, prob, y0, form, y_next, steps, share)
         type(central_force_model), intent(in) :: model
         type(endpoint_problem), intent(in) :: prob
@@ -2649,7 +2650,7 @@ contains
         part%psi = 1.0e-300_qp
         y = y0
         do k = 1, 8
-            call residual_xp(model, part, real(y, xp), .false., f, slope)
+            call residual_xp(model, part, real(y, xp), present(share), f, slope)
             steps = steps + 1
             p = exp(real(f, qp) + log(part%psi))
             p_slope = real(slope, qp)
