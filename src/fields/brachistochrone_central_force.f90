@@ -69,7 +69,8 @@
 !! phase resolves) starts from the slope next to u = 0 instead (`apse_start`). psi within
 !! 1e-10 of the sector's edge (below what the early phase resolves of limit - Upsilon):
 !! the early phase solves for limit - Upsilon = 1e-10 limit, then Newton steps on
-!! log((limit - Upsilon)/(limit - psi)) in log R from its tangent (`edge_steps`).
+!! log((limit - Upsilon)/(limit - psi)) in log R from the root of a model of its two
+!! parts (`edge_steps`, `edge_model_point`).
 !! Other laws: a double-precision phase (regula falsi with
 !! the Anderson-Bjorck correction) and quad-precision secant steps (`quad_phase`).
 module brachistochrone_central_force
@@ -2457,7 +2458,7 @@ contains
         else
             ! (Upsilon's curvature in log R is about 1/Lambda next to the sector's edge,
             ! in R about 1/R: the Newton step in log R errs far less)
-            x = x0 + x0*expm1_qp(dx)
+            x = log_step(x0, dx)
         end if
         if (.not. (x > lo .and. x < hi)) then
             if (prob%use_u .and. .not. prob%second) &
@@ -2539,11 +2540,14 @@ contains
     !! terms), F = log(D/(limit - psi)) is nearly linear and convex in y = log R. The early
     !! phase solved D = early_gap (resolved in hardware precision) at x = R1 with F'(y1) =
     !! early_slope; from there the root of F's tangent (right of R-bar by the convexity,
-    !! below lowest_log_r only if R-bar is below the binary128 range: `below_range`), then
-    !! Newton steps on F on the full rules (`final_step` with `previous`; far from the root
-    !! the next point from `edge_model_point`), kept inside the bracket [y_lo, y_hi] of
-    !! F's signs (y_hi = log hi at first) by bisection. Not `done`: x and the slope
-    !! d Upsilon/dR for the secant steps, [lo, hi] the bracket in R.
+    !! below lowest_log_r only if R-bar is below the binary128 range: `below_range`), but
+    !! the first full evaluation at the root of the model of `edge_model_point` from R1
+    !! where it applies (the tangent's root may be far from R-bar: F' is (n + 1)/2 where
+    !! P dominates, n - 1 where A does), then Newton steps on F on the full rules
+    !! (`final_step` with `previous`; far from the root the next point from
+    !! `edge_model_point`), kept inside the bracket [y_lo, y_hi] of F's signs (y_hi = log
+    !! hi at first) by bisection. Not `done`: x and the slope d Upsilon/dR for the secant
+    !! steps, [lo, hi] the bracket in R.
     pure subroutine edge_steps(model, prob, early_gap, early_slope, x, lo, hi, solution, &
                                done, slope)
         type(central_force_model), intent(in) :: model
@@ -2553,7 +2557,7 @@ contains
         type(endpoint_solution), intent(inout) :: solution
         logical, intent(out) :: done
         real(qp), intent(out) :: slope
-        real(qp) :: y, y_lo, y_hi, previous(2), form(2), x_next
+        real(qp) :: y, y_lo, y_hi, previous(2), form(2), x_next, y_next
         integer :: attempt
         done = .false.
         slope = 0.0_qp
@@ -2562,8 +2566,20 @@ contains
         y_hi = log(hi)
         y_lo = lowest_log_r
         previous = [log(x), early_slope]
-        y = log(x) - log(early_gap/(prob%limit - prob%psi))/early_slope
+        form = [log(early_gap/(prob%limit - prob%psi)), early_slope]
+        y = log(x) - form(1)/early_slope
         if (.not. (early_slope > 0.0_qp .and. ieee_is_finite(y))) return
+        if (.not. y > lowest_log_r) then
+            call below_range(model, prob, solution)
+            done = .true.
+            return
+        end if
+        ! (the early root's limit - Upsilon is resolved to about 1e-9 of itself, its A to
+        ! 1e-9/share: with A below 1e-3 of it the model is no better than the tangent)
+        y_next = y
+        call edge_model_point(model, prob, previous(1), form, y_next, solution%steps, &
+                              1.0e-3_qp)
+        if (y_next > lowest_log_r .and. y_next < y_hi) y = y_next
         do attempt = 1, max_edge_steps
             if (.not. y > lowest_log_r) then
                 call below_range(model, prob, solution)
@@ -2582,10 +2598,12 @@ contains
                 y_lo = y
             end if
             if (form(2) > 0.0_qp) previous = [y, form(2)]
+            y_next = y
+            if (x_next /= x .and. x_next > 0.0_qp) y_next = log(x_next)
             if (form(2) > 0.0_qp .and. abs(form(1)) > 1.0e-8_qp) &
-                call edge_model_point(model, prob, y, form, x_next, solution%steps)
-            if (x_next /= x .and. x_next > exp(y_lo) .and. x_next < exp(y_hi)) then
-                y = log(x_next)
+                call edge_model_point(model, prob, y, form, y_next, solution%steps)
+            if (y_next /= y .and. y_next > y_lo .and. y_next < y_hi) then
+                y = y_next
             else
                 y = 0.5_qp*(y_lo + y_hi)
             end if
@@ -2599,19 +2617,28 @@ contains
     !! in hardware precision without cancellation) and A = 2 (lim Theta - Theta(R,R))
     !! known at y0 as (limit - Upsilon) - P and taken as A0 exp(a (y - y0)) (power laws:
     !! C R^(n-1)); the root of log((A + P)/(limit - psi)) on that model by Newton steps in
-    !! hardware precision (`steps` counted): x_next = R there (unchanged where the model
-    !! does not apply). Where the two terms cross between y0 and R-bar (rho small, n < 3)
-    !! the Newton point of F alone needs several more full evaluations.
-    pure subroutine edge_model_point(model, prob, y0, form, x_next, steps)
+    !! hardware precision (`steps` counted; P evaluated again at each iterate until its
+    !! estimate there, P nearly exponential in y, is below 1e-20 A: then the root of A
+    !! alone): y_next = log R there (unchanged where the model does not apply). Where the
+    !! two terms cross between y0 and R-bar (rho small, n < 3) the Newton point of F
+    !! alone would need several more full evaluations; the steps in y may be large (100
+    !! and more: F' is n - 1 where A dominates). Also from the early phase's root (F, F'
+    !! of the hardware-precision evaluation: `edge_steps`), where A is resolved only if
+    !! it is at least `share` of limit - Upsilon (default 1e-6), and P by the rough rules
+    !! (12 digits: limit - Upsilon there is resolved to about 1e-9 of itself).
+    pure subroutine edge_model_point(model, prob, y0, form, y_next, steps, share)
         type(central_force_model), intent(in) :: model
         type(endpoint_problem), intent(in) :: prob
         real(qp), intent(in) :: y0, form(2)
-        real(qp), intent(inout) :: x_next
+        real(qp), intent(inout) :: y_next
         integer, intent(inout) :: steps
+        real(qp), intent(in), optional :: share
         type(endpoint_problem) :: part
-        real(qp) :: gap, d0, p, p_slope, a0, rate, y, big_a, g, dy
+        real(qp) :: gap, d0, p, p_slope, a0, rate, y, big_a, g, dy, least
         real(xp) :: f, slope
         integer :: k
+        least = 1.0e-6_qp
+        if (present(share)) least = share
         gap = prob%limit - prob%psi
         d0 = gap*exp(form(1))
         part = prob
@@ -2623,25 +2650,29 @@ contains
         part%psi = 1.0e-300_qp
         y = y0
         do k = 1, 8
-            call residual_xp(model, part, real(y, xp), .false., f, slope)
+            call residual_xp(model, part, real(y, xp), present(share), f, slope)
             steps = steps + 1
             p = exp(real(f, qp) + log(part%psi))
             p_slope = real(slope, qp)
             if (k == 1) then
                 a0 = d0 - p
                 ! (P alone, or A not resolved beside it: the Newton point of F stands)
-                if (.not. (a0 > 1.0e-6_qp*d0 .and. p > 0.0_qp)) return
+                if (.not. (a0 > least*d0 .and. p > 0.0_qp)) return
                 rate = (d0*form(2) - p*p_slope)/a0
                 if (.not. (rate > 0.0_qp .and. ieee_is_finite(rate))) return
             end if
             big_a = a0*exp(rate*(y - y0))
             g = log((big_a + p)/gap)
             dy = -g*(big_a + p)/(rate*big_a + p_slope*p)
-            if (.not. (ieee_is_finite(dy) .and. abs(dy) < 100.0_qp)) return
+            if (.not. (ieee_is_finite(dy) .and. abs(dy) < -lowest_log_r)) return
             y = y + dy
             if (abs(dy) <= 1.0e-12_qp*max(1.0_qp, abs(y))) exit
+            if (p*exp(p_slope*dy) <= 1.0e-20_qp*a0*exp(rate*(y - y0))) then
+                y = y0 + log(gap/a0)/rate
+                exit
+            end if
         end do
-        x_next = exp(y)
+        y_next = y
     end subroutine edge_model_point
 
     !> The Newton point in u from x0 (the unknown u, first half-arch) on
@@ -2680,9 +2711,23 @@ contains
                    upsilon_slope /= 0.0_qp)) return
         dy = log(deficit/(prob%limit - prob%psi))*deficit/upsilon_slope
         if (.not. ieee_is_finite(dy)) return
-        dy = x0 + x0*expm1_qp(dy)
+        dy = log_step(x0, dy)
         if (dy > lo .and. dy < hi) x = dy
     end function log_form_point
+
+    !> x0 exp(dy), a step dy in log x: x0 + x0 expm1(dy) (exact to a rounding of x0 for
+    !! small steps), but x0 exp(dy) for dy < -1/2, where 1 + expm1(dy) keeps only the
+    !! digits of exp(dy) above eps (below dy = -78 none: x0 + x0 expm1(dy) = 0, and
+    !! next to the sector's edge the Newton step in log R is often -100 or more)
+    elemental function log_step(x0, dy) result(x)
+        real(qp), intent(in) :: x0, dy
+        real(qp) :: x
+        if (dy < -0.5_qp) then
+            x = x0*exp(dy)
+        else
+            x = x0 + x0*expm1_qp(dy)
+        end if
+    end function log_step
 
     !> The quad-precision phase from the double phase's root x0 and slope (of the
     !! double phase's form): Newton, then secant steps on Upsilon - psi, each a full
