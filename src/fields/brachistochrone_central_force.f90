@@ -193,7 +193,7 @@ module brachistochrone_central_force
         real(qp) :: c(8) = 0.0_qp
         real(qp) :: lambda_r = 0.0_qp, delta_r = 0.0_qp
         real(qp) :: weight_below = 0.0_qp, weight_above = 1.0_qp
-        real(xp) :: cx(4) = 0.0_xp    !! the law's constants in hardware precision
+        real(xp) :: cx(6) = 0.0_xp    !! the law's constants in hardware precision
         !> Theta of a first half-arch where known beforehand (psi: the two-point problem's
         !! target), else 0: picks the panels of the early phase (`theta_xp`)
         real(qp) :: angle_hint = 0.0_qp
@@ -1918,9 +1918,9 @@ contains
         type(panel), intent(in), optional :: given(max_panels)
         integer, intent(in), optional :: given_count
         type(panel) :: panels(max_panels)
-        real(xp) :: part(2), last, v, lambda, delta, jacobian, g, omq, log_slope, big
-        real(xp) :: scale, share, lo, width, exp_shift
-        integer :: count, p, k, j
+        real(xp), dimension(max_nodes) :: lambda, delta, jacobian, g, h
+        real(xp) :: part(2), last, big, scale, share, lo, width, exp_shift, weighted
+        integer :: count, p, k, j, n
         if (present(given) .and. present(given_count)) then
             count = given_count
             panels(1:count) = given(1:count)
@@ -1953,18 +1953,19 @@ contains
             scale = real(pan%scale, xp)
             lo = real(pan%lo, xp)
             width = real(pan%hi - pan%lo, xp)
+            ! the panel's nodes, the law's terms on all of them (one call), the sums
+            n = model%gauss(j)%n
+            call node_point_xp(pan%kind, scale, big, lo + width*model%gauss(j)%offset_xp, &
+                               lambda(1:n), delta(1:n), jacobian(1:n))
+            call model%law%panel_terms_xp(a%cx, lambda(1:n), delta(1:n), shift, rough, &
+                                          exp_shift, g(1:n), h(1:n))
             part = 0.0_xp
-            do k = 1, model%gauss(j)%n
-                v = lo + width*model%gauss(j)%offset_xp(k)
-                call node_point_xp(pan%kind, scale, big, v, lambda, delta, jacobian)
-                call model%law%theta_terms_xp(a%cx, lambda, delta, shift, rough, g, omq, &
-                                              log_slope, exp_shift)
-                part(1) = part(1) + model%gauss(j)%weight_xp(k)*g*jacobian
-                part(2) = part(2) + model%gauss(j)%weight_xp(k)*g*jacobian* &
-                          (0.5_xp*log_slope/omq)
-                if (k == merge(1, model%gauss(j)%n, pan%kind >= kind_start .and. &
-                               pan%kind <= kind_start_root)) last = g
+            do k = 1, n
+                weighted = model%gauss(j)%weight_xp(k)*g(k)*jacobian(k)
+                part(1) = part(1) + weighted
+                part(2) = part(2) + weighted*h(k)
             end do
+            last = g(merge(1, n, pan%kind >= kind_start .and. pan%kind <= kind_start_root))
             theta = theta + real(pan%weight, xp)*width*part(1)
             slope = slope + real(pan%weight, xp)*width*part(2)
             end associate
