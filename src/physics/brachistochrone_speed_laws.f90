@@ -246,7 +246,6 @@ module brachistochrone_speed_laws
         procedure :: has_terms_xp => logarithmic_has_terms_xp
         procedure :: apse_constants_xp => logarithmic_apse_constants_xp
         procedure :: theta_terms_xp => logarithmic_theta_terms_xp
-        procedure :: panel_terms_xp => logarithmic_panel_terms_xp
     end type logarithmic_law
 
     !> Inside a uniform planet (Saitoh), R_E = 1, omega = 1: v^2 = 1 - x^2.
@@ -1859,39 +1858,35 @@ contains
     end subroutine power_panel_terms_xp
 
     !> `power_panel_terms_xp` at one node where exp(-2 lambda), exp(-a lambda) and their
-    !! product are normal and exp(shift) = exp_shift > 0: with P = 1 - q, D = exp(-a
-    !! lambda) E(delta) and T = exp(-a lambda) exp(-a delta) (= exp(-a Lambda) where
-    !! normal), g = exp(shift) sqrt(exp(-2 lambda) D/(E(Lambda) P)) and h = a E(lambda)
-    !! T/(2 E(Lambda) D P): one division, 1/(D P), and one square root.
+    !! product are normal and exp(shift) = exp_shift > 0: g in the operations of
+    !! `power_theta_terms_xp` there (bit for bit: the early phase's root next to the
+    !! sector's edge, and so the certification of the first binary128 step, responds to
+    !! g's last bits), h = a E(lambda) exp(-a delta)/(2 E(Lambda) E(delta) P), P = 1 - q,
+    !! with one division where the slope and its 1/P took two.
     pure subroutine power_node_xp(c, lambda, delta, rough, exp_shift, g, h)
         real(xp), intent(in) :: c(6), lambda, delta, exp_shift
         logical, intent(in) :: rough
         real(xp), intent(out) :: g, h
-        real(xp) :: e2, om2, ea, e_lambda, ead, e_delta, d, t, one_minus_q, r
+        real(xp) :: e2, om2, ea, e_lambda, ead, e_delta, one_minus_q
         logical :: known  ! E(delta) at hand
         call power_lambda_exps_xp(c, lambda, delta, rough, e2, om2, ea, e_lambda, ead, &
                                   e_delta, known)
-        t = c(4)
-        if (known) then
-            d = ea*e_delta
-        else if (c(3)*delta <= 0.25_xp .and. lambda <= delta) then
-            ! nearer the apse: D = E(Lambda) - E(lambda) (delta >= Lambda/2: at most two
-            ! bits cancel)
-            d = c(2) - e_lambda
-        else if (c(3)*delta >= 0.5_xp .and. c(4) > tiny(1.0_xp)) then
-            ! D = exp(-a lambda) - exp(-a Lambda) (under two bits cancel)
-            d = ea - c(4)
-        else
-            call exp_and_decay_xp(c(3)*delta, ead, e_delta, rough)
-            d = ea*e_delta
-            t = ea*ead
+        if (.not. known) then
+            if (c(3)*delta <= 0.25_xp .and. lambda <= delta) then
+                ! nearer the apse: exp(-a lambda) E(delta) = E(Lambda) - E(lambda)
+                e_delta = (c(2) - e_lambda)/ea
+                ead = 1.0_xp - e_delta
+            else if (c(3)*delta >= 0.5_xp .and. c(4) > tiny(1.0_xp)) then
+                ! exp(-a delta) = exp(-a Lambda)/exp(-a lambda)
+                ead = c(4)/ea
+                e_delta = 1.0_xp - ead
+            else
+                call exp_and_decay_xp(c(3)*delta, ead, e_delta, rough)
+            end if
         end if
-        one_minus_q = om2 + e2*e_lambda*c(5)
-        r = 1.0_xp/(d*one_minus_q)
-        ! (D r = 1/P; in this order g errs no more than as sqrt(E(delta)/(P E(Lambda)))
-        ! sqrt(exp(-2 lambda) exp(-a lambda)) with two square roots and divisions)
-        g = exp_shift*sqrt(e2*c(5)*d*(d*r))
-        h = c(6)*e_lambda*t*r
+        one_minus_q = om2 + e2*e_lambda/c(2)
+        g = sqrt(e_delta/(one_minus_q*c(2)))*(exp_shift*sqrt(e2*ea))
+        h = c(6)*e_lambda*ead/(e_delta*one_minus_q)
     end subroutine power_node_xp
 
     !> exp(-2 lambda) = e2, 1 - it = om2, exp(-a lambda) = ea, E(lambda) = e_lambda for
@@ -1937,12 +1932,12 @@ contains
         end if
     end subroutine power_lambda_exps_xp
 
-    !> Logarithmic law: [Lambda, 0, 0, 0, 1/Lambda, 1/(2 Lambda)].
+    !> Logarithmic law: [Lambda, 0, 0, 0, 0, 0].
     pure function logarithmic_apse_constants_xp(self, big_lambda) result(c)
         class(logarithmic_law), intent(in) :: self
         real(xp), intent(in) :: big_lambda
         real(xp) :: c(6)
-        c = [big_lambda, 0.0_xp, 0.0_xp, 0.0_xp, 1.0_xp/big_lambda, 0.5_xp/big_lambda]
+        c = [big_lambda, 0.0_xp, 0.0_xp, 0.0_xp, 0.0_xp, 0.0_xp]
     end function logarithmic_apse_constants_xp
 
     !> Logarithmic law: q = exp(-2 lambda) delta/Lambda, 1 - q = (1 - exp(-2 lambda)) +
@@ -1963,35 +1958,6 @@ contains
         g = sqrt(delta/(one_minus_q*c(1)))*scaled_decay(shift, lambda, decay, rough, exp_shift)
         log_slope = lambda/(delta*c(1))
     end subroutine logarithmic_theta_terms_xp
-
-    !> Logarithmic law: `panel_terms_xp` with P = 1 - q, g = exp(shift) sqrt(exp(-2
-    !! lambda) delta/(Lambda P)), h = lambda/(2 Lambda delta P) (one division, 1/(delta P),
-    !! one square root) where exp(-lambda) and exp(shift) are at hand in range, else by
-    !! `logarithmic_theta_terms_xp`.
-    pure subroutine logarithmic_panel_terms_xp(self, c, lambda, delta, shift, rough, &
-                                               exp_shift, g, h)
-        class(logarithmic_law), intent(in) :: self
-        real(xp), intent(in) :: c(6), lambda(:), delta(:), shift, exp_shift
-        logical, intent(in) :: rough
-        real(xp), intent(out) :: g(:), h(:)
-        real(xp) :: reach, e2, om2, one_minus_q, log_slope, r
-        integer :: k
-        reach = -huge(1.0_xp)
-        if (exp_shift > 0.0_xp) reach = 0.5_xp*normal_reach(rough)
-        do k = 1, size(lambda)
-            if (lambda(k) <= reach) then
-                call exp_and_decay_xp(2.0_xp*lambda(k), e2, om2, rough)
-                one_minus_q = om2 + e2*lambda(k)*c(5)
-                r = 1.0_xp/(delta(k)*one_minus_q)
-                g(k) = exp_shift*sqrt(e2*c(5)*delta(k)*(delta(k)*r))
-                h(k) = c(6)*lambda(k)*r
-            else
-                call logarithmic_theta_terms_xp(self, c, lambda(k), delta(k), shift, rough, &
-                                                g(k), one_minus_q, log_slope, exp_shift)
-                h(k) = 0.5_xp*log_slope/one_minus_q
-            end if
-        end do
-    end subroutine logarithmic_panel_terms_xp
 
     pure logical function harmonic_has_terms_xp(self)
         class(harmonic_law), intent(in) :: self
