@@ -1919,7 +1919,7 @@ contains
         integer, intent(in), optional :: given_count
         type(panel) :: panels(max_panels)
         real(xp), dimension(max_nodes) :: lambda, delta, jacobian, g, h
-        real(xp) :: part(2), last, big, scale, share, lo, width, exp_shift, weighted
+        real(xp) :: part(2), last, big, scale, share, lo, width, exp_shift, weighted, weight
         integer :: count, p, k, j, n
         if (present(given) .and. present(given_count)) then
             count = given_count
@@ -1930,7 +1930,7 @@ contains
         theta = 0.0_xp
         slope = 0.0_xp
         last = 0.0_xp
-        big = real(a%big_lambda, xp)
+        big = hardware_real(a%big_lambda)
         ! the scale factor once for all nodes (0: beyond the hardware kind's range, the
         ! law scales each node by exp(shift - its decay) itself)
         exp_shift = 1.0_xp
@@ -1941,18 +1941,20 @@ contains
         end if
         do p = 1, count
             associate (pan => panels(p))
+            ! (conversions on the bits, `hardware_real`: no library call)
+            scale = hardware_real(pan%scale)
+            lo = hardware_real(pan%lo)
+            width = hardware_real(pan%hi - pan%lo)
+            weight = hardware_real(pan%weight)
             share = 1.0_xp
             if (p > 1 .and. theta > 0.0_xp) then
-                share = 4.0_xp*real(panel_length(pan), xp)*last/theta
+                share = 4.0_xp*panel_length_xp(pan%kind, scale, lo, width)*last/theta
                 if (share < 1.0e-24_xp) cycle
             end if
             pan%log_rho = bernstein_log(model, a%big_lambda, pan)
             j = rule_for(pan%log_rho, merge(rough_digits, hardware_digits, rough) + &
                          real(min(0.0_xp, log10(max(share, 1.0e-30_xp))), qp), &
                          panel_growth(pan, 2.0_qp*pi/model%sigma_apse))
-            scale = real(pan%scale, xp)
-            lo = real(pan%lo, xp)
-            width = real(pan%hi - pan%lo, xp)
             ! the panel's nodes, the law's terms on all of them (one call), the sums
             n = model%gauss(j)%n
             call node_point_xp(pan%kind, scale, big, lo + width*model%gauss(j)%offset_xp, &
@@ -1966,11 +1968,30 @@ contains
                 part(2) = part(2) + weighted*h(k)
             end do
             last = g(merge(1, n, pan%kind >= kind_start .and. pan%kind <= kind_start_root))
-            theta = theta + real(pan%weight, xp)*width*part(1)
-            slope = slope + real(pan%weight, xp)*width*part(2)
+            theta = theta + weight*width*part(1)
+            slope = slope + weight*width*part(2)
             end associate
         end do
     end subroutine panel_theta_xp
+
+    !> `panel_length` in hardware precision from the panel's scale, lo and width = hi - lo
+    !! (for `panel_theta_xp`'s estimate of a panel's share: no binary128 operations).
+    elemental function panel_length_xp(kind, scale, lo, width) result(length)
+        integer, intent(in) :: kind
+        real(xp), intent(in) :: scale, lo, width
+        real(xp) :: length
+        select case (kind)
+        case (kind_apse_root, kind_start_root)
+            ! scale (hi^2 - lo^2)
+            length = scale*width*(2.0_xp*lo + width)
+        case (kind_full)
+            ! scale (hi^2 (3 - 2 hi) - lo^2 (3 - 2 lo)), hi = lo + width, without cancellation
+            length = scale*width*(3.0_xp*(2.0_xp*lo + width) - &
+                                  2.0_xp*(3.0_xp*lo*(lo + width) + width*width))
+        case default
+            length = width
+        end select
+    end function panel_length_xp
 
     !> `node_point` in hardware precision.
     elemental subroutine node_point_xp(kind, scale, big_lambda, v, lambda, delta, jacobian)
