@@ -1841,13 +1841,13 @@ contains
         real(xp), intent(in) :: c(6), lambda(:), delta(:), shift, exp_shift
         logical, intent(in) :: rough
         real(xp), intent(out) :: g(:), h(:)
-        real(xp) :: reach, one_minus_q, log_slope
+        real(xp) :: top, rate, one_minus_q, log_slope
         integer :: k
-        reach = -huge(1.0_xp)
-        if (exp_shift > 0.0_xp) reach = normal_reach(rough)/ &
-                                        merge(max(2.0_xp, c(3)), c(3) + 2.0_xp, rough)
+        ! (exp(-2 lambda) exp(-a lambda) normal where rate lambda <= top, as there)
+        top = normal_reach(rough)
+        rate = merge(max(2.0_xp, c(3)), c(3) + 2.0_xp, rough)
         do k = 1, size(lambda)
-            if (lambda(k) <= reach) then
+            if (exp_shift > 0.0_xp .and. rate*lambda(k) <= top) then
                 call power_node_xp(c, lambda(k), delta(k), rough, exp_shift, g(k), h(k))
             else
                 call power_theta_terms_xp(self, c, lambda(k), delta(k), shift, rough, g(k), &
