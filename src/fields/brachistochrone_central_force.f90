@@ -194,7 +194,7 @@ module brachistochrone_central_force
         real(qp) :: c(8) = 0.0_qp
         real(qp) :: lambda_r = 0.0_qp, delta_r = 0.0_qp
         real(qp) :: weight_below = 0.0_qp, weight_above = 1.0_qp
-        real(xp) :: cx(4) = 0.0_xp    !! the law's constants in hardware precision
+        real(xp) :: cx(6) = 0.0_xp    !! the law's constants in hardware precision
         !> Theta of a first half-arch where known beforehand (psi: the two-point problem's
         !! target), else 0: picks the panels of the early phase (`theta_xp`)
         real(qp) :: angle_hint = 0.0_qp
@@ -1919,9 +1919,9 @@ contains
         type(panel), intent(in), optional :: given(max_panels)
         integer, intent(in), optional :: given_count
         type(panel) :: panels(max_panels)
-        real(xp) :: part(2), last, v, lambda, delta, jacobian, g, omq, log_slope, big
-        real(xp) :: scale, share, lo, width, exp_shift
-        integer :: count, p, k, j
+        real(xp), dimension(max_nodes) :: lambda, delta, jacobian, g, h
+        real(xp) :: part(2), last, big, scale, share, lo, width, exp_shift, weighted, weight
+        integer :: count, p, k, j, n
         if (present(given) .and. present(given_count)) then
             count = given_count
             panels(1:count) = given(1:count)
@@ -1931,7 +1931,7 @@ contains
         theta = 0.0_xp
         slope = 0.0_xp
         last = 0.0_xp
-        big = real(a%big_lambda, xp)
+        big = hardware_real(a%big_lambda)
         ! the scale factor once for all nodes (0: beyond the hardware kind's range, the
         ! law scales each node by exp(shift - its decay) itself)
         exp_shift = 1.0_xp
@@ -1942,35 +1942,57 @@ contains
         end if
         do p = 1, count
             associate (pan => panels(p))
+            ! (conversions on the bits, `hardware_real`: no library call)
+            scale = hardware_real(pan%scale)
+            lo = hardware_real(pan%lo)
+            width = hardware_real(pan%hi - pan%lo)
+            weight = hardware_real(pan%weight)
             share = 1.0_xp
             if (p > 1 .and. theta > 0.0_xp) then
-                share = 4.0_xp*real(panel_length(pan), xp)*last/theta
+                share = 4.0_xp*panel_length_xp(pan%kind, scale, lo, width)*last/theta
                 if (share < 1.0e-24_xp) cycle
             end if
             pan%log_rho = bernstein_log(model, a%big_lambda, pan)
             j = rule_for(pan%log_rho, merge(rough_digits, hardware_digits, rough) + &
                          real(min(0.0_xp, log10(max(share, 1.0e-30_xp))), qp), &
                          panel_growth(pan, 2.0_qp*pi/model%sigma_apse))
-            scale = real(pan%scale, xp)
-            lo = real(pan%lo, xp)
-            width = real(pan%hi - pan%lo, xp)
+            ! the panel's nodes, the law's terms on all of them (one call), the sums
+            n = model%gauss(j)%n
+            call node_point_xp(pan%kind, scale, big, lo + width*model%gauss(j)%offset_xp, &
+                               lambda(1:n), delta(1:n), jacobian(1:n))
+            call model%law%panel_terms_xp(a%cx, lambda(1:n), delta(1:n), shift, rough, &
+                                          exp_shift, g(1:n), h(1:n))
             part = 0.0_xp
-            do k = 1, model%gauss(j)%n
-                v = lo + width*model%gauss(j)%offset_xp(k)
-                call node_point_xp(pan%kind, scale, big, v, lambda, delta, jacobian)
-                call model%law%theta_terms_xp(a%cx, lambda, delta, shift, rough, g, omq, &
-                                              log_slope, exp_shift)
-                part(1) = part(1) + model%gauss(j)%weight_xp(k)*g*jacobian
-                part(2) = part(2) + model%gauss(j)%weight_xp(k)*g*jacobian* &
-                          (0.5_xp*log_slope/omq)
-                if (k == merge(1, model%gauss(j)%n, pan%kind >= kind_start .and. &
-                               pan%kind <= kind_start_root)) last = g
+            do k = 1, n
+                weighted = model%gauss(j)%weight_xp(k)*g(k)*jacobian(k)
+                part(1) = part(1) + weighted
+                part(2) = part(2) + weighted*h(k)
             end do
-            theta = theta + real(pan%weight, xp)*width*part(1)
-            slope = slope + real(pan%weight, xp)*width*part(2)
+            last = g(merge(1, n, pan%kind >= kind_start .and. pan%kind <= kind_start_root))
+            theta = theta + weight*width*part(1)
+            slope = slope + weight*width*part(2)
             end associate
         end do
     end subroutine panel_theta_xp
+
+    !> `panel_length` in hardware precision from the panel's scale, lo and width = hi - lo
+    !! (for `panel_theta_xp`'s estimate of a panel's share: no binary128 operations).
+    elemental function panel_length_xp(kind, scale, lo, width) result(length)
+        integer, intent(in) :: kind
+        real(xp), intent(in) :: scale, lo, width
+        real(xp) :: length
+        select case (kind)
+        case (kind_apse_root, kind_start_root)
+            ! scale (hi^2 - lo^2)
+            length = scale*width*(2.0_xp*lo + width)
+        case (kind_full)
+            ! scale (hi^2 (3 - 2 hi) - lo^2 (3 - 2 lo)), hi = lo + width, without cancellation
+            length = scale*width*(3.0_xp*(2.0_xp*lo + width) - &
+                                  2.0_xp*(3.0_xp*lo*(lo + width) + width*width))
+        case default
+            length = width
+        end select
+    end function panel_length_xp
 
     !> `node_point` in hardware precision.
     elemental subroutine node_point_xp(kind, scale, big_lambda, v, lambda, delta, jacobian)
