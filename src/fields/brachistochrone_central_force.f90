@@ -872,8 +872,14 @@ contains
     !! log rho* (1 + w/(D log 10)) for D digits (`digits`, default 35; rule_for's n for D
     !! digits on that ellipse, D log 10/(2 log rho*) (1 + w/(D log 10)), is then exactly
     !! the n for which the singularity's term e^w rho*^(-2n) is below 10^-D), beyond reach
-    !! below exp(-D log 10). With `unweighted` (integrands not decaying from the apse:
-    !! `fall_piece`) every singularity counts.
+    !! below exp(-D log 10) (skipped before any image or transcendental). With
+    !! `unweighted` (integrands not decaying from the apse: `fall_piece`) every
+    !! singularity counts. In real arithmetic: the ellipse through an image z has the
+    !! panel's ends as foci, rho* = a + sqrt(a^2 - 1) with a = (|z - lo| + |z - hi|)/(hi -
+    !! lo) (`ellipse_excess`: a - 1 without cancellation); one of each pair of conjugate
+    !! singularities (the same ellipse); one logarithm for all those of weight 0 (the
+    !! least a), one for each weighted one unless a bound without logarithm puts it beyond
+    !! the least so far (`acosh_below`).
     pure function bernstein_log(model, big_lambda, p, unweighted, digits) result(log_rho)
         type(central_force_model), intent(in) :: model
         real(qp), intent(in) :: big_lambda
@@ -882,107 +888,166 @@ contains
         !> the digits asked of the panel (`rule_for`'s); default 35
         real(qp), intent(in), optional :: digits
         real(real64) :: log_rho
-        real(real64), parameter :: most = 8.0_real64
-        complex(real64) :: zeta(8), point, image(3), t, arc
-        real(real64) :: lo, hi, big, sa, ss, log_min, kappa, near, w, lr, reach
-        integer :: k, m, images
+        real(real64), parameter :: most = 8.0_real64, none = huge(1.0_real64)
+        real(real64) :: re(5), im(5), w(5), excess(5), lo, hi, scale, kappa, near, reach, &
+                        side, least, log_min
+        logical :: apse_side
+        integer :: k
         reach = 35.0_real64*log(10.0_real64)
         if (present(digits)) reach = real(max(digits, 2.0_qp), real64)*log(10.0_real64)
         lo = real(p%lo, real64)
         hi = real(p%hi, real64)
-        big = real(big_lambda, real64)
-        sa = real(model%sigma_apse, real64)
-        ss = real(model%sigma_start, real64)
+        scale = real(p%scale, real64)
         kappa = real(pi/model%sigma_apse, real64)
         if (present(unweighted)) then
             if (unweighted) kappa = 0.0_real64
         end if
-        ! singular points as offsets from the panel's own end (apse or start)
-        ! (+-2i: not a singularity but the growth of the factors exp(-+lambda),
-        ! exp(-delta) off the real axis, which fewer nodes would not resolve)
-        select case (p%kind)
-        case (kind_apse_root, kind_apse, kind_full)
-            zeta = [(0.0_real64, 0.0_real64), cmplx(0.0_real64, sa, real64), &
-                    cmplx(0.0_real64, -sa, real64), cmplx(big, 0.0_real64, real64), &
-                    cmplx(big, ss, real64), cmplx(big, -ss, real64), &
-                    (0.0_real64, 2.0_real64), (0.0_real64, -2.0_real64)]
-        case default
-            zeta = [(0.0_real64, 0.0_real64), cmplx(0.0_real64, ss, real64), &
-                    cmplx(0.0_real64, -ss, real64), cmplx(big, 0.0_real64, real64), &
-                    cmplx(big, sa, real64), cmplx(big, -sa, real64), &
-                    (0.0_real64, 2.0_real64), (0.0_real64, -2.0_real64)]
-        end select
+        ! singular points as offsets from the panel's own end (apse or start): the end,
+        ! its complex singularities, the other end, its complex singularities (one of
+        ! each conjugate pair), and 2i (not a singularity but the growth of the factors
+        ! exp(-+lambda), exp(-delta) off the real axis, which fewer nodes would not
+        ! resolve)
+        apse_side = p%kind <= kind_apse .or. p%kind == kind_full
+        side = merge(1.0_real64, -1.0_real64, apse_side)
+        re = [0.0_real64, 0.0_real64, real(big_lambda, real64), real(big_lambda, real64), &
+              0.0_real64]
+        im = [0.0_real64, real(merge(model%sigma_apse, model%sigma_start, apse_side), &
+              real64), 0.0_real64, real(merge(model%sigma_start, model%sigma_apse, &
+              apse_side), real64), 2.0_real64]
         ! the panel's point nearest the apse (its largest integrands), from its own end
         select case (p%kind)
         case (kind_apse_root)
-            near = real(p%scale, real64)*lo*lo
+            near = scale*lo*lo
         case (kind_apse)
             near = lo
         case (kind_start)
             near = -hi
         case (kind_full)
-            near = real(p%scale, real64)*lo*lo*(3.0_real64 - 2.0_real64*lo)
+            near = scale*lo*lo*(3.0_real64 - 2.0_real64*lo)
         case default
-            near = -real(p%scale, real64)*hi*hi
+            near = -scale*hi*hi
         end select
-        log_min = most
-        do k = 1, size(zeta)
+        do k = 1, 5
             ! weight: log of the integrands' size at the singularity relative to the panel's
             ! largest (the offsets on the start side count toward the start)
-            w = 0.0_real64
-            if (k <= 6) w = min(0.0_real64, -kappa*(merge(1.0_real64, -1.0_real64, &
-                p%kind <= kind_apse .or. p%kind == kind_full)*real(zeta(k)) - near))
-            if (w <= -reach) cycle
-            if (p%kind == kind_apse .or. p%kind == kind_start) then
-                images = 1
-                image(1) = zeta(k)
-            else if (p%kind == kind_full) then
-                ! the preimages of lambda = zeta: s^2 (3 - 2 s) = t at s = 1/2 - sin((asin(1
-                ! - 2 t) + 2 pi m)/3), m = 0, 1, 2; the ends' double ones (s = 0 of the
-                ! apse, s = 1 of the start) removed by the substitution, none near the
-                ! panel for |t| > 1e6
-                t = zeta(k)/real(p%scale, real64)
-                if (abs(t) > 1.0e6_real64) cycle
-                arc = asin(1.0_real64 - 2.0_real64*t)
-                images = 0
-                do m = 0, 2
-                    point = 0.5_real64 - sin((arc + real(2*m, real64)* &
-                                              acos(-1.0_real64))/3.0_real64)
-                    if ((k == 1 .and. abs(point) < 1.0e-6_real64) .or. &
-                        (k == 4 .and. abs(1.0_real64 - point) < 1.0e-6_real64)) cycle
-                    images = images + 1
-                    image(images) = point
-                end do
-            else
-                if (k == 1) cycle    ! removed by the substitution
-                point = sqrt(zeta(k)/real(p%scale, real64))
-                images = 2
-                image(1:2) = [point, -point]
-            end if
-            do m = 1, images
-                lr = 0.5_real64*log(bernstein2((2.0_real64*image(m) - (lo + hi))/(hi - lo)))
-                log_min = min(log_min, lr*reach/(reach + w))
-            end do
+            w(k) = 0.0_real64
+            if (k <= 4) w(k) = min(0.0_real64, -kappa*(side*re(k) - near))
+            excess(k) = none
+            if (w(k) <= -reach) cycle
+            select case (p%kind)
+            case (kind_apse, kind_start)
+                excess(k) = ellipse_excess(re(k), im(k), lo, hi)
+            case (kind_full)
+                excess(k) = full_excess(k, re(k), im(k), scale, lo, hi)
+            case default
+                ! (the end itself removed by the substitution)
+                if (k > 1) excess(k) = root_excess(re(k), im(k), scale, lo, hi)
+            end select
+        end do
+        least = minval(excess, mask=w == 0.0_real64)
+        log_min = most
+        if (least < none) log_min = min(most, acosh_1p(least))
+        do k = 1, 4
+            if (.not. (w(k) < 0.0_real64 .and. excess(k) < none)) cycle
+            if (acosh_below(excess(k))*reach/(reach + w(k)) >= log_min) cycle
+            log_min = min(log_min, acosh_1p(excess(k))*reach/(reach + w(k)))
         end do
         log_rho = max(log_min, 1.0e-3_real64)
-    contains
-        !> The square of the Bernstein parameter through x: the larger of |x -+ root|
-        !! (their product is 1), squared (no hypot).
-        pure real(real64) function bernstein2(x)
-            complex(real64), intent(in) :: x
-            complex(real64) :: root, w
-            root = sqrt(x*x - 1.0_real64)
-            w = merge(x + root, x - root, real(conjg(x)*root) >= 0.0_real64)
-            bernstein2 = real(w)**2 + aimag(w)**2
-        end function bernstein2
     end function bernstein_log
+
+    !> a - 1 for the ellipse with foci lo < hi through z = zr + i zi, a = (|z - lo| + |z -
+    !! hi|)/(hi - lo): |z - c| - |zr - c| = zi^2/(|z - c| + |zr - c|) and |zr - lo| + |zr -
+    !! hi| - (hi - lo) = 2 max(0, lo - zr, zr - hi), every term >= 0 (no cancellation).
+    pure function ellipse_excess(zr, zi, lo, hi) result(e)
+        real(real64), intent(in) :: zr, zi, lo, hi
+        real(real64) :: e, dl, dh
+        dl = abs(zr - lo)
+        dh = abs(zr - hi)
+        e = 2.0_real64*max(0.0_real64, lo - zr, zr - hi)
+        if (zi /= 0.0_real64) e = e + zi*zi/(sqrt(dl*dl + zi*zi) + dl) + &
+                                  zi*zi/(sqrt(dh*dh + zi*zi) + dh)
+        e = e/(hi - lo)
+    end function ellipse_excess
+
+    !> `ellipse_excess` of the nearer preimage of z = zr + i zi (zi >= 0, z /= 0) on a
+    !! root panel, s = +-sqrt(z/scale): the principal root by real formulas (its real
+    !! part >= 0, so it is the nearer of the two to a panel with lo >= 0: |s - c| <= |-s -
+    !! c| for every c >= 0; both where lo < 0).
+    pure function root_excess(zr, zi, scale, lo, hi) result(e)
+        real(real64), intent(in) :: zr, zi, scale, lo, hi
+        real(real64) :: e, xr, xi, m, sr, si
+        xr = zr/scale
+        xi = zi/scale
+        if (xi == 0.0_real64) then
+            sr = sqrt(max(xr, 0.0_real64))
+            si = sqrt(max(-xr, 0.0_real64))
+        else
+            m = sqrt(xr*xr + xi*xi)
+            if (xr >= 0.0_real64) then
+                sr = sqrt(0.5_real64*(m + xr))
+                si = 0.5_real64*xi/sr
+            else
+                si = sqrt(0.5_real64*(m - xr))
+                sr = 0.5_real64*xi/si
+            end if
+        end if
+        e = ellipse_excess(sr, si, lo, hi)
+        if (lo < 0.0_real64) e = min(e, ellipse_excess(-sr, si, lo, hi))
+    end function root_excess
+
+    !> `ellipse_excess` of the nearest preimage of z = zr + i zi on a `kind_full` panel:
+    !! s^2 (3 - 2 s) = t = z/scale at s = 1/2 - sin((asin(1 - 2 t) + 2 pi m)/3), m = 0, 1,
+    !! 2; the ends' double ones (s = 0 of the apse, k = 1; s = 1 of the start, k = 3)
+    !! removed by the substitution, none near the panel for |t| > 1e6.
+    pure function full_excess(k, zr, zi, scale, lo, hi) result(e)
+        integer, intent(in) :: k
+        real(real64), intent(in) :: zr, zi, scale, lo, hi
+        real(real64) :: e
+        complex(real64) :: t, arc, point
+        integer :: m
+        e = huge(1.0_real64)
+        t = cmplx(zr, zi, real64)/scale
+        if (abs(t) > 1.0e6_real64) return
+        arc = asin(1.0_real64 - 2.0_real64*t)
+        do m = 0, 2
+            point = 0.5_real64 - sin((arc + real(2*m, real64)*acos(-1.0_real64))/3.0_real64)
+            if ((k == 1 .and. abs(point) < 1.0e-6_real64) .or. &
+                (k == 3 .and. abs(1.0_real64 - point) < 1.0e-6_real64)) cycle
+            e = min(e, ellipse_excess(real(point), aimag(point), lo, hi))
+        end do
+    end function full_excess
+
+    !> acosh(1 + e), e >= 0: log(1 + y), y = e + sqrt(e (e + 2)), with Kahan's correction
+    !! of log(1 + y).
+    elemental function acosh_1p(e) result(l)
+        real(real64), intent(in) :: e
+        real(real64) :: l, y, v
+        y = e + sqrt(e*(e + 2.0_real64))
+        v = 1.0_real64 + y
+        if (v == 1.0_real64) then
+            l = y
+        else
+            l = log(v)*(y/(v - 1.0_real64))
+        end if
+    end function acosh_1p
+
+    !> A bound below `acosh_1p(e)` without logarithm (with a margin for its rounding):
+    !! log(1 + y) >= 2 y/(2 + y), and >= log y >= (exponent(y) - 1) log 2.
+    elemental function acosh_below(e) result(l)
+        real(real64), intent(in) :: e
+        real(real64) :: l, y
+        y = e + sqrt(e*(e + 2.0_real64))
+        l = (1.0_real64 - 1.0e-12_real64)*max(2.0_real64*y/(2.0_real64 + y), &
+            real(exponent(y) - 1, real64)*log(2.0_real64))
+    end function acosh_below
 
     !> The rule (element of model%gauss) for `digits` digits on a panel. An n-point
     !! rule errs by about M rho^(-2n) on the Bernstein ellipse rho (up to the nearest
     !! singularity, log_rho); the integrands decay like exp(-kappa tau) along the panel,
     !! so M grows like exp(kappa h ((rho + 1/rho)/2 - 1)) on an ellipse about a plain
     !! panel of half-length h (growth = kappa h): the smallest n over a few rho <= the
-    !! singular one is taken.
+    !! singular one is taken (a smaller ellipse only where its bound without the growth,
+    !! which rises as rho falls, is below the least so far: the same n without its cosh).
     pure function rule_for(log_rho, digits, growth) result(j)
         real(real64), intent(in) :: log_rho
         real(qp), intent(in) :: digits
@@ -992,14 +1057,18 @@ contains
         real(real64), parameter :: fractions(8) = [1.0_real64, 0.7_real64, 0.5_real64, &
             0.35_real64, 0.25_real64, 0.18_real64, 0.12_real64, 0.08_real64]
         target = real(max(digits, 2.0_qp), real64)*log(10.0_real64)
-        best = huge(1.0_real64)
-        do k = 1, size(fractions)
-            ! without growth the full ellipse is best
-            if (growth == 0.0_real64 .and. k > 1) exit
-            lr = log_rho*fractions(k)
-            need = (target + growth*(cosh(lr) - 1.0_real64))/(2.0_real64*lr)
-            best = min(best, need)
-        end do
+        lr = log_rho
+        best = target/(2.0_real64*lr)
+        ! without growth the full ellipse is best
+        if (growth /= 0.0_real64) then
+            best = huge(1.0_real64)
+            do k = 1, size(fractions)
+                lr = log_rho*fractions(k)
+                if (target/(2.0_real64*lr) >= best) exit
+                need = (target + growth*(cosh(lr) - 1.0_real64))/(2.0_real64*lr)
+                best = min(best, need)
+            end do
+        end if
         if (best > real(max_nodes, real64)) then
             j = max_nodes/2
         else
