@@ -151,6 +151,12 @@ module brachistochrone_central_force
         type(gauss_nodes) :: gauss(max_nodes/2)   !! rules with 2j nodes
         real(qp) :: sigma_apse = 1.0_qp           !! singularity distance, apse side
         real(qp) :: sigma_start = 1.0_qp          !! singularity distance, start side
+        !> the panel layouts' constants (`set_layout_constants`, from the sigmas): pi/sigma_apse
+        !! (Theta's decay rate), the root panels' scales min(1, sigma/2), the ladder's
+        !! longest panels ladder sigma, and the sigmas and the decay rate in double precision
+        real(qp) :: decay_apse = pi, root_apse = 0.5_qp, root_start = 0.5_qp
+        real(qp) :: ladder_apse = ladder, ladder_start = ladder
+        real(real64) :: sigma64(2) = 1.0_real64, decay64 = acos(-1.0_real64)
         !> the whole-half-arch integrals beyond the tables below (Lambda in [table_high,
         !! far_high]), the pieces that passed their check, Theta's and its slope's in
         !! hardware precision (`build_far_tables`)
@@ -239,12 +245,26 @@ contains
         sigma = law%log_scales()
         model%sigma_apse = sigma(1)
         model%sigma_start = sigma(2)
+        call set_layout_constants(model)
         if (present(tables)) then
             if (.not. tables) return
         end if
         call build_whole_tables(model)
         call build_far_tables(model)
     end function new_central_force_model
+
+    !> The constants of the panel layouts from the sigmas (the same expressions as where
+    !! they are used: the same values).
+    pure subroutine set_layout_constants(model)
+        type(central_force_model), intent(inout) :: model
+        model%decay_apse = pi/model%sigma_apse
+        model%root_apse = min(1.0_qp, 0.5_qp*model%sigma_apse)
+        model%root_start = min(1.0_qp, 0.5_qp*model%sigma_start)
+        model%ladder_apse = ladder*model%sigma_apse
+        model%ladder_start = ladder*model%sigma_start
+        model%sigma64 = real([model%sigma_apse, model%sigma_start], real64)
+        model%decay64 = real(model%decay_apse, real64)
+    end subroutine set_layout_constants
 
     !> The apse data of the whole half-arch (weights 1) at Lambda = -log R.
     pure function whole_setup(model, big_lambda) result(a)
@@ -698,7 +718,7 @@ contains
                 ! continued from it to meet, or ladder sigma_apse further (the apse's
                 ! singularities stay away in s: fewer nodes than the root panel's piece
                 ! and the ladder's first panels)
-                lo = min(meet, a%lambda_r + ladder*model%sigma_apse)
+                lo = min(meet, a%lambda_r + model%ladder_apse)
                 call push(panels, count, panel(kind_apse_root, split_root(a%lambda_r/b), &
                           split_root(lo/b), b, a%weight_above, 1.0_real64))
             else
@@ -709,14 +729,14 @@ contains
             end if
             ! where the integrated region starts (the apse unless its weight is 0)
             origin = merge(0.0_qp, a%lambda_r, a%weight_below > 0.0_qp)
-            decay_rate = pi/model%sigma_apse
+            decay_rate = model%decay_apse
             do while (lo < meet)
                 ! past exp(-300) of the integrands at the origin: nothing more to add
                 if (decay_rate*(lo - origin) > 300.0_qp) exit
                 ! growth `ladder`, length at most ladder sigma: the integrands decay like
                 ! exp(-pi lambda/sigma_apse), which grows as fast off the real axis
-                hi = min(ladder*lo, lo + ladder*model%sigma_apse, meet)
-                if (hi > 0.75_qp*meet .and. meet - lo <= ladder*model%sigma_apse) hi = meet
+                hi = min(ladder*lo, lo + model%ladder_apse, meet)
+                if (hi > 0.75_qp*meet .and. meet - lo <= model%ladder_apse) hi = meet
                 call add_split(panels, count, kind_apse, lo, hi, 1.0_qp, a%lambda_r, a)
                 lo = hi
             end do
@@ -733,9 +753,9 @@ contains
                            c, split_root(a%delta_r/c), a)
             lo = top
             do while (lo < a%big_lambda - meet)
-                hi = min(ladder*lo, lo + ladder*model%sigma_start, a%big_lambda - meet)
+                hi = min(ladder*lo, lo + model%ladder_start, a%big_lambda - meet)
                 if (hi > 0.75_qp*(a%big_lambda - meet) .and. &
-                    a%big_lambda - meet - lo <= ladder*model%sigma_start) &
+                    a%big_lambda - meet - lo <= model%ladder_start) &
                     hi = a%big_lambda - meet
                 call add_split(start_side, n_start, kind_start, lo, hi, 1.0_qp, a%delta_r, a)
                 lo = hi
@@ -756,8 +776,8 @@ contains
         type(central_force_model), intent(in) :: model
         type(arch_setup), intent(in) :: a
         real(qp), intent(out) :: b, c
-        b = min(1.0_qp, 0.5_qp*model%sigma_apse)
-        c = min(1.0_qp, 0.5_qp*model%sigma_start)
+        b = model%root_apse
+        c = model%root_start
         if (a%weight_above == 0.0_qp .and. a%lambda_r > b .and. a%lambda_r <= 4.0_qp*b &
             .and. a%lambda_r + c < a%big_lambda) then
             b = a%lambda_r
@@ -898,7 +918,7 @@ contains
         lo = real(p%lo, real64)
         hi = real(p%hi, real64)
         scale = real(p%scale, real64)
-        kappa = real(pi/model%sigma_apse, real64)
+        kappa = model%decay64
         if (present(unweighted)) then
             if (unweighted) kappa = 0.0_real64
         end if
@@ -911,9 +931,8 @@ contains
         side = merge(1.0_real64, -1.0_real64, apse_side)
         re = [0.0_real64, 0.0_real64, real(big_lambda, real64), real(big_lambda, real64), &
               0.0_real64]
-        im = [0.0_real64, real(merge(model%sigma_apse, model%sigma_start, apse_side), &
-              real64), 0.0_real64, real(merge(model%sigma_start, model%sigma_apse, &
-              apse_side), real64), 2.0_real64]
+        im = [0.0_real64, merge(model%sigma64(1), model%sigma64(2), apse_side), 0.0_real64, &
+              merge(model%sigma64(2), model%sigma64(1), apse_side), 2.0_real64]
         ! the panel's point nearest the apse (its largest integrands), from its own end
         select case (p%kind)
         case (kind_apse_root)
@@ -1434,7 +1453,7 @@ contains
         call root_scales(model, both, b(1), c(1))
         call root_scales(model, below, b(2), c(2))
         call root_scales(model, above, b(3), c(3))
-        if (pi/model%sigma_apse*a%big_lambda <= 250.0_qp .and. all(b == b(1)) .and. &
+        if (model%decay_apse*a%big_lambda <= 250.0_qp .and. all(b == b(1)) .and. &
             all(c == c(1)) .and. .not. continued_root(above, b(3), c(3))) &
             call arch_panels(model, both, panels, count)
         if (count >= max_panels) then
