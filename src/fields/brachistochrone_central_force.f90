@@ -798,6 +798,131 @@ contains
             a%big_lambda > b + c
     end function continued_root
 
+    !> `arch_panels` in hardware precision, for the early phase (`theta_xp`): the same
+    !! rules on Lambda, lambda_r and delta_r rounded to the hardware kind, the panels'
+    !! ends and splits hardware numbers. Not for binary128 sums (the two sides' ends and
+    !! the splits at the endpoint are exact only to the hardware kind's rounding); the
+    !! early phase's nodes and sums are in that kind, and its root is checked by the
+    !! certified binary128 step (`final_step`).
+    pure subroutine arch_panels_xp(model, a, panels, count)
+        type(central_force_model), intent(in) :: model
+        type(arch_setup), intent(in) :: a
+        type(panel), intent(out) :: panels(max_panels)
+        integer, intent(out) :: count
+        real(xp), parameter :: steps = real(ladder, xp)
+        real(xp) :: x(3), b, c, meet, lo, hi, origin, top, rest, longest
+        type(panel) :: start_side(max_panels)
+        integer :: n_start, k
+        count = 0
+        x = real([a%big_lambda, a%lambda_r, a%delta_r], xp)
+        call root_scales_xp(model, a, x, b, c)
+        if (x(1) <= 0.125_xp*(b + c)) then
+            ! a short arch (rare: R next to 1): `arch_panels`' one panel
+            call arch_panels(model, a, panels, count)
+            return
+        end if
+        if (x(1) <= b + c) then
+            b = x(1)*b/(b + c)
+            c = x(1) - b
+            call add_split_xp(panels, count, kind_apse_root, 0.0_xp, 1.0_xp, b, &
+                              sqrt(x(2)/b), a)
+            call add_split_xp(panels, count, kind_start_root, 0.0_xp, 1.0_xp, c, &
+                              sqrt(x(3)/c), a)
+            return
+        end if
+        meet = max(b, min(x(1) - c, x(1)*b/(b + c)))
+        longest = real(model%ladder_apse, xp)
+        if (continued_root_xp(a, x, b, c)) then
+            lo = min(meet, x(2) + longest)
+            call push(panels, count, panel(kind_apse_root, real(sqrt(x(2)/b), qp), &
+                      real(sqrt(lo/b), qp), real(b, qp), a%weight_above, 1.0_real64))
+        else
+            call add_split_xp(panels, count, kind_apse_root, 0.0_xp, 1.0_xp, b, &
+                              sqrt(x(2)/b), a)
+            lo = b
+        end if
+        origin = merge(0.0_xp, x(2), a%weight_below > 0.0_qp)
+        do while (lo < meet)
+            if (real(model%decay_apse, xp)*(lo - origin) > 300.0_xp) exit
+            hi = min(steps*lo, lo + longest, meet)
+            if (hi > 0.75_xp*meet .and. meet - lo <= longest) hi = meet
+            call add_split_xp(panels, count, kind_apse, lo, hi, 1.0_xp, x(2), a)
+            lo = hi
+        end do
+        if (real(model%decay_apse, xp)*(meet - origin) > 300.0_xp) return
+        rest = x(1) - meet
+        top = rest
+        if (top > 2.5_xp*steps*c) top = 2.0_xp*steps*c
+        n_start = 0
+        call add_split_xp(start_side, n_start, kind_start_root, 0.0_xp, sqrt(top/c), c, &
+                          sqrt(x(3)/c), a)
+        lo = top
+        longest = real(model%ladder_start, xp)
+        do while (lo < rest)
+            hi = min(steps*lo, lo + longest, rest)
+            if (hi > 0.75_xp*rest .and. rest - lo <= longest) hi = rest
+            call add_split_xp(start_side, n_start, kind_start, lo, hi, 1.0_xp, x(3), a)
+            lo = hi
+        end do
+        do k = n_start, 1, -1
+            if (count >= max_panels) exit
+            count = count + 1
+            panels(count) = start_side(k)
+        end do
+    end subroutine arch_panels_xp
+
+    !> `root_scales` in hardware precision, x = [Lambda, lambda_r, delta_r].
+    pure subroutine root_scales_xp(model, a, x, b, c)
+        type(central_force_model), intent(in) :: model
+        type(arch_setup), intent(in) :: a
+        real(xp), intent(in) :: x(3)
+        real(xp), intent(out) :: b, c
+        b = real(model%root_apse, xp)
+        c = real(model%root_start, xp)
+        if (a%weight_above == 0.0_qp .and. x(2) > b .and. x(2) <= 4.0_xp*b .and. &
+            x(2) + c < x(1)) then
+            b = x(2)
+        else if (a%weight_below == 0.0_qp .and. x(3) > c .and. x(3) <= 4.0_xp*c .and. &
+                 x(3) + b < x(1)) then
+            c = x(3)
+        end if
+    end subroutine root_scales_xp
+
+    !> `continued_root` in hardware precision, x = [Lambda, lambda_r, delta_r].
+    pure logical function continued_root_xp(a, x, b, c)
+        type(arch_setup), intent(in) :: a
+        real(xp), intent(in) :: x(3), b, c
+        continued_root_xp = .false.
+        if (a%weight_below /= 0.0_qp .or. x(1) <= b + c) return
+        continued_root_xp = x(2) >= 0.25_xp*b .and. x(2) < max(b, min(x(1) - c, x(1)*b/(b + c)))
+    end function continued_root_xp
+
+    !> `add_split` in hardware precision (the panels' ends rounded to binary128 exactly).
+    pure subroutine add_split_xp(panels, count, kind, lo, hi, scale, split, a)
+        type(panel), intent(inout) :: panels(:)
+        integer, intent(inout) :: count
+        integer, intent(in) :: kind
+        real(xp), intent(in) :: lo, hi, scale, split
+        type(arch_setup), intent(in) :: a
+        real(qp) :: w_lo, w_hi
+        logical :: reversed
+        reversed = kind == kind_start .or. kind == kind_start_root
+        w_lo = merge(a%weight_above, a%weight_below, reversed)
+        w_hi = merge(a%weight_below, a%weight_above, reversed)
+        if (split <= lo) then
+            call push(panels, count, panel(kind, real(lo, qp), real(hi, qp), real(scale, qp), &
+                                           w_hi, 1.0_real64))
+        else if (split >= hi) then
+            call push(panels, count, panel(kind, real(lo, qp), real(hi, qp), real(scale, qp), &
+                                           w_lo, 1.0_real64))
+        else
+            call push(panels, count, panel(kind, real(lo, qp), real(split, qp), &
+                                           real(scale, qp), w_lo, 1.0_real64))
+            call push(panels, count, panel(kind, real(split, qp), real(hi, qp), &
+                                           real(scale, qp), w_hi, 1.0_real64))
+        end if
+    end subroutine add_split_xp
+
     !> sqrt(z) for the root panels' splits, within an ulp: the hardware kind's square root
     !! and one correction (z - s^2)/(2 s) in it (libquadmath's sqrtq costs about ten
     !! binary128 multiplications); sqrt itself where that kind has no 64-bit significand.
@@ -1428,18 +1553,22 @@ contains
     !! the integrands where the weighted region starts, which the cut never reaches
     !! where the decay rate pi/sigma_apse times Lambda is below 250 (the tables' range
     !! but for the steepest laws), and for the root panel up to an endpoint inside the
-    !! first ladder panel (`root_scales`). Elsewhere two layouts.
+    !! first ladder panel (`root_scales`). Elsewhere two layouts. With `hardware` (the
+    !! early phase) the layouts of `arch_panels_xp`.
     pure subroutine split_panels(model, a, below, panels_below, n_below, above, &
-                                 panels_above, n_above)
+                                 panels_above, n_above, hardware)
         type(central_force_model), intent(in) :: model
         type(arch_setup), intent(in) :: a
         type(arch_setup), intent(out) :: below, above
         type(panel), intent(out) :: panels_below(max_panels), panels_above(max_panels)
         integer, intent(out) :: n_below, n_above
+        logical, intent(in), optional :: hardware
         type(arch_setup) :: both
         type(panel) :: panels(max_panels)
         real(qp) :: b(3), c(3)
+        real(xp) :: bx(3), cx(3), x(3)
         integer :: count, p
+        logical :: fast, one_layout
         below = a
         below%weight_below = 1.0_qp
         below%weight_above = 0.0_qp
@@ -1450,15 +1579,28 @@ contains
         both = a
         both%weight_below = 1.0_qp
         both%weight_above = 2.0_qp
-        call root_scales(model, both, b(1), c(1))
-        call root_scales(model, below, b(2), c(2))
-        call root_scales(model, above, b(3), c(3))
-        if (model%decay_apse*a%big_lambda <= 250.0_qp .and. all(b == b(1)) .and. &
-            all(c == c(1)) .and. .not. continued_root(above, b(3), c(3))) &
-            call arch_panels(model, both, panels, count)
+        fast = .false.
+        if (present(hardware)) fast = hardware
+        if (fast) then
+            x = real([a%big_lambda, a%lambda_r, a%delta_r], xp)
+            call root_scales_xp(model, both, x, bx(1), cx(1))
+            call root_scales_xp(model, below, x, bx(2), cx(2))
+            call root_scales_xp(model, above, x, bx(3), cx(3))
+            one_layout = real(model%decay_apse, xp)*x(1) <= 250.0_xp .and. &
+                all(bx == bx(1)) .and. all(cx == cx(1)) .and. &
+                .not. continued_root_xp(above, x, bx(3), cx(3))
+        else
+            call root_scales(model, both, b(1), c(1))
+            call root_scales(model, below, b(2), c(2))
+            call root_scales(model, above, b(3), c(3))
+            one_layout = model%decay_apse*a%big_lambda <= 250.0_qp .and. &
+                all(b == b(1)) .and. all(c == c(1)) .and. &
+                .not. continued_root(above, b(3), c(3))
+        end if
+        if (one_layout) call layout(both, panels, count)
         if (count >= max_panels) then
-            call arch_panels(model, below, panels_below, n_below)
-            call arch_panels(model, above, panels_above, n_above)
+            call layout(below, panels_below, n_below)
+            call layout(above, panels_above, n_above)
             return
         end if
         n_below = 0
@@ -1473,6 +1615,18 @@ contains
                 panels_above(n_above)%weight = 1.0_qp
             end if
         end do
+    contains
+        !> `arch_panels` or `arch_panels_xp`
+        pure subroutine layout(setup, list, n)
+            type(arch_setup), intent(in) :: setup
+            type(panel), intent(out) :: list(max_panels)
+            integer, intent(out) :: n
+            if (fast) then
+                call arch_panels_xp(model, setup, list, n)
+            else
+                call arch_panels(model, setup, list, n)
+            end if
+        end subroutine layout
     end subroutine split_panels
 
     !> Whether the first half-arch (weights 0, 1) must be int_lambda_r^Lambda in the early
@@ -1952,7 +2106,7 @@ contains
             ! as `table_sums`, Theta scaled by exp(shift)
             if (shift /= 0.0_xp) whole = whole*exp(shift)
             call split_panels(model, a, below, panels_below, n_below, above, panels_above, &
-                              n_above)
+                              n_above, hardware=.true.)
             ! (the hardware-precision evaluations straight to int_lambda_r^Lambda where the
             ! check below is bound to fail)
             use_below = n_below <= n_above .and. &
