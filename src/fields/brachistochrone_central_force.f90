@@ -357,7 +357,7 @@ contains
         real(xp), intent(out) :: values(2)
         logical, intent(out) :: found
         real(xp) :: position, t
-        integer :: piece, m, j
+        integer :: piece, j
         values = 0.0_xp
         found = .false.
         if (big_lambda > real(table_high, xp)) then
@@ -372,11 +372,10 @@ contains
         piece = min(table_pieces, max(1, int(position) + 1))
         if (.not. model%whole_ok(piece)) return
         t = 2.0_xp*(position - real(piece - 1, xp)) - 1.0_xp
-        do m = 1, 2
-            values(m) = model%whole_xp(table_points, piece, m)
-            do j = table_points - 1, 1, -1
-                values(m) = values(m)*t + model%whole_xp(j, piece, m)
-            end do
+        ! (the two Horner sums side by side: two independent chains of dependent steps)
+        values = model%whole_xp(table_points, piece, :)
+        do j = table_points - 1, 1, -1
+            values = values*t + model%whole_xp(j, piece, :)
         end do
         ! the slope's table holds its logarithm
         values(2) = exp(values(2))
@@ -2167,7 +2166,7 @@ contains
             count = given_count
             panels(1:count) = given(1:count)
         else
-            call arch_panels(model, a, panels, count)
+            call arch_panels_xp(model, a, panels, count)
         end if
         theta = 0.0_xp
         slope = 0.0_xp
