@@ -157,6 +157,10 @@ module brachistochrone_central_force
         real(qp) :: decay_apse = pi, root_apse = 0.5_qp, root_start = 0.5_qp
         real(qp) :: ladder_apse = ladder, ladder_start = ladder
         real(real64) :: sigma64(2) = 1.0_real64, decay64 = acos(-1.0_real64)
+        !> decay_apse, root_apse, root_start, ladder_apse, ladder_start in hardware precision
+        !! (`arch_panels_xp`)
+        real(xp) :: layout_xp(5) = [acos(-1.0_xp), 0.5_xp, 0.5_xp, real(ladder, xp), &
+                                    real(ladder, xp)]
         !> the whole-half-arch integrals beyond the tables below (Lambda in [table_high,
         !! far_high]), the pieces that passed their check, Theta's and its slope's in
         !! hardware precision (`build_far_tables`)
@@ -264,6 +268,8 @@ contains
         model%ladder_start = ladder*model%sigma_start
         model%sigma64 = real([model%sigma_apse, model%sigma_start], real64)
         model%decay64 = real(model%decay_apse, real64)
+        model%layout_xp = real([model%decay_apse, model%root_apse, model%root_start, &
+                                model%ladder_apse, model%ladder_start], xp)
     end subroutine set_layout_constants
 
     !> The apse data of the whole half-arch (weights 1) at Lambda = -log R.
@@ -830,7 +836,7 @@ contains
             return
         end if
         meet = max(b, min(x(1) - c, x(1)*b/(b + c)))
-        longest = real(model%ladder_apse, xp)
+        longest = model%layout_xp(4)
         if (continued_root_xp(a, x, b, c)) then
             lo = min(meet, x(2) + longest)
             call push(panels, count, panel(kind_apse_root, real(sqrt(x(2)/b), qp), &
@@ -842,13 +848,13 @@ contains
         end if
         origin = merge(0.0_xp, x(2), a%weight_below > 0.0_qp)
         do while (lo < meet)
-            if (real(model%decay_apse, xp)*(lo - origin) > 300.0_xp) exit
+            if (model%layout_xp(1)*(lo - origin) > 300.0_xp) exit
             hi = min(steps*lo, lo + longest, meet)
             if (hi > 0.75_xp*meet .and. meet - lo <= longest) hi = meet
             call add_split_xp(panels, count, kind_apse, lo, hi, 1.0_xp, x(2), a)
             lo = hi
         end do
-        if (real(model%decay_apse, xp)*(meet - origin) > 300.0_xp) return
+        if (model%layout_xp(1)*(meet - origin) > 300.0_xp) return
         rest = x(1) - meet
         top = rest
         if (top > 2.5_xp*steps*c) top = 2.0_xp*steps*c
@@ -856,7 +862,7 @@ contains
         call add_split_xp(start_side, n_start, kind_start_root, 0.0_xp, sqrt(top/c), c, &
                           sqrt(x(3)/c), a)
         lo = top
-        longest = real(model%ladder_start, xp)
+        longest = model%layout_xp(5)
         do while (lo < rest)
             hi = min(steps*lo, lo + longest, rest)
             if (hi > 0.75_xp*rest .and. rest - lo <= longest) hi = rest
@@ -876,8 +882,8 @@ contains
         type(arch_setup), intent(in) :: a
         real(xp), intent(in) :: x(3)
         real(xp), intent(out) :: b, c
-        b = real(model%root_apse, xp)
-        c = real(model%root_start, xp)
+        b = model%layout_xp(2)
+        c = model%layout_xp(3)
         if (a%weight_above == 0.0_qp .and. x(2) > b .and. x(2) <= 4.0_xp*b .and. &
             x(2) + c < x(1)) then
             b = x(2)
@@ -1585,7 +1591,7 @@ contains
             call root_scales_xp(model, both, x, bx(1), cx(1))
             call root_scales_xp(model, below, x, bx(2), cx(2))
             call root_scales_xp(model, above, x, bx(3), cx(3))
-            one_layout = real(model%decay_apse, xp)*x(1) <= 250.0_xp .and. &
+            one_layout = model%layout_xp(1)*x(1) <= 250.0_xp .and. &
                 all(bx == bx(1)) .and. all(cx == cx(1)) .and. &
                 .not. continued_root_xp(above, x, bx(3), cx(3))
         else
