@@ -1733,7 +1733,8 @@ contains
         type(panel) :: panels(max_panels)
         real(real64) :: part, last, v, lambda, delta, jacobian, g, big, scale, share
         integer :: count, p, k, j
-        call arch_panels(model, a, panels, count)
+        ! (the layout in hardware precision: the sums are in double)
+        call arch_panels_xp(model, a, panels, count)
         theta = 0.0_real64
         last = 0.0_real64
         big = real(a%big_lambda, real64)
