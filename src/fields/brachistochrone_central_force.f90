@@ -149,6 +149,18 @@ module brachistochrone_central_force
         real(xp), allocatable :: offset_xp(:), weight_xp(:)
     end type gauss_nodes
 
+    !> Five tables on the same pieces (`chebyshev_table`s: `whole`, `far`) in parts for
+    !! evaluation (`split_tables`, `table_value`): the powers of t from split(piece, m) on,
+    !! whose sum of sizes is below 2^-60 of the value's (the slopes' logarithms, m = 4, 5:
+    !! below 2^-10), in hardware precision (tail_xp(j, piece, m)); those below as pairs of
+    !! the hardware kind (pair_xp(j, piece, m, 1:2), their sum exact), summed in pairs
+    !! where that is within its bound (pair_ok), else in binary128.
+    type :: table_parts
+        real(xp), allocatable :: tail_xp(:, :, :), pair_xp(:, :, :, :)
+        integer, allocatable :: split(:, :)
+        logical, allocatable :: pair_ok(:, :)
+    end type table_parts
+
     !> The general engine for one speed law: the law and the Gauss rules.
     type :: central_force_model
         class(speed_law), allocatable :: law      !! the force field
@@ -178,16 +190,9 @@ module brachistochrone_central_force
         logical :: whole_ok(table_pieces) = .false.
         !> Theta's table and its slope's in hardware precision (powers of t per piece)
         real(xp), allocatable :: whole_xp(:, :, :)
-        !> Theta, S and T tables: the powers of t from whole_split(piece, m) on, whose
-        !! sum of sizes is below 2^-60 of the value's, in hardware precision
-        !! (`whole_value`); the slopes' (logarithms): below 2^-10
-        real(xp), allocatable :: whole_tail_xp(:, :, :)
-        integer :: whole_split(table_pieces, 5) = table_points
-        !> the powers of t below whole_split(piece, m) as pairs of the hardware kind (their
-        !! sum exact: whole_pair_xp(j, piece, m, 1:2)), and where Horner's rule in those
-        !! pairs is within its bound (`split_whole_tables`, `pair_horner`)
-        real(xp), allocatable :: whole_pair_xp(:, :, :, :)
-        logical :: whole_pair_ok(table_pieces, 5) = .false.
+        !> the five whole tables and the five far tables in parts of the hardware kind
+        !! (`split_tables`, `table_value`)
+        type(table_parts) :: whole_parts, far_parts
     contains
         procedure :: half_arch => general_half_arch    !! theta, s, t at r (eqs. 27-41)
         procedure :: apse_angle => general_apse_angle  !! Theta(R,R)
@@ -356,7 +361,7 @@ contains
         end do
         model%whole_xp = reshape(real([model%whole(1)%power, model%whole(4)%power], xp), &
                                  [table_points, table_pieces, 2])
-        call split_whole_tables(model, values)
+        model%whole_parts = split_tables(model%whole, values)
         width = (upper - lower)/real(table_pieces, qp)
         do piece = 1, table_pieces
             model%whole_ok(piece) = piece_agrees(model, lower, width, piece, .false.) &
@@ -421,7 +426,7 @@ contains
                     log(table_low))*real(table_pieces, qp)) + 1))
         if (.not. model%whole_ok(piece)) return
         ! (the five tables share their pieces: t once)
-        call whole_point(model, z, piece, t, t_pair)
+        call whole_point(model%whole(1), z, piece, t, t_pair)
         do m = 1, wanted
             call whole_value(model, m, piece, t, t_pair, values(m))
         end do
@@ -438,81 +443,93 @@ contains
     !! exact, a has 113 bits), summed by `pair_horner` where its bound, 12 (split + 1)
     !! 2^-128 times the sum of all the coefficients' sizes, is below 2^-117 of the least
     !! size (and the hardware kind is x87 extended; elsewhere Horner in binary128).
-    subroutine split_whole_tables(model, values)
-        type(central_force_model), intent(inout) :: model
+    pure function split_tables(tables, values) result(parts)
+        type(chebyshev_table), intent(in) :: tables(5)  !! on the same pieces
         real(qp), intent(in) :: values(:, :, :)  !! the tabulated values (point, piece, m)
+        type(table_parts) :: parts
         real(qp) :: least, tail
-        integer :: piece, m, j, used
-        allocate (model%whole_tail_xp(0:table_points - 1, table_pieces, 5))
-        allocate (model%whole_pair_xp(0:table_points - 1, table_pieces, 5, 2))
-        model%whole_tail_xp = 0.0_xp
-        model%whole_pair_xp = 0.0_xp
+        integer :: piece, m, j, used, points, pieces
+        points = tables(1)%terms
+        pieces = tables(1)%pieces
+        allocate (parts%tail_xp(0:points - 1, pieces, 5), parts%pair_xp(0:points - 1, &
+                  pieces, 5, 2), parts%split(pieces, 5), parts%pair_ok(pieces, 5))
+        parts%tail_xp = 0.0_xp
+        parts%pair_xp = 0.0_xp
         do m = 1, 5
-            do piece = 1, table_pieces
+            do piece = 1, pieces
                 ! (no associate: a section's name would start at 1)
-                used = model%whole(m)%used(piece)
+                used = tables(m)%used(piece)
                 least = 0.5_qp*minval(abs(values(:, piece, m)))
                 if (m > 3) least = 2.0_qp**50
-                model%whole_split(piece, m) = used
+                parts%split(piece, m) = used
                 tail = 0.0_qp
                 do j = used - 1, 1, -1
-                    tail = tail + abs(model%whole(m)%power(j, piece))
+                    tail = tail + abs(tables(m)%power(j, piece))
                     if (.not. (tail <= 2.0_qp**(-60)*least)) exit
-                    model%whole_split(piece, m) = j
+                    parts%split(piece, m) = j
                 end do
-                model%whole_tail_xp(0:used - 1, piece, m) = &
-                    real(model%whole(m)%power(0:used - 1, piece), xp)
-                associate (a => model%whole(m)%power(0:used - 1, piece), &
-                           split => model%whole_split(piece, m))
-                model%whole_pair_xp(0:used - 1, piece, m, 1) = real(a, xp)
-                model%whole_pair_xp(0:used - 1, piece, m, 2) = &
-                    real(a - real(model%whole_pair_xp(0:used - 1, piece, m, 1), qp), xp)
-                model%whole_pair_ok(piece, m) = pair_kind .and. 12.0_qp*real(split + 1, qp)* &
+                associate (a => tables(m)%power(0:used - 1, piece), &
+                           split => parts%split(piece, m))
+                parts%tail_xp(0:used - 1, piece, m) = real(a, xp)
+                parts%pair_xp(0:used - 1, piece, m, 1) = real(a, xp)
+                parts%pair_xp(0:used - 1, piece, m, 2) = &
+                    real(a - real(parts%pair_xp(0:used - 1, piece, m, 1), qp), xp)
+                parts%pair_ok(piece, m) = pair_kind .and. 12.0_qp*real(split + 1, qp)* &
                     2.0_qp**(-128)*sum(abs(a)) <= 2.0_qp**(-117)*least
                 end associate
             end do
         end do
-    end subroutine split_whole_tables
+    end function split_tables
 
     !> The piece of the whole-half-arch tables holding z = log Lambda (the five tables
     !! share their pieces) and t in [-1, 1] there, also as a pair of the hardware kind
     !! (t_pair(1) + t_pair(2) = t exactly: t has 113 bits).
-    pure subroutine whole_point(model, z, piece, t, t_pair)
-        type(central_force_model), intent(in) :: model
+    pure subroutine whole_point(table, z, piece, t, t_pair)
+        type(chebyshev_table), intent(in) :: table  !! `whole(1)` (`far(1)`)
         real(qp), intent(in) :: z
         integer, intent(out) :: piece
         real(qp), intent(out) :: t
         real(xp), intent(out) :: t_pair(2)
         real(qp) :: width, position
-        associate (table => model%whole(1))
         width = (table%upper - table%lower)/real(table%pieces, qp)
         position = (z - table%lower)/width
         piece = min(table%pieces, max(1, int(position) + 1))
         t = 2.0_qp*(position - real(piece - 1, qp)) - 1.0_qp
-        end associate
         t_pair(1) = hardware_real(t)
         t_pair(2) = hardware_real(t - quad_real(t_pair(1)))
     end subroutine whole_point
 
-    !> Table m at t on `piece` (`whole_point`): the powers of t from `whole_split` on in
-    !! hardware precision, the rest in pairs of it (`pair_horner`, where `whole_pair_ok`)
-    !! or in quad precision; the slopes (m = 4, 5) from their logarithms.
+    !> Table m at t on `piece` (`whole_point`): the powers of t from the split on in
+    !! hardware precision, the rest in pairs of it (`pair_horner`, where `pair_ok`) or in
+    !! quad precision; the slopes (m = 4, 5) from their logarithms (`table_parts`).
     pure subroutine whole_value(model, m, piece, t, t_pair, value)
         type(central_force_model), intent(in) :: model
         integer, intent(in) :: m, piece
         real(qp), intent(in) :: t
         real(xp), intent(in) :: t_pair(2)
         real(qp), intent(out) :: value
+        call table_value(model%whole(m), model%whole_parts, m, piece, t, t_pair, value)
+    end subroutine whole_value
+
+    !> `whole_value` for either set of tables (`table`: the m-th of the set `parts` is
+    !! made from).
+    pure subroutine table_value(table, parts, m, piece, t, t_pair, value)
+        type(chebyshev_table), intent(in) :: table
+        type(table_parts), intent(in) :: parts
+        integer, intent(in) :: m, piece
+        real(qp), intent(in) :: t
+        real(xp), intent(in) :: t_pair(2)
+        real(qp), intent(out) :: value
         real(xp) :: high, low
         integer :: j, split
-        split = model%whole_split(piece, m)
+        split = parts%split(piece, m)
         high = 0.0_xp
-        do j = model%whole(m)%used(piece) - 1, split, -1
-            high = high*t_pair(1) + model%whole_tail_xp(j, piece, m)
+        do j = table%used(piece) - 1, split, -1
+            high = high*t_pair(1) + parts%tail_xp(j, piece, m)
         end do
-        if (model%whole_pair_ok(piece, m)) then
-            call pair_horner(model%whole_pair_xp(:, piece, m, 1), &
-                             model%whole_pair_xp(:, piece, m, 2), split, t_pair, high, low)
+        if (parts%pair_ok(piece, m)) then
+            call pair_horner(parts%pair_xp(:, piece, m, 1), parts%pair_xp(:, piece, m, 2), &
+                             split, t_pair, high, low)
             if (m > 3) then
                 ! the slopes' tables hold their logarithms: exp in hardware precision, the
                 ! pair's low part taken as a factor
@@ -524,7 +541,7 @@ contains
         end if
         value = quad_real(high)
         do j = split - 1, 0, -1
-            value = value*t + model%whole(m)%power(j, piece)
+            value = value*t + table%power(j, piece)
         end do
         if (m > 3) then
             ! (as above, from the binary128 logarithm)
@@ -532,7 +549,7 @@ contains
             low = real(value - real(high, qp), xp)
             value = real(exp(high)*(1.0_xp + low), qp)
         end if
-    end subroutine whole_value
+    end subroutine table_value
 
     !> Horner's rule on the powers j < n of t in pairs of the hardware kind (x87 extended,
     !! u = 2^-64): v <- v t + a with v = high + low, t = t_pair(1) + t_pair(2), a = ah(j) +
@@ -603,6 +620,7 @@ contains
                                          maxval(abs(values(:, :, m)))), 0.5_qp*eps_qp, m > 3))
         end do
         model%far_xp = [hardware_copy(model%far(1)), hardware_copy(model%far(4))]
+        model%far_parts = split_tables(model%far, values)
         width = (upper - lower)/real(far_pieces, qp)
         do piece = 1, far_pieces
             model%far_ok(piece) = piece_agrees(model, lower, width, piece, .true.)
@@ -625,14 +643,17 @@ contains
         do side = 1, 2
             z = lower + width*(real(piece - 1, qp) + merge(0.3_qp, 0.71_qp, side == 1))
             direct = whole_direct(model, exp(z))
-            call whole_point(model, z, at, t, t_pair)
-            do m = 1, 5
-                if (far) then
-                    call far_value(model, m, z, table(m))
-                else
+            if (far) then
+                call whole_point(model%far(1), z, at, t, t_pair)
+                do m = 1, 5
+                    call table_value(model%far(m), model%far_parts, m, at, t, t_pair, table(m))
+                end do
+            else
+                call whole_point(model%whole(1), z, at, t, t_pair)
+                do m = 1, 5
                     call whole_value(model, m, at, t, t_pair, table(m))
-                end if
-            end do
+                end do
+            end if
             agrees = table_agrees(model, z, direct, table) .and. agrees
         end do
     end function piece_agrees
@@ -674,31 +695,19 @@ contains
         real(qp), intent(out) :: values(5)
         logical, intent(out) :: found
         integer, intent(in) :: wanted
-        real(qp) :: z
-        integer :: m
+        real(qp) :: z, t
+        real(xp) :: t_pair(2)
+        integer :: m, piece
         values = 0.0_qp
         z = log(big_lambda)
         found = far_piece(model, z) > 0
         if (.not. found) return
+        call whole_point(model%far(1), z, piece, t, t_pair)
         do m = 1, wanted
-            call far_value(model, m, z, values(m))
+            call table_value(model%far(m), model%far_parts, m, piece, t, t_pair, values(m))
         end do
     end subroutine far_lookup
 
-    !> Far table m at z; the slopes (m = 4, 5) from their logarithms (as `whole_value`).
-    pure subroutine far_value(model, m, z, value)
-        type(central_force_model), intent(in) :: model
-        integer, intent(in) :: m
-        real(qp), intent(in) :: z
-        real(qp), intent(out) :: value
-        real(xp) :: high, low
-        call model%far(m)%evaluate(z, value)
-        if (m > 3) then
-            high = real(value, xp)
-            low = real(value - real(high, qp), xp)
-            value = real(exp(high)*(1.0_xp + low), qp)
-        end if
-    end subroutine far_value
 
     !> `whole_lookup_xp` beyond the tables (the far tables' hardware copies).
     pure subroutine far_lookup_xp(model, big_lambda, values, found)
