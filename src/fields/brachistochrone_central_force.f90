@@ -2079,14 +2079,20 @@ contains
         real(xp) :: scaled, scaled_slope, shift, lambda_slope, upsilon, limit, unscale
         call setup_xp(model, prob, x, a, lambda_slope)
         call theta_xp(model, a, rough, scaled, scaled_slope, shift)
-        ! exp(-shift) where used (1 on the second half-arch: no library call)
+        ! exp(-shift) where used (1 on the second half-arch: no library call; form 1 in
+        ! y = log R: where it is a normal number)
         unscale = 1.0_xp
-        if (shift /= 0.0_xp .and. (prob%form /= 1 .or. prob%use_u)) unscale = exp(-shift)
+        if (shift /= 0.0_xp .and. (prob%form /= 1 .or. prob%use_u .or. &
+                                   shift < 11000.0_xp)) unscale = exp(-shift)
         select case (prob%form)
         case (1)
-            ! log(Upsilon/psi) (the unknown u: the ratio first, as `residual64`)
-            if (prob%use_u) then
-                f = log(scaled*unscale/real(prob%psi, xp))
+            ! log(Upsilon/psi), the ratio first (as `residual64`) where Upsilon is a normal
+            ! number: log Upsilon - log psi would err by roundings of |log psi| (1e-17 at
+            ! psi = 1e-30, beyond the certified step's margin), the ratio by its own
+            upsilon = scaled*unscale
+            if (prob%use_u .or. (upsilon >= tiny(1.0_xp) .and. (shift < 11000.0_xp .or. &
+                                                               shift == 0.0_xp))) then
+                f = log(upsilon/real(prob%psi, xp))
             else
                 f = log(max(scaled, tiny(1.0_xp))) - shift - log(real(prob%psi, xp))
             end if
