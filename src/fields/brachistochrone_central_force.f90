@@ -104,6 +104,9 @@ module brachistochrone_central_force
     !! rough evaluations (which end at a step below 1e-5: 12 digits place the next
     !! iterate within about 1e-10)
     real(qp), parameter :: hardware_digits = 20.0_qp, rough_digits = 12.0_qp
+    !> Digits asked of the rough evaluation at R = rho/2 that chooses the early phase's
+    !! unknown and gives its bracket's end (`open_bracket`)
+    real(qp), parameter :: bracket_digits = 8.0_qp
     !> A panel whose bound is below this share of the running sum is skipped.
     real(qp), parameter :: negligible = 1.0e-40_qp
     !> Panel kinds: lambda = b s^2 (from the apse), lambda, delta, delta = c s^2 (from
@@ -1845,11 +1848,13 @@ contains
     !! `hardware_digits` rules, as theta exp(-shift) and slope exp(-shift) (the scaling of
     !! `theta64`). The slope is that of the integrand at fixed lambda (`arch_sums`) plus
     !! the jump of the weights times the integrand at lambda_r = Lambda - delta_r.
-    pure subroutine theta_xp(model, a, rough, theta, slope, shift)
+    pure subroutine theta_xp(model, a, rough, theta, slope, shift, digits)
         type(central_force_model), intent(in) :: model
         type(arch_setup), intent(in) :: a
         logical, intent(in) :: rough   !! 12-digit rules, transcendentals in double
         real(xp), intent(out) :: theta, slope, shift
+        !> the digits asked of the rules (default 12 where `rough`, else 20)
+        real(qp), intent(in), optional :: digits
         type(arch_setup) :: below, above
         type(panel) :: panels_below(max_panels), panels_above(max_panels)
         real(xp) :: whole(2), part, part_slope, w_sign, p_sign, g, omq, log_slope
@@ -1878,10 +1883,10 @@ contains
             end if
             if (use_below) then
                 call panel_theta_xp(model, below, rough, shift, part, part_slope, &
-                                    panels_below, n_below)
+                                    panels_below, n_below, digits)
             else
                 call panel_theta_xp(model, above, rough, shift, part, part_slope, &
-                                    panels_above, n_above)
+                                    panels_above, n_above, digits)
             end if
             ! (the rough evaluations, on 12-digit rules for a root to about 1e-10, lose up
             ! to 10 bits)
@@ -1891,12 +1896,12 @@ contains
                 w_sign = 0.0_xp
                 p_sign = 1.0_xp
                 call panel_theta_xp(model, above, rough, shift, part, part_slope, &
-                                    panels_above, n_above)
+                                    panels_above, n_above, digits)
             end if
             theta = w_sign*whole(1) + p_sign*part
             slope = w_sign*whole(2) + p_sign*part_slope
         else
-            call panel_theta_xp(model, a, rough, shift, theta, slope)
+            call panel_theta_xp(model, a, rough, shift, theta, slope, digits=digits)
         end if
         if (a%weight_below /= a%weight_above .and. a%delta_r > 0.0_qp .and. &
             a%lambda_r > 0.0_qp) then
@@ -1908,7 +1913,7 @@ contains
 
     !> `theta_xp` over the panels of `a` (its weights), without the jump at the endpoint.
     pure subroutine panel_theta_xp(model, a, rough, shift, theta, slope, given, &
-                                   given_count)
+                                   given_count, digits)
         type(central_force_model), intent(in) :: model
         type(arch_setup), intent(in) :: a
         logical, intent(in) :: rough   !! 12-digit rules, transcendentals in double
@@ -1917,6 +1922,7 @@ contains
         !> `arch_panels(model, a, given, given_count)` where the caller has them
         type(panel), intent(in), optional :: given(max_panels)
         integer, intent(in), optional :: given_count
+        real(qp), intent(in), optional :: digits   !! as `theta_xp`'s
         type(panel) :: panels(max_panels)
         real(xp) :: part(2), last, v, lambda, delta, jacobian, g, omq, log_slope, big
         real(xp) :: scale, share, lo, width, exp_shift
@@ -1947,7 +1953,7 @@ contains
                 if (share < 1.0e-24_xp) cycle
             end if
             pan%log_rho = bernstein_log(model, a%big_lambda, pan)
-            j = rule_for(pan%log_rho, merge(rough_digits, hardware_digits, rough) + &
+            j = rule_for(pan%log_rho, asked_digits(rough, digits) + &
                          real(min(0.0_xp, log10(max(share, 1.0e-30_xp))), qp), &
                          panel_growth(pan, 2.0_qp*pi/model%sigma_apse))
             scale = real(pan%scale, xp)
@@ -1970,6 +1976,15 @@ contains
             end associate
         end do
     end subroutine panel_theta_xp
+
+    !> The digits asked of the early phase's rules: `digits` where given, else
+    !! `rough_digits` or `hardware_digits`.
+    pure real(qp) function asked_digits(rough, digits)
+        logical, intent(in) :: rough
+        real(qp), intent(in), optional :: digits
+        asked_digits = merge(rough_digits, hardware_digits, rough)
+        if (present(digits)) asked_digits = digits
+    end function asked_digits
 
     !> `node_point` in hardware precision.
     elemental subroutine node_point_xp(kind, scale, big_lambda, v, lambda, delta, jacobian)
@@ -3169,7 +3184,6 @@ contains
         !! else 0)
         real(real64), intent(out) :: slope_hi
         real(real64) :: f_half, theta_half, scaled, shift, upsilon_slope, lambda_slope
-        real(xp) :: theta_xp_half, slope_xp, shift_xp
         real(qp) :: top, next
         real(real64) :: lo_slope, tangent
         integer :: probe
@@ -3180,17 +3194,13 @@ contains
         slope_hi = 0.0_real64
         prob%slope_lo = 0.0_real64
         if (self%law%has_terms_xp()) then
-            ! as a rough early evaluation (with the tables)
-            call theta_xp(self, setup_at64(self, prob, sqrt(prob%rho - half)), .true., &
-                          theta_xp_half, slope_xp, shift_xp)
-            if (shift_xp /= 0.0_xp) then
-                theta_xp_half = theta_xp_half*exp(-shift_xp)
-                slope_xp = slope_xp*exp(-shift_xp)
-            end if
-            theta_half = real(theta_xp_half, real64)
-            ! d Upsilon/du = d Upsilon/d Lambda 2u/R at u = sqrt(rho - half), R = half
-            lambda_slope = real(slope_xp, real64)
-            upsilon_slope = lambda_slope*real(2.0_qp*sqrt(prob%rho - half)/half, real64)
+            ! as a rough early evaluation (with the tables), on bracket_digits rules: the
+            ! branch needs only the sign of Upsilon - psi, the first iterate no more
+            ! digits (again on the rough rules where Upsilon is within 1e-6 of psi)
+            call rough_half(bracket_digits, theta_half, lambda_slope, upsilon_slope)
+            if (abs(theta_half - real(prob%psi, real64)) <= &
+                1.0e-6_real64*real(prob%psi, real64)) &
+                call rough_half(rough_digits, theta_half, lambda_slope, upsilon_slope)
         else
             call theta64(self, setup_at64(self, prob, sqrt(prob%rho - half)), scaled, shift)
             theta_half = scaled*exp(-shift)
@@ -3274,6 +3284,24 @@ contains
             end select
         end if
     contains
+        !> Theta at R = rho/2 and its slopes in Lambda and in u on rules for `digits`
+        !! digits (`theta_xp`, rough).
+        pure subroutine rough_half(digits, theta, d_lambda, d_u)
+            real(qp), intent(in) :: digits
+            real(real64), intent(out) :: theta, d_lambda, d_u
+            real(xp) :: theta_xp_half, slope_xp, shift_xp
+            call theta_xp(self, setup_at64(self, prob, sqrt(prob%rho - half)), .true., &
+                          theta_xp_half, slope_xp, shift_xp, digits)
+            if (shift_xp /= 0.0_xp) then
+                theta_xp_half = theta_xp_half*exp(-shift_xp)
+                slope_xp = slope_xp*exp(-shift_xp)
+            end if
+            theta = real(theta_xp_half, real64)
+            ! d Upsilon/du = d Upsilon/d Lambda 2u/R at u = sqrt(rho - half), R = half
+            d_lambda = real(slope_xp, real64)
+            d_u = d_lambda*real(2.0_qp*sqrt(prob%rho - half)/half, real64)
+        end subroutine rough_half
+
         !> The residual f at y = log R and (laws with hardware terms, else 0) its slope:
         !! a rough early evaluation (with the tables) for laws with hardware terms, else
         !! `residual64`.
