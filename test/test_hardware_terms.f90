@@ -2,7 +2,8 @@
 !! (`theta_terms_xp`: sqrt(q/(1 - q)) exp(shift), 1 - q, d(log q)/d Lambda) against their
 !! closed forms evaluated in binary128 (power laws: q = exp(-(n+1) lambda) E(delta)/E(Lambda),
 !! E(y) = 1 - exp(-(n-1) y); logarithmic: q = exp(-2 lambda) delta/Lambda), with and
-!! without the scale exp(shift) given once per evaluation, hardware and rough.
+!! without the scale exp(shift) given once per evaluation, hardware and rough; the same
+!! for a panel's nodes (`panel_terms_xp`: g and d(log q)/d Lambda/(2 (1 - q))).
 module test_hardware_terms
     use brachistochrone_kinds, only: qp, xp
     use brachistochrone_speed_laws, only: speed_law, power_law, logarithmic_law
@@ -39,8 +40,8 @@ contains
         real(qp), parameter :: fractions(7) = [1.0e-6_qp, 0.01_qp, 0.3_qp, 0.5_qp, 0.9_qp, &
                                                0.999_qp, 0.999999_qp]
         real(qp), parameter :: shifts(2) = [0.0_qp, 37.5_qp]
-        real(xp) :: c(4), big_x, lambda_x, delta_x, shift_x, g, omq, slope
-        real(qp) :: big, lambda, delta, q, omq_ref, g_ref, slope_ref, unit, worst(3)
+        real(xp) :: c(6), big_x, lambda_x, delta_x, shift_x, g, omq, slope, g_p(1), h_p(1)
+        real(qp) :: big, lambda, delta, q, omq_ref, g_ref, slope_ref, unit, worst(5)
         integer :: i, j, s, mode
         logical :: rough
         character(len=64) :: name
@@ -64,15 +65,22 @@ contains
                         if (mod(mode, 2) == 1) then
                             call law%theta_terms_xp(c, lambda_x, delta_x, shift_x, rough, &
                                                     g, omq, slope)
+                            call law%panel_terms_xp(c, [lambda_x], [delta_x], shift_x, &
+                                                    rough, 0.0_xp, g_p, h_p)
                         else
                             call law%theta_terms_xp(c, lambda_x, delta_x, shift_x, rough, &
                                                     g, omq, slope, exp(shift_x))
+                            call law%panel_terms_xp(c, [lambda_x], [delta_x], shift_x, &
+                                                    rough, exp(shift_x), g_p, h_p)
                         end if
                         unit = merge(2.0_qp**(-52), 2.0_qp**(-63), rough)* &
                                (8.0_qp + (a + 2.0_qp)*big + shifts(s))
                         worst(1) = max(worst(1), abs(real(g, qp)/g_ref - 1.0_qp)/unit)
                         worst(2) = max(worst(2), abs(real(omq, qp)/omq_ref - 1.0_qp)/unit)
                         worst(3) = max(worst(3), abs(real(slope, qp)/slope_ref - 1.0_qp)/unit)
+                        worst(4) = max(worst(4), abs(real(g_p(1), qp)/g_ref - 1.0_qp)/unit)
+                        worst(5) = max(worst(5), abs(real(h_p(1), qp)/ &
+                                                     (0.5_qp*slope_ref/omq_ref) - 1.0_qp)/unit)
                     end do
                 end do
             end do
@@ -82,9 +90,12 @@ contains
         else
             write (name, '(a,f9.6)') 'power law n =', real(a + 1.0_qp)
         end if
-        call check(all(worst <= 1.0_qp), trim(name)//': g, 1 - q, d log q/d Lambda in xp')
+        call check(all(worst(1:3) <= 1.0_qp), trim(name)//': g, 1 - q, d log q/d Lambda in xp')
+        call check(all(worst(4:5) <= 1.0_qp), trim(name)//': panel g, h in xp')
         print '(3a,3f6.3)', '   ', trim(name), ': largest errors of g, 1 - q, slope / '// &
-            'tolerance', worst
+            'tolerance', worst(1:3)
+        print '(3a,2f6.3)', '   ', trim(name), ': panel_terms_xp, largest errors of g, h / '// &
+            'tolerance', worst(4:5)
     contains
         !> q, 1 - q and d(log q)/d Lambda at fixed lambda in binary128.
         subroutine reference(lambda, delta, big, q, omq, slope)

@@ -69,7 +69,8 @@
 !! phase resolves) starts from the slope next to u = 0 instead (`apse_start`). psi within
 !! 1e-10 of the sector's edge (below what the early phase resolves of limit - Upsilon):
 !! the early phase solves for limit - Upsilon = 1e-10 limit, then Newton steps on
-!! log((limit - Upsilon)/(limit - psi)) in log R from its tangent (`edge_steps`).
+!! log((limit - Upsilon)/(limit - psi)) in log R from the root of a model of its two
+!! parts (`edge_steps`, `edge_model_point`).
 !! Other laws: a double-precision phase (regula falsi with
 !! the Anderson-Bjorck correction) and quad-precision secant steps (`quad_phase`).
 module brachistochrone_central_force
@@ -196,7 +197,7 @@ module brachistochrone_central_force
         real(qp) :: c(8) = 0.0_qp
         real(qp) :: lambda_r = 0.0_qp, delta_r = 0.0_qp
         real(qp) :: weight_below = 0.0_qp, weight_above = 1.0_qp
-        real(xp) :: cx(4) = 0.0_xp    !! the law's constants in hardware precision
+        real(xp) :: cx(6) = 0.0_xp    !! the law's constants in hardware precision
         !> Theta of a first half-arch where known beforehand (psi: the two-point problem's
         !! target), else 0: picks the panels of the early phase (`theta_xp`)
         real(qp) :: angle_hint = 0.0_qp
@@ -1924,9 +1925,9 @@ contains
         integer, intent(in), optional :: given_count
         real(qp), intent(in), optional :: digits   !! as `theta_xp`'s
         type(panel) :: panels(max_panels)
-        real(xp) :: part(2), last, v, lambda, delta, jacobian, g, omq, log_slope, big
-        real(xp) :: scale, share, lo, width, exp_shift
-        integer :: count, p, k, j
+        real(xp), dimension(max_nodes) :: lambda, delta, jacobian, g, h
+        real(xp) :: part(2), last, big, scale, share, lo, width, exp_shift, weighted, weight
+        integer :: count, p, k, j, n
         if (present(given) .and. present(given_count)) then
             count = given_count
             panels(1:count) = given(1:count)
@@ -1936,7 +1937,7 @@ contains
         theta = 0.0_xp
         slope = 0.0_xp
         last = 0.0_xp
-        big = real(a%big_lambda, xp)
+        big = hardware_real(a%big_lambda)
         ! the scale factor once for all nodes (0: beyond the hardware kind's range, the
         ! law scales each node by exp(shift - its decay) itself)
         exp_shift = 1.0_xp
@@ -1947,35 +1948,57 @@ contains
         end if
         do p = 1, count
             associate (pan => panels(p))
+            ! (conversions on the bits, `hardware_real`: no library call)
+            scale = hardware_real(pan%scale)
+            lo = hardware_real(pan%lo)
+            width = hardware_real(pan%hi - pan%lo)
+            weight = hardware_real(pan%weight)
             share = 1.0_xp
             if (p > 1 .and. theta > 0.0_xp) then
-                share = 4.0_xp*real(panel_length(pan), xp)*last/theta
+                share = 4.0_xp*panel_length_xp(pan%kind, scale, lo, width)*last/theta
                 if (share < 1.0e-24_xp) cycle
             end if
             pan%log_rho = bernstein_log(model, a%big_lambda, pan)
             j = rule_for(pan%log_rho, asked_digits(rough, digits) + &
                          real(min(0.0_xp, log10(max(share, 1.0e-30_xp))), qp), &
                          panel_growth(pan, 2.0_qp*pi/model%sigma_apse))
-            scale = real(pan%scale, xp)
-            lo = real(pan%lo, xp)
-            width = real(pan%hi - pan%lo, xp)
+            ! the panel's nodes, the law's terms on all of them (one call), the sums
+            n = model%gauss(j)%n
+            call node_point_xp(pan%kind, scale, big, lo + width*model%gauss(j)%offset_xp, &
+                               lambda(1:n), delta(1:n), jacobian(1:n))
+            call model%law%panel_terms_xp(a%cx, lambda(1:n), delta(1:n), shift, rough, &
+                                          exp_shift, g(1:n), h(1:n))
             part = 0.0_xp
-            do k = 1, model%gauss(j)%n
-                v = lo + width*model%gauss(j)%offset_xp(k)
-                call node_point_xp(pan%kind, scale, big, v, lambda, delta, jacobian)
-                call model%law%theta_terms_xp(a%cx, lambda, delta, shift, rough, g, omq, &
-                                              log_slope, exp_shift)
-                part(1) = part(1) + model%gauss(j)%weight_xp(k)*g*jacobian
-                part(2) = part(2) + model%gauss(j)%weight_xp(k)*g*jacobian* &
-                          (0.5_xp*log_slope/omq)
-                if (k == merge(1, model%gauss(j)%n, pan%kind >= kind_start .and. &
-                               pan%kind <= kind_start_root)) last = g
+            do k = 1, n
+                weighted = model%gauss(j)%weight_xp(k)*g(k)*jacobian(k)
+                part(1) = part(1) + weighted
+                part(2) = part(2) + weighted*h(k)
             end do
-            theta = theta + real(pan%weight, xp)*width*part(1)
-            slope = slope + real(pan%weight, xp)*width*part(2)
+            last = g(merge(1, n, pan%kind >= kind_start .and. pan%kind <= kind_start_root))
+            theta = theta + weight*width*part(1)
+            slope = slope + weight*width*part(2)
             end associate
         end do
     end subroutine panel_theta_xp
+
+    !> `panel_length` in hardware precision from the panel's scale, lo and width = hi - lo
+    !! (for `panel_theta_xp`'s estimate of a panel's share: no binary128 operations).
+    elemental function panel_length_xp(kind, scale, lo, width) result(length)
+        integer, intent(in) :: kind
+        real(xp), intent(in) :: scale, lo, width
+        real(xp) :: length
+        select case (kind)
+        case (kind_apse_root, kind_start_root)
+            ! scale (hi^2 - lo^2)
+            length = scale*width*(2.0_xp*lo + width)
+        case (kind_full)
+            ! scale (hi^2 (3 - 2 hi) - lo^2 (3 - 2 lo)), hi = lo + width, without cancellation
+            length = scale*width*(3.0_xp*(2.0_xp*lo + width) - &
+                                  2.0_xp*(3.0_xp*lo*(lo + width) + width*width))
+        case default
+            length = width
+        end select
+    end function panel_length_xp
 
     !> The digits asked of the early phase's rules: `digits` where given, else
     !! `rough_digits` or `hardware_digits`.
@@ -2572,7 +2595,7 @@ contains
         else
             ! (Upsilon's curvature in log R is about 1/Lambda next to the sector's edge,
             ! in R about 1/R: the Newton step in log R errs far less)
-            x = x0 + x0*expm1_qp(dx)
+            x = log_step(x0, dx)
         end if
         if (.not. (x > lo .and. x < hi)) then
             if (prob%use_u .and. .not. prob%second) &
@@ -2654,11 +2677,14 @@ contains
     !! terms), F = log(D/(limit - psi)) is nearly linear and convex in y = log R. The early
     !! phase solved D = early_gap (resolved in hardware precision) at x = R1 with F'(y1) =
     !! early_slope; from there the root of F's tangent (right of R-bar by the convexity,
-    !! below lowest_log_r only if R-bar is below the binary128 range: `below_range`), then
-    !! Newton steps on F on the full rules (`final_step` with `previous`; far from the root
-    !! the next point from `edge_model_point`), kept inside the bracket [y_lo, y_hi] of
-    !! F's signs (y_hi = log hi at first) by bisection. Not `done`: x and the slope
-    !! d Upsilon/dR for the secant steps, [lo, hi] the bracket in R.
+    !! below lowest_log_r only if R-bar is below the binary128 range: `below_range`), but
+    !! the first full evaluation at the root of the model of `edge_model_point` from R1
+    !! where it applies (the tangent's root may be far from R-bar: F' is (n + 1)/2 where
+    !! P dominates, n - 1 where A does), then Newton steps on F on the full rules
+    !! (`final_step` with `previous`; far from the root the next point from
+    !! `edge_model_point`), kept inside the bracket [y_lo, y_hi] of F's signs (y_hi = log
+    !! hi at first) by bisection. Not `done`: x and the slope d Upsilon/dR for the secant
+    !! steps, [lo, hi] the bracket in R.
     pure subroutine edge_steps(model, prob, early_gap, early_slope, x, lo, hi, solution, &
                                done, slope)
         type(central_force_model), intent(in) :: model
@@ -2668,7 +2694,7 @@ contains
         type(endpoint_solution), intent(inout) :: solution
         logical, intent(out) :: done
         real(qp), intent(out) :: slope
-        real(qp) :: y, y_lo, y_hi, previous(2), form(2), x_next
+        real(qp) :: y, y_lo, y_hi, previous(2), form(2), x_next, y_next
         integer :: attempt
         done = .false.
         slope = 0.0_qp
@@ -2677,8 +2703,20 @@ contains
         y_hi = log(hi)
         y_lo = lowest_log_r
         previous = [log(x), early_slope]
-        y = log(x) - log(early_gap/(prob%limit - prob%psi))/early_slope
+        form = [log(early_gap/(prob%limit - prob%psi)), early_slope]
+        y = log(x) - form(1)/early_slope
         if (.not. (early_slope > 0.0_qp .and. ieee_is_finite(y))) return
+        if (.not. y > lowest_log_r) then
+            call below_range(model, prob, solution)
+            done = .true.
+            return
+        end if
+        ! (the early root's limit - Upsilon is resolved to about 1e-9 of itself, its A to
+        ! 1e-9/share: with A below 1e-3 of it the model is no better than the tangent)
+        y_next = y
+        call edge_model_point(model, prob, previous(1), form, y_next, solution%steps, &
+                              1.0e-3_qp)
+        if (y_next > lowest_log_r .and. y_next < y_hi) y = y_next
         do attempt = 1, max_edge_steps
             if (.not. y > lowest_log_r) then
                 call below_range(model, prob, solution)
@@ -2697,10 +2735,12 @@ contains
                 y_lo = y
             end if
             if (form(2) > 0.0_qp) previous = [y, form(2)]
+            y_next = y
+            if (x_next /= x .and. x_next > 0.0_qp) y_next = log(x_next)
             if (form(2) > 0.0_qp .and. abs(form(1)) > 1.0e-8_qp) &
-                call edge_model_point(model, prob, y, form, x_next, solution%steps)
-            if (x_next /= x .and. x_next > exp(y_lo) .and. x_next < exp(y_hi)) then
-                y = log(x_next)
+                call edge_model_point(model, prob, y, form, y_next, solution%steps)
+            if (y_next /= y .and. y_next > y_lo .and. y_next < y_hi) then
+                y = y_next
             else
                 y = 0.5_qp*(y_lo + y_hi)
             end if
@@ -2714,19 +2754,28 @@ contains
     !! in hardware precision without cancellation) and A = 2 (lim Theta - Theta(R,R))
     !! known at y0 as (limit - Upsilon) - P and taken as A0 exp(a (y - y0)) (power laws:
     !! C R^(n-1)); the root of log((A + P)/(limit - psi)) on that model by Newton steps in
-    !! hardware precision (`steps` counted): x_next = R there (unchanged where the model
-    !! does not apply). Where the two terms cross between y0 and R-bar (rho small, n < 3)
-    !! the Newton point of F alone needs several more full evaluations.
-    pure subroutine edge_model_point(model, prob, y0, form, x_next, steps)
+    !! hardware precision (`steps` counted; P evaluated again at each iterate until its
+    !! estimate there, P nearly exponential in y, is below 1e-20 A: then the root of A
+    !! alone): y_next = log R there (unchanged where the model does not apply). Where the
+    !! two terms cross between y0 and R-bar (rho small, n < 3) the Newton point of F
+    !! alone would need several more full evaluations; the steps in y may be large (100
+    !! and more: F' is n - 1 where A dominates). Also from the early phase's root (F, F'
+    !! of the hardware-precision evaluation: `edge_steps`), where A is resolved only if
+    !! it is at least `share` of limit - Upsilon (default 1e-6), and P by the rough rules
+    !! (12 digits: limit - Upsilon there is resolved to about 1e-9 of itself).
+    pure subroutine edge_model_point(model, prob, y0, form, y_next, steps, share)
         type(central_force_model), intent(in) :: model
         type(endpoint_problem), intent(in) :: prob
         real(qp), intent(in) :: y0, form(2)
-        real(qp), intent(inout) :: x_next
+        real(qp), intent(inout) :: y_next
         integer, intent(inout) :: steps
+        real(qp), intent(in), optional :: share
         type(endpoint_problem) :: part
-        real(qp) :: gap, d0, p, p_slope, a0, rate, y, big_a, g, dy
+        real(qp) :: gap, d0, p, p_slope, a0, rate, y, big_a, g, dy, least
         real(xp) :: f, slope
         integer :: k
+        least = 1.0e-6_qp
+        if (present(share)) least = share
         gap = prob%limit - prob%psi
         d0 = gap*exp(form(1))
         part = prob
@@ -2738,25 +2787,29 @@ contains
         part%psi = 1.0e-300_qp
         y = y0
         do k = 1, 8
-            call residual_xp(model, part, real(y, xp), .false., f, slope)
+            call residual_xp(model, part, real(y, xp), present(share), f, slope)
             steps = steps + 1
             p = exp(real(f, qp) + log(part%psi))
             p_slope = real(slope, qp)
             if (k == 1) then
                 a0 = d0 - p
                 ! (P alone, or A not resolved beside it: the Newton point of F stands)
-                if (.not. (a0 > 1.0e-6_qp*d0 .and. p > 0.0_qp)) return
+                if (.not. (a0 > least*d0 .and. p > 0.0_qp)) return
                 rate = (d0*form(2) - p*p_slope)/a0
                 if (.not. (rate > 0.0_qp .and. ieee_is_finite(rate))) return
             end if
             big_a = a0*exp(rate*(y - y0))
             g = log((big_a + p)/gap)
             dy = -g*(big_a + p)/(rate*big_a + p_slope*p)
-            if (.not. (ieee_is_finite(dy) .and. abs(dy) < 100.0_qp)) return
+            if (.not. (ieee_is_finite(dy) .and. abs(dy) < -lowest_log_r)) return
             y = y + dy
             if (abs(dy) <= 1.0e-12_qp*max(1.0_qp, abs(y))) exit
+            if (p*exp(p_slope*dy) <= 1.0e-20_qp*a0*exp(rate*(y - y0))) then
+                y = y0 + log(gap/a0)/rate
+                exit
+            end if
         end do
-        x_next = exp(y)
+        y_next = y
     end subroutine edge_model_point
 
     !> The Newton point in u from x0 (the unknown u, first half-arch) on
@@ -2795,9 +2848,23 @@ contains
                    upsilon_slope /= 0.0_qp)) return
         dy = log(deficit/(prob%limit - prob%psi))*deficit/upsilon_slope
         if (.not. ieee_is_finite(dy)) return
-        dy = x0 + x0*expm1_qp(dy)
+        dy = log_step(x0, dy)
         if (dy > lo .and. dy < hi) x = dy
     end function log_form_point
+
+    !> x0 exp(dy), a step dy in log x: x0 + x0 expm1(dy) (exact to a rounding of x0 for
+    !! small steps), but x0 exp(dy) for dy < -1/2, where 1 + expm1(dy) keeps only the
+    !! digits of exp(dy) above eps (below dy = -78 none: x0 + x0 expm1(dy) = 0, and
+    !! next to the sector's edge the Newton step in log R is often -100 or more)
+    elemental function log_step(x0, dy) result(x)
+        real(qp), intent(in) :: x0, dy
+        real(qp) :: x
+        if (dy < -0.5_qp) then
+            x = x0*exp(dy)
+        else
+            x = x0 + x0*expm1_qp(dy)
+        end if
+    end function log_step
 
     !> The quad-precision phase from the double phase's root x0 and slope (of the
     !! double phase's form): Newton, then secant steps on Upsilon - psi, each a full

@@ -143,11 +143,14 @@ module brachistochrone_speed_laws
         !> Whether the law has the hardware-precision terms below (else the engine
         !! takes its double-precision phase and quad-precision secant steps)
         procedure :: has_terms_xp => default_has_terms_xp
-        !> Per-apse constants for theta_terms_xp, from Lambda = -log R
+        !> Per-apse constants for theta_terms_xp and panel_terms_xp, from Lambda = -log R
         procedure :: apse_constants_xp => default_apse_constants_xp
         !> sqrt(q/(1 - q)) exp(shift), 1 - q and d(log q)/d Lambda at fixed lambda, in
         !! hardware precision
         procedure :: theta_terms_xp => default_theta_terms_xp
+        !> g = sqrt(q/(1 - q)) exp(shift) and h = d(log q)/d Lambda/(2 (1 - q)) at a
+        !! panel's nodes, in hardware precision (the early phase's sums)
+        procedure :: panel_terms_xp => default_panel_terms_xp
     end type speed_law
 
     abstract interface
@@ -222,6 +225,7 @@ module brachistochrone_speed_laws
         procedure :: has_terms_xp => power_has_terms_xp
         procedure :: apse_constants_xp => power_apse_constants_xp
         procedure :: theta_terms_xp => power_theta_terms_xp
+        procedure :: panel_terms_xp => power_panel_terms_xp
     end type power_law
 
     !> Logarithmic potential (F = 1/r, the power law n = 1): v^2 = -2 log x.
@@ -1598,7 +1602,7 @@ contains
     pure function default_apse_constants_xp(self, big_lambda) result(c)
         class(speed_law), intent(in) :: self
         real(xp), intent(in) :: big_lambda  !! -log R
-        real(xp) :: c(4)
+        real(xp) :: c(6)
         c = 0.0_xp
     end function default_apse_constants_xp
 
@@ -1606,7 +1610,7 @@ contains
     pure subroutine default_theta_terms_xp(self, c, lambda, delta, shift, rough, g, &
                                            one_minus_q, log_slope, exp_shift)
         class(speed_law), intent(in) :: self
-        real(xp), intent(in) :: c(4)                 !! from apse_constants_xp
+        real(xp), intent(in) :: c(6)                 !! from apse_constants_xp
         real(xp), intent(in) :: lambda, delta        !! offsets from the apse and the start
         real(xp), intent(in) :: shift                !! log of the scale factor of g
         logical, intent(in) :: rough                 !! transcendentals in double precision
@@ -1621,6 +1625,26 @@ contains
         one_minus_q = 1.0_xp
         log_slope = 0.0_xp
     end subroutine default_theta_terms_xp
+
+    !> `theta_terms_xp` node by node, h = log_slope/(2 (1 - q)).
+    pure subroutine default_panel_terms_xp(self, c, lambda, delta, shift, rough, exp_shift, &
+                                           g, h)
+        class(speed_law), intent(in) :: self
+        real(xp), intent(in) :: c(6)                 !! from apse_constants_xp
+        real(xp), intent(in) :: lambda(:), delta(:)  !! the nodes' offsets (`theta_terms_xp`)
+        real(xp), intent(in) :: shift                !! log of the scale factor of g
+        logical, intent(in) :: rough                 !! transcendentals in double precision
+        real(xp), intent(in) :: exp_shift            !! exp(shift), 0: not at hand
+        real(xp), intent(out) :: g(:)                !! sqrt(q/(1 - q)) exp(shift)
+        real(xp), intent(out) :: h(:)                !! d(log q)/d Lambda/(2 (1 - q))
+        real(xp) :: one_minus_q, log_slope
+        integer :: k
+        do k = 1, size(lambda)
+            call self%theta_terms_xp(c, lambda(k), delta(k), shift, rough, g(k), &
+                                     one_minus_q, log_slope, exp_shift)
+            h(k) = 0.5_xp*log_slope/one_minus_q
+        end do
+    end subroutine default_panel_terms_xp
 
     !> exp(-y) and E = 1 - exp(-y) = -expm1(-y), y >= 0, both to full relative precision
     !! in hardware precision (`table_exp_xp`), or `rough`ly: for y >= 1/2 in double
@@ -1753,14 +1777,16 @@ contains
         end if
     end function scaled_exp
 
-    !> Power law: [Lambda, E(Lambda), a, exp(-a Lambda)].
+    !> Power law: [Lambda, E(Lambda), a, exp(-a Lambda), 1/E(Lambda), a/(2 E(Lambda))].
     pure function power_apse_constants_xp(self, big_lambda) result(c)
         class(power_law), intent(in) :: self
         real(xp), intent(in) :: big_lambda
-        real(xp) :: c(4), a
+        real(xp) :: c(6), a
         a = real(self%n - 1.0_qp, xp)
-        c = [big_lambda, 0.0_xp, a, 0.0_xp]
+        c = [big_lambda, 0.0_xp, a, 0.0_xp, 0.0_xp, 0.0_xp]
         call exp_and_decay_xp(a*big_lambda, c(4), c(2), .false.)
+        c(5) = 1.0_xp/c(2)
+        c(6) = 0.5_xp*a*c(5)
     end function power_apse_constants_xp
 
     !> Power law: q = exp(-(a+2) lambda) E(delta)/E(Lambda), 1 - q = (1 - exp(-2 lambda))
@@ -1773,13 +1799,109 @@ contains
     pure subroutine power_theta_terms_xp(self, c, lambda, delta, shift, rough, g, &
                                          one_minus_q, log_slope, exp_shift)
         class(power_law), intent(in) :: self
-        real(xp), intent(in) :: c(4), lambda, delta, shift
+        real(xp), intent(in) :: c(6), lambda, delta, shift
         logical, intent(in) :: rough
         real(xp), intent(out) :: g, one_minus_q, log_slope
         real(xp), intent(in), optional :: exp_shift
         real(xp) :: e2, om2, ea, e_lambda, ead, e_delta, top, decay
         logical :: known  ! E(delta) at hand
+        call power_lambda_exps_xp(c, lambda, delta, rough, e2, om2, ea, e_lambda, ead, &
+                                  e_delta, known)
+        ! (exp(-2 lambda), exp(-a lambda) normal: from double precision where `rough`)
+        top = normal_reach(rough)
+        if (.not. known) then
+            if (c(3)*delta <= 0.25_xp .and. lambda <= delta) then
+                ! nearer the apse: exp(-a lambda) E(delta) = E(Lambda) - E(lambda)
+                e_delta = (c(2) - e_lambda)/ea
+                ead = 1.0_xp - e_delta
+            else if (c(3)*delta >= 0.5_xp .and. c(4) > tiny(1.0_xp) .and. &
+                     c(3)*lambda <= top) then
+                ! exp(-a delta) = exp(-a Lambda)/exp(-a lambda)
+                ead = c(4)/ea
+                e_delta = 1.0_xp - ead
+            else
+                call exp_and_decay_xp(c(3)*delta, ead, e_delta, rough)
+            end if
+        end if
+        one_minus_q = om2 + e2*e_lambda/c(2)
+        ! exp(-(a+2) lambda/2) from both where their product is normal
+        decay = 0.0_xp
+        if (merge(max(2.0_xp, c(3)), c(3) + 2.0_xp, rough)*lambda <= top) decay = sqrt(e2*ea)
+        g = sqrt(e_delta/(one_minus_q*c(2)))* &
+            scaled_decay(shift, 0.5_xp*(c(3) + 2.0_xp)*lambda, decay, rough, exp_shift)
+        log_slope = c(3)*e_lambda*ead/(c(2)*e_delta)
+    end subroutine power_theta_terms_xp
+
+    !> Power law: `panel_terms_xp` by `power_node_xp` where exp(-(a+2) lambda/2) and
+    !! exp(shift) are at hand in range (`power_theta_terms_xp`'s condition), else by
+    !! `power_theta_terms_xp`.
+    pure subroutine power_panel_terms_xp(self, c, lambda, delta, shift, rough, exp_shift, &
+                                         g, h)
+        class(power_law), intent(in) :: self
+        real(xp), intent(in) :: c(6), lambda(:), delta(:), shift, exp_shift
+        logical, intent(in) :: rough
+        real(xp), intent(out) :: g(:), h(:)
+        real(xp) :: top, rate, one_minus_q, log_slope
+        integer :: k
+        ! (exp(-2 lambda) exp(-a lambda) normal where rate lambda <= top, as there)
+        top = normal_reach(rough)
+        rate = merge(max(2.0_xp, c(3)), c(3) + 2.0_xp, rough)
+        do k = 1, size(lambda)
+            if (exp_shift > 0.0_xp .and. rate*lambda(k) <= top) then
+                call power_node_xp(c, lambda(k), delta(k), rough, exp_shift, g(k), h(k))
+            else
+                call power_theta_terms_xp(self, c, lambda(k), delta(k), shift, rough, g(k), &
+                                          one_minus_q, log_slope, exp_shift)
+                h(k) = 0.5_xp*log_slope/one_minus_q
+            end if
+        end do
+    end subroutine power_panel_terms_xp
+
+    !> `power_panel_terms_xp` at one node where exp(-2 lambda), exp(-a lambda) and their
+    !! product are normal and exp(shift) = exp_shift > 0: g in the operations of
+    !! `power_theta_terms_xp` there (bit for bit: the early phase's root next to the
+    !! sector's edge, and so the certification of the first binary128 step, responds to
+    !! g's last bits), h = a E(lambda) exp(-a delta)/(2 E(Lambda) E(delta) P), P = 1 - q,
+    !! with one division where the slope and its 1/P took two.
+    pure subroutine power_node_xp(c, lambda, delta, rough, exp_shift, g, h)
+        real(xp), intent(in) :: c(6), lambda, delta, exp_shift
+        logical, intent(in) :: rough
+        real(xp), intent(out) :: g, h
+        real(xp) :: e2, om2, ea, e_lambda, ead, e_delta, one_minus_q
+        logical :: known  ! E(delta) at hand
+        call power_lambda_exps_xp(c, lambda, delta, rough, e2, om2, ea, e_lambda, ead, &
+                                  e_delta, known)
+        if (.not. known) then
+            if (c(3)*delta <= 0.25_xp .and. lambda <= delta) then
+                ! nearer the apse: exp(-a lambda) E(delta) = E(Lambda) - E(lambda)
+                e_delta = (c(2) - e_lambda)/ea
+                ead = 1.0_xp - e_delta
+            else if (c(3)*delta >= 0.5_xp .and. c(4) > tiny(1.0_xp)) then
+                ! exp(-a delta) = exp(-a Lambda)/exp(-a lambda)
+                ead = c(4)/ea
+                e_delta = 1.0_xp - ead
+            else
+                call exp_and_decay_xp(c(3)*delta, ead, e_delta, rough)
+            end if
+        end if
+        one_minus_q = om2 + e2*e_lambda/c(2)
+        g = sqrt(e_delta/(one_minus_q*c(2)))*(exp_shift*sqrt(e2*ea))
+        h = c(6)*e_lambda*ead/(e_delta*one_minus_q)
+    end subroutine power_node_xp
+
+    !> exp(-2 lambda) = e2, 1 - it = om2, exp(-a lambda) = ea, E(lambda) = e_lambda for
+    !! `power_theta_terms_xp` and `power_node_xp` and, where the start is nearer (a delta
+    !! <= 1/4, delta < lambda, a lambda <= 1/2: `known`), exp(-a delta) = ead, E(delta) =
+    !! e_delta (else 0).
+    pure subroutine power_lambda_exps_xp(c, lambda, delta, rough, e2, om2, ea, e_lambda, &
+                                         ead, e_delta, known)
+        real(xp), intent(in) :: c(6), lambda, delta
+        logical, intent(in) :: rough
+        real(xp), intent(out) :: e2, om2, ea, e_lambda, ead, e_delta
+        logical, intent(out) :: known
         known = .false.
+        ead = 0.0_xp
+        e_delta = 0.0_xp
         if (c(3) == 1.0_xp) then
             ! n = 2: exp(-2 lambda) and its decay from exp(-lambda)'s
             call exp_and_decay_xp(lambda, ea, e_lambda, rough)
@@ -1808,37 +1930,14 @@ contains
                 call exp_and_decay_xp(c(3)*lambda, ea, e_lambda, rough)
             end if
         end if
-        ! (exp(-2 lambda), exp(-a lambda) normal: from double precision where `rough`)
-        top = normal_reach(rough)
-        if (.not. known) then
-            if (c(3)*delta <= 0.25_xp .and. lambda <= delta) then
-                ! nearer the apse: exp(-a lambda) E(delta) = E(Lambda) - E(lambda)
-                e_delta = (c(2) - e_lambda)/ea
-                ead = 1.0_xp - e_delta
-            else if (c(3)*delta >= 0.5_xp .and. c(4) > tiny(1.0_xp) .and. &
-                     c(3)*lambda <= top) then
-                ! exp(-a delta) = exp(-a Lambda)/exp(-a lambda)
-                ead = c(4)/ea
-                e_delta = 1.0_xp - ead
-            else
-                call exp_and_decay_xp(c(3)*delta, ead, e_delta, rough)
-            end if
-        end if
-        one_minus_q = om2 + e2*e_lambda/c(2)
-        ! exp(-(a+2) lambda/2) from both where their product is normal
-        decay = 0.0_xp
-        if (merge(max(2.0_xp, c(3)), c(3) + 2.0_xp, rough)*lambda <= top) decay = sqrt(e2*ea)
-        g = sqrt(e_delta/(one_minus_q*c(2)))* &
-            scaled_decay(shift, 0.5_xp*(c(3) + 2.0_xp)*lambda, decay, rough, exp_shift)
-        log_slope = c(3)*e_lambda*ead/(c(2)*e_delta)
-    end subroutine power_theta_terms_xp
+    end subroutine power_lambda_exps_xp
 
-    !> Logarithmic law: [Lambda, 0, 0, 0].
+    !> Logarithmic law: [Lambda, 0, 0, 0, 0, 0].
     pure function logarithmic_apse_constants_xp(self, big_lambda) result(c)
         class(logarithmic_law), intent(in) :: self
         real(xp), intent(in) :: big_lambda
-        real(xp) :: c(4)
-        c = [big_lambda, 0.0_xp, 0.0_xp, 0.0_xp]
+        real(xp) :: c(6)
+        c = [big_lambda, 0.0_xp, 0.0_xp, 0.0_xp, 0.0_xp, 0.0_xp]
     end function logarithmic_apse_constants_xp
 
     !> Logarithmic law: q = exp(-2 lambda) delta/Lambda, 1 - q = (1 - exp(-2 lambda)) +
@@ -1846,7 +1945,7 @@ contains
     pure subroutine logarithmic_theta_terms_xp(self, c, lambda, delta, shift, rough, g, &
                                                one_minus_q, log_slope, exp_shift)
         class(logarithmic_law), intent(in) :: self
-        real(xp), intent(in) :: c(4), lambda, delta, shift
+        real(xp), intent(in) :: c(6), lambda, delta, shift
         logical, intent(in) :: rough
         real(xp), intent(out) :: g, one_minus_q, log_slope
         real(xp), intent(in), optional :: exp_shift
@@ -1865,12 +1964,12 @@ contains
         harmonic_has_terms_xp = .true.
     end function harmonic_has_terms_xp
 
-    !> Harmonic law: [Lambda, 1 - R^2, 0, 0].
+    !> Harmonic law: [Lambda, 1 - R^2, 0, 0, 0, 0].
     pure function harmonic_apse_constants_xp(self, big_lambda) result(c)
         class(harmonic_law), intent(in) :: self
         real(xp), intent(in) :: big_lambda
-        real(xp) :: c(4), e
-        c = [big_lambda, 0.0_xp, 0.0_xp, 0.0_xp]
+        real(xp) :: c(6), e
+        c = [big_lambda, 0.0_xp, 0.0_xp, 0.0_xp, 0.0_xp, 0.0_xp]
         call exp_and_decay_xp(2.0_xp*big_lambda, e, c(2), .false.)
     end function harmonic_apse_constants_xp
 
@@ -1879,7 +1978,7 @@ contains
     pure subroutine harmonic_theta_terms_xp(self, c, lambda, delta, shift, rough, g, &
                                             one_minus_q, log_slope, exp_shift)
         class(harmonic_law), intent(in) :: self
-        real(xp), intent(in) :: c(4), lambda, delta, shift
+        real(xp), intent(in) :: c(6), lambda, delta, shift
         logical, intent(in) :: rough
         real(xp), intent(out) :: g, one_minus_q, log_slope
         real(xp), intent(in), optional :: exp_shift
