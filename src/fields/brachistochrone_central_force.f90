@@ -155,6 +155,16 @@ module brachistochrone_central_force
         type(gauss_nodes) :: gauss(max_nodes/2)   !! rules with 2j nodes
         real(qp) :: sigma_apse = 1.0_qp           !! singularity distance, apse side
         real(qp) :: sigma_start = 1.0_qp          !! singularity distance, start side
+        !> the panel layouts' constants (`set_layout_constants`, from the sigmas): pi/sigma_apse
+        !! (Theta's decay rate), the root panels' scales min(1, sigma/2), the ladder's
+        !! longest panels ladder sigma, and the sigmas and the decay rate in double precision
+        real(qp) :: decay_apse = pi, root_apse = 0.5_qp, root_start = 0.5_qp
+        real(qp) :: ladder_apse = ladder, ladder_start = ladder
+        real(real64) :: sigma64(2) = 1.0_real64, decay64 = acos(-1.0_real64)
+        !> decay_apse, root_apse, root_start, ladder_apse, ladder_start in hardware precision
+        !! (`arch_panels_xp`)
+        real(xp) :: layout_xp(5) = [acos(-1.0_xp), 0.5_xp, 0.5_xp, real(ladder, xp), &
+                                    real(ladder, xp)]
         !> the whole-half-arch integrals beyond the tables below (Lambda in [table_high,
         !! far_high]), the pieces that passed their check, Theta's and its slope's in
         !! hardware precision (`build_far_tables`)
@@ -243,12 +253,28 @@ contains
         sigma = law%log_scales()
         model%sigma_apse = sigma(1)
         model%sigma_start = sigma(2)
+        call set_layout_constants(model)
         if (present(tables)) then
             if (.not. tables) return
         end if
         call build_whole_tables(model)
         call build_far_tables(model)
     end function new_central_force_model
+
+    !> The constants of the panel layouts from the sigmas (the same expressions as where
+    !! they are used: the same values).
+    pure subroutine set_layout_constants(model)
+        type(central_force_model), intent(inout) :: model
+        model%decay_apse = pi/model%sigma_apse
+        model%root_apse = min(1.0_qp, 0.5_qp*model%sigma_apse)
+        model%root_start = min(1.0_qp, 0.5_qp*model%sigma_start)
+        model%ladder_apse = ladder*model%sigma_apse
+        model%ladder_start = ladder*model%sigma_start
+        model%sigma64 = real([model%sigma_apse, model%sigma_start], real64)
+        model%decay64 = real(model%decay_apse, real64)
+        model%layout_xp = real([model%decay_apse, model%root_apse, model%root_start, &
+                                model%ladder_apse, model%ladder_start], xp)
+    end subroutine set_layout_constants
 
     !> The apse data of the whole half-arch (weights 1) at Lambda = -log R.
     pure function whole_setup(model, big_lambda) result(a)
@@ -341,7 +367,7 @@ contains
         real(xp), intent(out) :: values(2)
         logical, intent(out) :: found
         real(xp) :: position, t
-        integer :: piece, m, j
+        integer :: piece, j
         values = 0.0_xp
         found = .false.
         if (big_lambda > real(table_high, xp)) then
@@ -356,11 +382,10 @@ contains
         piece = min(table_pieces, max(1, int(position) + 1))
         if (.not. model%whole_ok(piece)) return
         t = 2.0_xp*(position - real(piece - 1, xp)) - 1.0_xp
-        do m = 1, 2
-            values(m) = model%whole_xp(table_points, piece, m)
-            do j = table_points - 1, 1, -1
-                values(m) = values(m)*t + model%whole_xp(j, piece, m)
-            end do
+        ! (the two Horner sums side by side: two independent chains of dependent steps)
+        values = model%whole_xp(table_points, piece, :)
+        do j = table_points - 1, 1, -1
+            values = values*t + model%whole_xp(j, piece, :)
         end do
         ! the slope's table holds its logarithm
         values(2) = exp(values(2))
@@ -702,7 +727,7 @@ contains
                 ! continued from it to meet, or ladder sigma_apse further (the apse's
                 ! singularities stay away in s: fewer nodes than the root panel's piece
                 ! and the ladder's first panels)
-                lo = min(meet, a%lambda_r + ladder*model%sigma_apse)
+                lo = min(meet, a%lambda_r + model%ladder_apse)
                 call push(panels, count, panel(kind_apse_root, split_root(a%lambda_r/b), &
                           split_root(lo/b), b, a%weight_above, 1.0_real64))
             else
@@ -713,14 +738,14 @@ contains
             end if
             ! where the integrated region starts (the apse unless its weight is 0)
             origin = merge(0.0_qp, a%lambda_r, a%weight_below > 0.0_qp)
-            decay_rate = pi/model%sigma_apse
+            decay_rate = model%decay_apse
             do while (lo < meet)
                 ! past exp(-300) of the integrands at the origin: nothing more to add
                 if (decay_rate*(lo - origin) > 300.0_qp) exit
                 ! growth `ladder`, length at most ladder sigma: the integrands decay like
                 ! exp(-pi lambda/sigma_apse), which grows as fast off the real axis
-                hi = min(ladder*lo, lo + ladder*model%sigma_apse, meet)
-                if (hi > 0.75_qp*meet .and. meet - lo <= ladder*model%sigma_apse) hi = meet
+                hi = min(ladder*lo, lo + model%ladder_apse, meet)
+                if (hi > 0.75_qp*meet .and. meet - lo <= model%ladder_apse) hi = meet
                 call add_split(panels, count, kind_apse, lo, hi, 1.0_qp, a%lambda_r, a)
                 lo = hi
             end do
@@ -737,9 +762,9 @@ contains
                            c, split_root(a%delta_r/c), a)
             lo = top
             do while (lo < a%big_lambda - meet)
-                hi = min(ladder*lo, lo + ladder*model%sigma_start, a%big_lambda - meet)
+                hi = min(ladder*lo, lo + model%ladder_start, a%big_lambda - meet)
                 if (hi > 0.75_qp*(a%big_lambda - meet) .and. &
-                    a%big_lambda - meet - lo <= ladder*model%sigma_start) &
+                    a%big_lambda - meet - lo <= model%ladder_start) &
                     hi = a%big_lambda - meet
                 call add_split(start_side, n_start, kind_start, lo, hi, 1.0_qp, a%delta_r, a)
                 lo = hi
@@ -760,8 +785,8 @@ contains
         type(central_force_model), intent(in) :: model
         type(arch_setup), intent(in) :: a
         real(qp), intent(out) :: b, c
-        b = min(1.0_qp, 0.5_qp*model%sigma_apse)
-        c = min(1.0_qp, 0.5_qp*model%sigma_start)
+        b = model%root_apse
+        c = model%root_start
         if (a%weight_above == 0.0_qp .and. a%lambda_r > b .and. a%lambda_r <= 4.0_qp*b &
             .and. a%lambda_r + c < a%big_lambda) then
             b = a%lambda_r
@@ -781,6 +806,131 @@ contains
             a%lambda_r < max(b, min(a%big_lambda - c, a%big_lambda*b/(b + c))) .and. &
             a%big_lambda > b + c
     end function continued_root
+
+    !> `arch_panels` in hardware precision, for the early phase (`theta_xp`): the same
+    !! rules on Lambda, lambda_r and delta_r rounded to the hardware kind, the panels'
+    !! ends and splits hardware numbers. Not for binary128 sums (the two sides' ends and
+    !! the splits at the endpoint are exact only to the hardware kind's rounding); the
+    !! early phase's nodes and sums are in that kind, and its root is checked by the
+    !! certified binary128 step (`final_step`).
+    pure subroutine arch_panels_xp(model, a, panels, count)
+        type(central_force_model), intent(in) :: model
+        type(arch_setup), intent(in) :: a
+        type(panel), intent(out) :: panels(max_panels)
+        integer, intent(out) :: count
+        real(xp), parameter :: steps = real(ladder, xp)
+        real(xp) :: x(3), b, c, meet, lo, hi, origin, top, rest, longest
+        type(panel) :: start_side(max_panels)
+        integer :: n_start, k
+        count = 0
+        x = real([a%big_lambda, a%lambda_r, a%delta_r], xp)
+        call root_scales_xp(model, a, x, b, c)
+        if (x(1) <= 0.125_xp*(b + c)) then
+            ! a short arch (rare: R next to 1): `arch_panels`' one panel
+            call arch_panels(model, a, panels, count)
+            return
+        end if
+        if (x(1) <= b + c) then
+            b = x(1)*b/(b + c)
+            c = x(1) - b
+            call add_split_xp(panels, count, kind_apse_root, 0.0_xp, 1.0_xp, b, &
+                              sqrt(x(2)/b), a)
+            call add_split_xp(panels, count, kind_start_root, 0.0_xp, 1.0_xp, c, &
+                              sqrt(x(3)/c), a)
+            return
+        end if
+        meet = max(b, min(x(1) - c, x(1)*b/(b + c)))
+        longest = model%layout_xp(4)
+        if (continued_root_xp(a, x, b, c)) then
+            lo = min(meet, x(2) + longest)
+            call push(panels, count, panel(kind_apse_root, real(sqrt(x(2)/b), qp), &
+                      real(sqrt(lo/b), qp), real(b, qp), a%weight_above, 1.0_real64))
+        else
+            call add_split_xp(panels, count, kind_apse_root, 0.0_xp, 1.0_xp, b, &
+                              sqrt(x(2)/b), a)
+            lo = b
+        end if
+        origin = merge(0.0_xp, x(2), a%weight_below > 0.0_qp)
+        do while (lo < meet)
+            if (model%layout_xp(1)*(lo - origin) > 300.0_xp) exit
+            hi = min(steps*lo, lo + longest, meet)
+            if (hi > 0.75_xp*meet .and. meet - lo <= longest) hi = meet
+            call add_split_xp(panels, count, kind_apse, lo, hi, 1.0_xp, x(2), a)
+            lo = hi
+        end do
+        if (model%layout_xp(1)*(meet - origin) > 300.0_xp) return
+        rest = x(1) - meet
+        top = rest
+        if (top > 2.5_xp*steps*c) top = 2.0_xp*steps*c
+        n_start = 0
+        call add_split_xp(start_side, n_start, kind_start_root, 0.0_xp, sqrt(top/c), c, &
+                          sqrt(x(3)/c), a)
+        lo = top
+        longest = model%layout_xp(5)
+        do while (lo < rest)
+            hi = min(steps*lo, lo + longest, rest)
+            if (hi > 0.75_xp*rest .and. rest - lo <= longest) hi = rest
+            call add_split_xp(start_side, n_start, kind_start, lo, hi, 1.0_xp, x(3), a)
+            lo = hi
+        end do
+        do k = n_start, 1, -1
+            if (count >= max_panels) exit
+            count = count + 1
+            panels(count) = start_side(k)
+        end do
+    end subroutine arch_panels_xp
+
+    !> `root_scales` in hardware precision, x = [Lambda, lambda_r, delta_r].
+    pure subroutine root_scales_xp(model, a, x, b, c)
+        type(central_force_model), intent(in) :: model
+        type(arch_setup), intent(in) :: a
+        real(xp), intent(in) :: x(3)
+        real(xp), intent(out) :: b, c
+        b = model%layout_xp(2)
+        c = model%layout_xp(3)
+        if (a%weight_above == 0.0_qp .and. x(2) > b .and. x(2) <= 4.0_xp*b .and. &
+            x(2) + c < x(1)) then
+            b = x(2)
+        else if (a%weight_below == 0.0_qp .and. x(3) > c .and. x(3) <= 4.0_xp*c .and. &
+                 x(3) + b < x(1)) then
+            c = x(3)
+        end if
+    end subroutine root_scales_xp
+
+    !> `continued_root` in hardware precision, x = [Lambda, lambda_r, delta_r].
+    pure logical function continued_root_xp(a, x, b, c)
+        type(arch_setup), intent(in) :: a
+        real(xp), intent(in) :: x(3), b, c
+        continued_root_xp = .false.
+        if (a%weight_below /= 0.0_qp .or. x(1) <= b + c) return
+        continued_root_xp = x(2) >= 0.25_xp*b .and. x(2) < max(b, min(x(1) - c, x(1)*b/(b + c)))
+    end function continued_root_xp
+
+    !> `add_split` in hardware precision (the panels' ends rounded to binary128 exactly).
+    pure subroutine add_split_xp(panels, count, kind, lo, hi, scale, split, a)
+        type(panel), intent(inout) :: panels(:)
+        integer, intent(inout) :: count
+        integer, intent(in) :: kind
+        real(xp), intent(in) :: lo, hi, scale, split
+        type(arch_setup), intent(in) :: a
+        real(qp) :: w_lo, w_hi
+        logical :: reversed
+        reversed = kind == kind_start .or. kind == kind_start_root
+        w_lo = merge(a%weight_above, a%weight_below, reversed)
+        w_hi = merge(a%weight_below, a%weight_above, reversed)
+        if (split <= lo) then
+            call push(panels, count, panel(kind, real(lo, qp), real(hi, qp), real(scale, qp), &
+                                           w_hi, 1.0_real64))
+        else if (split >= hi) then
+            call push(panels, count, panel(kind, real(lo, qp), real(hi, qp), real(scale, qp), &
+                                           w_lo, 1.0_real64))
+        else
+            call push(panels, count, panel(kind, real(lo, qp), real(split, qp), &
+                                           real(scale, qp), w_lo, 1.0_real64))
+            call push(panels, count, panel(kind, real(split, qp), real(hi, qp), &
+                                           real(scale, qp), w_hi, 1.0_real64))
+        end if
+    end subroutine add_split_xp
 
     !> sqrt(z) for the root panels' splits, within an ulp: the hardware kind's square root
     !! and one correction (z - s^2)/(2 s) in it (libquadmath's sqrtq costs about ten
@@ -876,8 +1026,14 @@ contains
     !! log rho* (1 + w/(D log 10)) for D digits (`digits`, default 35; rule_for's n for D
     !! digits on that ellipse, D log 10/(2 log rho*) (1 + w/(D log 10)), is then exactly
     !! the n for which the singularity's term e^w rho*^(-2n) is below 10^-D), beyond reach
-    !! below exp(-D log 10). With `unweighted` (integrands not decaying from the apse:
-    !! `fall_piece`) every singularity counts.
+    !! below exp(-D log 10) (skipped before any image or transcendental). With
+    !! `unweighted` (integrands not decaying from the apse: `fall_piece`) every
+    !! singularity counts. In real arithmetic: the ellipse through an image z has the
+    !! panel's ends as foci, rho* = a + sqrt(a^2 - 1) with a = (|z - lo| + |z - hi|)/(hi -
+    !! lo) (`ellipse_excess`: a - 1 without cancellation); one of each pair of conjugate
+    !! singularities (the same ellipse); one logarithm for all those of weight 0 (the
+    !! least a), one for each weighted one unless a bound without logarithm puts it beyond
+    !! the least so far (`acosh_below`).
     pure function bernstein_log(model, big_lambda, p, unweighted, digits) result(log_rho)
         type(central_force_model), intent(in) :: model
         real(qp), intent(in) :: big_lambda
@@ -886,107 +1042,165 @@ contains
         !> the digits asked of the panel (`rule_for`'s); default 35
         real(qp), intent(in), optional :: digits
         real(real64) :: log_rho
-        real(real64), parameter :: most = 8.0_real64
-        complex(real64) :: zeta(8), point, image(3), t, arc
-        real(real64) :: lo, hi, big, sa, ss, log_min, kappa, near, w, lr, reach
-        integer :: k, m, images
+        real(real64), parameter :: most = 8.0_real64, none = huge(1.0_real64)
+        real(real64) :: re(5), im(5), w(5), excess(5), lo, hi, scale, kappa, near, reach, &
+                        side, least, log_min
+        logical :: apse_side
+        integer :: k
         reach = 35.0_real64*log(10.0_real64)
         if (present(digits)) reach = real(max(digits, 2.0_qp), real64)*log(10.0_real64)
         lo = real(p%lo, real64)
         hi = real(p%hi, real64)
-        big = real(big_lambda, real64)
-        sa = real(model%sigma_apse, real64)
-        ss = real(model%sigma_start, real64)
-        kappa = real(pi/model%sigma_apse, real64)
+        scale = real(p%scale, real64)
+        kappa = model%decay64
         if (present(unweighted)) then
             if (unweighted) kappa = 0.0_real64
         end if
-        ! singular points as offsets from the panel's own end (apse or start)
-        ! (+-2i: not a singularity but the growth of the factors exp(-+lambda),
-        ! exp(-delta) off the real axis, which fewer nodes would not resolve)
-        select case (p%kind)
-        case (kind_apse_root, kind_apse, kind_full)
-            zeta = [(0.0_real64, 0.0_real64), cmplx(0.0_real64, sa, real64), &
-                    cmplx(0.0_real64, -sa, real64), cmplx(big, 0.0_real64, real64), &
-                    cmplx(big, ss, real64), cmplx(big, -ss, real64), &
-                    (0.0_real64, 2.0_real64), (0.0_real64, -2.0_real64)]
-        case default
-            zeta = [(0.0_real64, 0.0_real64), cmplx(0.0_real64, ss, real64), &
-                    cmplx(0.0_real64, -ss, real64), cmplx(big, 0.0_real64, real64), &
-                    cmplx(big, sa, real64), cmplx(big, -sa, real64), &
-                    (0.0_real64, 2.0_real64), (0.0_real64, -2.0_real64)]
-        end select
+        ! singular points as offsets from the panel's own end (apse or start): the end,
+        ! its complex singularities, the other end, its complex singularities (one of
+        ! each conjugate pair), and 2i (not a singularity but the growth of the factors
+        ! exp(-+lambda), exp(-delta) off the real axis, which fewer nodes would not
+        ! resolve)
+        apse_side = p%kind <= kind_apse .or. p%kind == kind_full
+        side = merge(1.0_real64, -1.0_real64, apse_side)
+        re = [0.0_real64, 0.0_real64, real(big_lambda, real64), real(big_lambda, real64), &
+              0.0_real64]
+        im = [0.0_real64, merge(model%sigma64(1), model%sigma64(2), apse_side), 0.0_real64, &
+              merge(model%sigma64(2), model%sigma64(1), apse_side), 2.0_real64]
         ! the panel's point nearest the apse (its largest integrands), from its own end
         select case (p%kind)
         case (kind_apse_root)
-            near = real(p%scale, real64)*lo*lo
+            near = scale*lo*lo
         case (kind_apse)
             near = lo
         case (kind_start)
             near = -hi
         case (kind_full)
-            near = real(p%scale, real64)*lo*lo*(3.0_real64 - 2.0_real64*lo)
+            near = scale*lo*lo*(3.0_real64 - 2.0_real64*lo)
         case default
-            near = -real(p%scale, real64)*hi*hi
+            near = -scale*hi*hi
         end select
-        log_min = most
-        do k = 1, size(zeta)
+        do k = 1, 5
             ! weight: log of the integrands' size at the singularity relative to the panel's
             ! largest (the offsets on the start side count toward the start)
-            w = 0.0_real64
-            if (k <= 6) w = min(0.0_real64, -kappa*(merge(1.0_real64, -1.0_real64, &
-                p%kind <= kind_apse .or. p%kind == kind_full)*real(zeta(k)) - near))
-            if (w <= -reach) cycle
-            if (p%kind == kind_apse .or. p%kind == kind_start) then
-                images = 1
-                image(1) = zeta(k)
-            else if (p%kind == kind_full) then
-                ! the preimages of lambda = zeta: s^2 (3 - 2 s) = t at s = 1/2 - sin((asin(1
-                ! - 2 t) + 2 pi m)/3), m = 0, 1, 2; the ends' double ones (s = 0 of the
-                ! apse, s = 1 of the start) removed by the substitution, none near the
-                ! panel for |t| > 1e6
-                t = zeta(k)/real(p%scale, real64)
-                if (abs(t) > 1.0e6_real64) cycle
-                arc = asin(1.0_real64 - 2.0_real64*t)
-                images = 0
-                do m = 0, 2
-                    point = 0.5_real64 - sin((arc + real(2*m, real64)* &
-                                              acos(-1.0_real64))/3.0_real64)
-                    if ((k == 1 .and. abs(point) < 1.0e-6_real64) .or. &
-                        (k == 4 .and. abs(1.0_real64 - point) < 1.0e-6_real64)) cycle
-                    images = images + 1
-                    image(images) = point
-                end do
-            else
-                if (k == 1) cycle    ! removed by the substitution
-                point = sqrt(zeta(k)/real(p%scale, real64))
-                images = 2
-                image(1:2) = [point, -point]
-            end if
-            do m = 1, images
-                lr = 0.5_real64*log(bernstein2((2.0_real64*image(m) - (lo + hi))/(hi - lo)))
-                log_min = min(log_min, lr*reach/(reach + w))
-            end do
+            w(k) = 0.0_real64
+            if (k <= 4) w(k) = min(0.0_real64, -kappa*(side*re(k) - near))
+            excess(k) = none
+            if (w(k) <= -reach) cycle
+            select case (p%kind)
+            case (kind_apse, kind_start)
+                excess(k) = ellipse_excess(re(k), im(k), lo, hi)
+            case (kind_full)
+                excess(k) = full_excess(k, re(k), im(k), scale, lo, hi)
+            case default
+                ! (the end itself removed by the substitution)
+                if (k > 1) excess(k) = root_excess(re(k), im(k), scale, lo, hi)
+            end select
+        end do
+        least = minval(excess, mask=w == 0.0_real64)
+        log_min = most
+        if (least < none) log_min = min(most, acosh_1p(least))
+        do k = 1, 4
+            if (.not. (w(k) < 0.0_real64 .and. excess(k) < none)) cycle
+            if (acosh_below(excess(k))*reach/(reach + w(k)) >= log_min) cycle
+            log_min = min(log_min, acosh_1p(excess(k))*reach/(reach + w(k)))
         end do
         log_rho = max(log_min, 1.0e-3_real64)
-    contains
-        !> The square of the Bernstein parameter through x: the larger of |x -+ root|
-        !! (their product is 1), squared (no hypot).
-        pure real(real64) function bernstein2(x)
-            complex(real64), intent(in) :: x
-            complex(real64) :: root, w
-            root = sqrt(x*x - 1.0_real64)
-            w = merge(x + root, x - root, real(conjg(x)*root) >= 0.0_real64)
-            bernstein2 = real(w)**2 + aimag(w)**2
-        end function bernstein2
     end function bernstein_log
+
+    !> a - 1 for the ellipse with foci lo < hi through z = zr + i zi, a = (|z - lo| + |z -
+    !! hi|)/(hi - lo): |z - c| - |zr - c| = zi^2/(|z - c| + |zr - c|) and |zr - lo| + |zr -
+    !! hi| - (hi - lo) = 2 max(0, lo - zr, zr - hi), every term >= 0 (no cancellation).
+    pure function ellipse_excess(zr, zi, lo, hi) result(e)
+        real(real64), intent(in) :: zr, zi, lo, hi
+        real(real64) :: e, dl, dh
+        dl = abs(zr - lo)
+        dh = abs(zr - hi)
+        e = 2.0_real64*max(0.0_real64, lo - zr, zr - hi)
+        if (zi /= 0.0_real64) e = e + zi*zi/(sqrt(dl*dl + zi*zi) + dl) + &
+                                  zi*zi/(sqrt(dh*dh + zi*zi) + dh)
+        e = e/(hi - lo)
+    end function ellipse_excess
+
+    !> `ellipse_excess` of the nearer preimage of z = zr + i zi (zi >= 0, z /= 0) on a
+    !! root panel, s = +-sqrt(z/scale): the principal root by real formulas (its real
+    !! part >= 0, so it is the nearer of the two to a panel with lo >= 0: |s - c| <= |-s -
+    !! c| for every c >= 0; both where lo < 0).
+    pure function root_excess(zr, zi, scale, lo, hi) result(e)
+        real(real64), intent(in) :: zr, zi, scale, lo, hi
+        real(real64) :: e, xr, xi, m, sr, si
+        xr = zr/scale
+        xi = zi/scale
+        if (xi == 0.0_real64) then
+            sr = sqrt(max(xr, 0.0_real64))
+            si = sqrt(max(-xr, 0.0_real64))
+        else
+            m = sqrt(xr*xr + xi*xi)
+            if (xr >= 0.0_real64) then
+                sr = sqrt(0.5_real64*(m + xr))
+                si = 0.5_real64*xi/sr
+            else
+                si = sqrt(0.5_real64*(m - xr))
+                sr = 0.5_real64*xi/si
+            end if
+        end if
+        e = ellipse_excess(sr, si, lo, hi)
+        if (lo < 0.0_real64) e = min(e, ellipse_excess(-sr, si, lo, hi))
+    end function root_excess
+
+    !> `ellipse_excess` of the nearest preimage of z = zr + i zi on a `kind_full` panel:
+    !! s^2 (3 - 2 s) = t = z/scale at s = 1/2 - sin((asin(1 - 2 t) + 2 pi m)/3), m = 0, 1,
+    !! 2; the ends' double ones (s = 0 of the apse, k = 1; s = 1 of the start, k = 3)
+    !! removed by the substitution, none near the panel for |t| > 1e6.
+    pure function full_excess(k, zr, zi, scale, lo, hi) result(e)
+        integer, intent(in) :: k
+        real(real64), intent(in) :: zr, zi, scale, lo, hi
+        real(real64) :: e
+        complex(real64) :: t, arc, point
+        integer :: m
+        e = huge(1.0_real64)
+        t = cmplx(zr, zi, real64)/scale
+        if (abs(t) > 1.0e6_real64) return
+        arc = asin(1.0_real64 - 2.0_real64*t)
+        do m = 0, 2
+            point = 0.5_real64 - sin((arc + real(2*m, real64)*acos(-1.0_real64))/3.0_real64)
+            if ((k == 1 .and. abs(point) < 1.0e-6_real64) .or. &
+                (k == 3 .and. abs(1.0_real64 - point) < 1.0e-6_real64)) cycle
+            e = min(e, ellipse_excess(real(point), aimag(point), lo, hi))
+        end do
+    end function full_excess
+
+    !> acosh(1 + e), e >= 0: log(1 + y), y = e + sqrt(e (e + 2)), with Kahan's correction
+    !! of log(1 + y).
+    elemental function acosh_1p(e) result(l)
+        real(real64), intent(in) :: e
+        real(real64) :: l, y, v
+        y = e + sqrt(e*(e + 2.0_real64))
+        v = 1.0_real64 + y
+        if (v == 1.0_real64) then
+            l = y
+        else
+            l = log(v)*(y/(v - 1.0_real64))
+        end if
+    end function acosh_1p
+
+    !> A bound below `acosh_1p(e)` without logarithm (with a margin for its rounding):
+    !! log(1 + y) >= 2 y/(2 + y), and >= log y >= (exponent(y) - 1) log 2.
+    elemental function acosh_below(e) result(l)
+        real(real64), intent(in) :: e
+        real(real64) :: l, y
+        y = e + sqrt(e*(e + 2.0_real64))
+        l = (1.0_real64 - 1.0e-12_real64)*max(2.0_real64*y/(2.0_real64 + y), &
+            real(exponent(y) - 1, real64)*log(2.0_real64))
+    end function acosh_below
 
     !> The rule (element of model%gauss) for `digits` digits on a panel. An n-point
     !! rule errs by about M rho^(-2n) on the Bernstein ellipse rho (up to the nearest
     !! singularity, log_rho); the integrands decay like exp(-kappa tau) along the panel,
     !! so M grows like exp(kappa h ((rho + 1/rho)/2 - 1)) on an ellipse about a plain
     !! panel of half-length h (growth = kappa h): the smallest n over a few rho <= the
-    !! singular one is taken.
+    !! singular one is taken (a smaller ellipse only where its bound without the growth,
+    !! which rises as rho falls, is below the least so far: the same n without its cosh).
     pure function rule_for(log_rho, digits, growth) result(j)
         real(real64), intent(in) :: log_rho
         real(qp), intent(in) :: digits
@@ -996,14 +1210,18 @@ contains
         real(real64), parameter :: fractions(8) = [1.0_real64, 0.7_real64, 0.5_real64, &
             0.35_real64, 0.25_real64, 0.18_real64, 0.12_real64, 0.08_real64]
         target = real(max(digits, 2.0_qp), real64)*log(10.0_real64)
-        best = huge(1.0_real64)
-        do k = 1, size(fractions)
-            ! without growth the full ellipse is best
-            if (growth == 0.0_real64 .and. k > 1) exit
-            lr = log_rho*fractions(k)
-            need = (target + growth*(cosh(lr) - 1.0_real64))/(2.0_real64*lr)
-            best = min(best, need)
-        end do
+        lr = log_rho
+        best = target/(2.0_real64*lr)
+        ! without growth the full ellipse is best
+        if (growth /= 0.0_real64) then
+            best = huge(1.0_real64)
+            do k = 1, size(fractions)
+                lr = log_rho*fractions(k)
+                if (target/(2.0_real64*lr) >= best) exit
+                need = (target + growth*(cosh(lr) - 1.0_real64))/(2.0_real64*lr)
+                best = min(best, need)
+            end do
+        end if
         if (best > real(max_nodes, real64)) then
             j = max_nodes/2
         else
@@ -1344,18 +1562,22 @@ contains
     !! the integrands where the weighted region starts, which the cut never reaches
     !! where the decay rate pi/sigma_apse times Lambda is below 250 (the tables' range
     !! but for the steepest laws), and for the root panel up to an endpoint inside the
-    !! first ladder panel (`root_scales`). Elsewhere two layouts.
+    !! first ladder panel (`root_scales`). Elsewhere two layouts. With `hardware` (the
+    !! early phase) the layouts of `arch_panels_xp`.
     pure subroutine split_panels(model, a, below, panels_below, n_below, above, &
-                                 panels_above, n_above)
+                                 panels_above, n_above, hardware)
         type(central_force_model), intent(in) :: model
         type(arch_setup), intent(in) :: a
         type(arch_setup), intent(out) :: below, above
         type(panel), intent(out) :: panels_below(max_panels), panels_above(max_panels)
         integer, intent(out) :: n_below, n_above
+        logical, intent(in), optional :: hardware
         type(arch_setup) :: both
         type(panel) :: panels(max_panels)
         real(qp) :: b(3), c(3)
+        real(xp) :: bx(3), cx(3), x(3)
         integer :: count, p
+        logical :: fast, one_layout
         below = a
         below%weight_below = 1.0_qp
         below%weight_above = 0.0_qp
@@ -1366,15 +1588,28 @@ contains
         both = a
         both%weight_below = 1.0_qp
         both%weight_above = 2.0_qp
-        call root_scales(model, both, b(1), c(1))
-        call root_scales(model, below, b(2), c(2))
-        call root_scales(model, above, b(3), c(3))
-        if (pi/model%sigma_apse*a%big_lambda <= 250.0_qp .and. all(b == b(1)) .and. &
-            all(c == c(1)) .and. .not. continued_root(above, b(3), c(3))) &
-            call arch_panels(model, both, panels, count)
+        fast = .false.
+        if (present(hardware)) fast = hardware
+        if (fast) then
+            x = real([a%big_lambda, a%lambda_r, a%delta_r], xp)
+            call root_scales_xp(model, both, x, bx(1), cx(1))
+            call root_scales_xp(model, below, x, bx(2), cx(2))
+            call root_scales_xp(model, above, x, bx(3), cx(3))
+            one_layout = model%layout_xp(1)*x(1) <= 250.0_xp .and. &
+                all(bx == bx(1)) .and. all(cx == cx(1)) .and. &
+                .not. continued_root_xp(above, x, bx(3), cx(3))
+        else
+            call root_scales(model, both, b(1), c(1))
+            call root_scales(model, below, b(2), c(2))
+            call root_scales(model, above, b(3), c(3))
+            one_layout = model%decay_apse*a%big_lambda <= 250.0_qp .and. &
+                all(b == b(1)) .and. all(c == c(1)) .and. &
+                .not. continued_root(above, b(3), c(3))
+        end if
+        if (one_layout) call layout(both, panels, count)
         if (count >= max_panels) then
-            call arch_panels(model, below, panels_below, n_below)
-            call arch_panels(model, above, panels_above, n_above)
+            call layout(below, panels_below, n_below)
+            call layout(above, panels_above, n_above)
             return
         end if
         n_below = 0
@@ -1389,6 +1624,18 @@ contains
                 panels_above(n_above)%weight = 1.0_qp
             end if
         end do
+    contains
+        !> `arch_panels` or `arch_panels_xp`
+        pure subroutine layout(setup, list, n)
+            type(arch_setup), intent(in) :: setup
+            type(panel), intent(out) :: list(max_panels)
+            integer, intent(out) :: n
+            if (fast) then
+                call arch_panels_xp(model, setup, list, n)
+            else
+                call arch_panels(model, setup, list, n)
+            end if
+        end subroutine layout
     end subroutine split_panels
 
     !> Whether the first half-arch (weights 0, 1) must be int_lambda_r^Lambda in the early
@@ -1490,7 +1737,8 @@ contains
         type(panel) :: panels(max_panels)
         real(real64) :: part, last, v, lambda, delta, jacobian, g, big, scale, share
         integer :: count, p, k, j
-        call arch_panels(model, a, panels, count)
+        ! (the layout in hardware precision: the sums are in double)
+        call arch_panels_xp(model, a, panels, count)
         theta = 0.0_real64
         last = 0.0_real64
         big = real(a%big_lambda, real64)
@@ -1870,7 +2118,7 @@ contains
             ! as `table_sums`, Theta scaled by exp(shift)
             if (shift /= 0.0_xp) whole = whole*exp(shift)
             call split_panels(model, a, below, panels_below, n_below, above, panels_above, &
-                              n_above)
+                              n_above, hardware=.true.)
             ! (the hardware-precision evaluations straight to int_lambda_r^Lambda where the
             ! check below is bound to fail)
             use_below = n_below <= n_above .and. &
@@ -1932,7 +2180,7 @@ contains
             count = given_count
             panels(1:count) = given(1:count)
         else
-            call arch_panels(model, a, panels, count)
+            call arch_panels_xp(model, a, panels, count)
         end if
         theta = 0.0_xp
         slope = 0.0_xp
