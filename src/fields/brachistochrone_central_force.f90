@@ -108,6 +108,10 @@ module brachistochrone_central_force
     !> Digits asked of the rough evaluation at R = rho/2 that chooses the early phase's
     !! unknown and gives its bracket's end (`open_bracket`)
     real(qp), parameter :: bracket_digits = 8.0_qp
+    !> Laws whose integrands decay faster than exp(-model_decay lambda) from the apse
+    !! (power laws n >= 5) take the early phase's first iterate in u from Theta's shape
+    !! (`arcsin_model_root`; the steep ones, `steep_decay`, in any case)
+    real(qp), parameter :: model_decay = 3.0_qp
     !> A panel whose bound is below this share of the running sum is skipped.
     real(qp), parameter :: negligible = 1.0e-40_qp
     !> Panel kinds: lambda = b s^2 (from the apse), lambda, delta, delta = c s^2 (from
@@ -2439,10 +2443,14 @@ contains
         if (present(slope_hi) .and. prob%use_u .and. prob%form == 0) then
             if (slope_hi /= 0.0_real64) then
                 xk = hermite(real(slope_hi, xp))
-                ! (Upsilon's own shape where it fits: `arcsin_model_root`)
-                x_new = model_point(fa + real(prob%psi, xp), fb + real(prob%psi, xp), &
-                                    real(slope_hi, xp), real(prob%psi, xp))
-                if (x_new > 0.0_xp) xk = x_new
+                ! (Upsilon's own shape where it fits, for laws decaying at least like
+                ! exp(-3 lambda) from the apse: `arcsin_model_root`; slower ones take as
+                ! many evaluations from either first iterate on the engine-timing grid)
+                if (pi/model%sigma_apse >= model_decay) then
+                    x_new = model_point(fa + real(prob%psi, xp), fb + real(prob%psi, xp), &
+                                        real(slope_hi, xp), real(prob%psi, xp))
+                    if (x_new > 0.0_xp) xk = x_new
+                end if
             end if
         end if
         ! the unknown y = log R: the inverse Hermite root through both ends where their
@@ -2675,7 +2683,7 @@ contains
                 if (side == -1) h_lo = 0.5_real64*h_lo
                 side = -1
             end if
-            if (t_hi - t_lo < 1.0e-9_real64 .or. h == 0.0_real64) exit
+            if (t_hi - t_lo < 1.0e-7_real64 .or. h == 0.0_real64) exit
         end do
         kappa = -log(cos(t))/l_b
         c1 = (q0 - qb)/t
