@@ -112,6 +112,8 @@ module brachistochrone_central_force
     !! (power laws n >= 5) take the early phase's first iterate in u from Theta's shape
     !! (`arcsin_model_root`; the steep ones, `steep_decay`, in any case)
     real(qp), parameter :: model_decay = 3.0_qp
+    !> The shapes of the early phase's first-iterate models (`shape_root`)
+    integer, parameter :: shape_arcsin = 1, shape_exp = 2
     !> A panel whose bound is below this share of the running sum is skipped.
     real(qp), parameter :: negligible = 1.0e-40_qp
     !> Panel kinds: lambda = b s^2 (from the apse), lambda, delta, delta = c s^2 (from
@@ -2656,46 +2658,21 @@ contains
     pure real(real64) function arcsin_model_root(l_b, q0, qb, dqb, target) result(l)
         real(real64), intent(in) :: l_b, q0, qb, dqb, target
         real(real64), parameter :: half_pi = 2.0_real64*atan(1.0_real64)
-        real(real64) :: r1, t, t_lo, t_hi, h, h_lo, h_hi, c1, c0, kappa, v
-        integer :: k, side
+        real(real64) :: r1, t, c1, c0, kappa, v
+        logical :: found
         l = -1.0_real64
         if (q0 == qb .or. .not. l_b > 0.0_real64) return
         r1 = -dqb*l_b/(q0 - qb)
         if (.not. (r1 > 1.0e-6_real64 .and. r1 < 0.5_real64 - 1.0e-6_real64)) return
-        t_lo = 1.0e-3_real64
-        t_hi = half_pi - 1.0e-8_real64
-        h_lo = model_h(t_lo)
-        h_hi = model_h(t_hi)
-        if (.not. (h_lo > 0.0_real64 .and. h_hi < 0.0_real64)) return
-        side = 0
-        t = t_lo
-        do k = 1, 60
-            t = (t_lo*h_hi - t_hi*h_lo)/(h_hi - h_lo)
-            h = model_h(t)
-            if (h > 0.0_real64) then
-                t_lo = t
-                h_lo = h
-                if (side == 1) h_hi = 0.5_real64*h_hi
-                side = 1
-            else
-                t_hi = t
-                h_hi = h
-                if (side == -1) h_lo = 0.5_real64*h_lo
-                side = -1
-            end if
-            if (t_hi - t_lo < 1.0e-7_real64 .or. h == 0.0_real64) exit
-        end do
+        call shape_root(shape_arcsin, r1, 1.0e-3_real64, half_pi - 1.0e-8_real64, &
+                        1.0e-7_real64, 0.0_real64, 60, t, found)
+        if (.not. found) return
         kappa = -log(cos(t))/l_b
         c1 = (q0 - qb)/t
         c0 = q0 - c1*half_pi
         v = (target - c0)/c1
         if (.not. (v > 0.0_real64 .and. v < half_pi .and. kappa > 0.0_real64)) return
         l = -log(sin(v))/kappa
-    contains
-        pure real(real64) function model_h(z)
-            real(real64), intent(in) :: z
-            model_h = -log(cos(z))/(z*tan(z)) - r1
-        end function model_h
     end function arcsin_model_root
 
     !> `arcsin_model_root` for a complete arch next to rho = 1 (the second half-arch from
@@ -2709,35 +2686,15 @@ contains
     !! (n = 1 + 1e-6) to 0.23 (n = 32) fewer evaluations per endpoint.)
     pure real(real64) function exp_model_root(l_b, q0, qb, dqb, target) result(l)
         real(real64), intent(in) :: l_b, q0, qb, dqb, target
-        real(real64) :: r2, x, x_lo, x_hi, h, h_lo, h_hi, c1, c0, kappa, w
-        integer :: k, side
+        real(real64) :: r2, x, c1, c0, kappa, w
+        logical :: found
         l = -1.0_real64
         if (q0 == qb .or. .not. l_b > 0.0_real64) return
         r2 = -dqb*l_b/(q0 - qb)
         if (.not. (r2 > 1.0e-12_real64 .and. r2 < 0.999_real64)) return
-        x_lo = 1.0e-3_real64
-        x_hi = 60.0_real64
-        h_lo = x_lo/(exp(x_lo) - 1.0_real64) - r2
-        h_hi = x_hi/(exp(x_hi) - 1.0_real64) - r2
-        if (.not. (h_lo > 0.0_real64 .and. h_hi < 0.0_real64)) return
-        side = 0
-        x = x_lo
-        do k = 1, 80
-            x = (x_lo*h_hi - x_hi*h_lo)/(h_hi - h_lo)
-            h = x/(exp(x) - 1.0_real64) - r2
-            if (h > 0.0_real64) then
-                x_lo = x
-                h_lo = h
-                if (side == 1) h_hi = 0.5_real64*h_hi
-                side = 1
-            else
-                x_hi = x
-                h_hi = h
-                if (side == -1) h_lo = 0.5_real64*h_lo
-                side = -1
-            end if
-            if (x_hi - x_lo < 1.0e-9_real64*x .or. h == 0.0_real64) exit
-        end do
+        call shape_root(shape_exp, r2, 1.0e-3_real64, 60.0_real64, 0.0_real64, &
+                        1.0e-9_real64, 80, x, found)
+        if (.not. found) return
         kappa = x/l_b
         c1 = (q0 - qb)/(1.0_real64 - exp(-x))
         c0 = q0 - c1
@@ -2745,6 +2702,53 @@ contains
         if (.not. (w > 0.0_real64 .and. w < 1.0_real64)) return
         l = -log(w)/kappa
     end function exp_model_root
+
+    !> The root z in (lo, hi) of shape(z) = r for the early phase's model shapes, both
+    !! decreasing (`shape_arcsin`: -log(cos z)/(z tan z) of `arcsin_model_root`,
+    !! `shape_exp`: z/(exp(z) - 1) of `exp_model_root`), by regula falsi with the Illinois
+    !! correction until the bracket is below abs_tol + rel_tol z or the residual 0, at
+    !! most max_steps steps; not `found` where shape - r has no sign change on [lo, hi].
+    pure subroutine shape_root(shape, r, lo, hi, abs_tol, rel_tol, max_steps, z, found)
+        integer, intent(in) :: shape, max_steps
+        real(real64), intent(in) :: r, lo, hi, abs_tol, rel_tol
+        real(real64), intent(out) :: z
+        logical, intent(out) :: found
+        real(real64) :: z_lo, z_hi, h, h_lo, h_hi
+        integer :: k, side
+        z_lo = lo
+        z_hi = hi
+        h_lo = shape_value(z_lo) - r
+        h_hi = shape_value(z_hi) - r
+        z = lo
+        found = h_lo > 0.0_real64 .and. h_hi < 0.0_real64
+        if (.not. found) return
+        side = 0
+        do k = 1, max_steps
+            z = (z_lo*h_hi - z_hi*h_lo)/(h_hi - h_lo)
+            h = shape_value(z) - r
+            if (h > 0.0_real64) then
+                z_lo = z
+                h_lo = h
+                if (side == 1) h_hi = 0.5_real64*h_hi
+                side = 1
+            else
+                z_hi = z
+                h_hi = h
+                if (side == -1) h_lo = 0.5_real64*h_lo
+                side = -1
+            end if
+            if (z_hi - z_lo < abs_tol + rel_tol*z .or. h == 0.0_real64) exit
+        end do
+    contains
+        pure real(real64) function shape_value(x)
+            real(real64), intent(in) :: x
+            if (shape == shape_arcsin) then
+                shape_value = -log(cos(x))/(x*tan(x))
+            else
+                shape_value = x/(exp(x) - 1.0_real64)
+            end if
+        end function shape_value
+    end subroutine shape_root
 
     !> The root of the inverse cubic Hermite interpolant x(f) through (p, f_p, d_p) and
     !! (r, f_r, d_r) (values and slopes) where f is monotone between them and the root
