@@ -1874,7 +1874,7 @@ contains
         real(qp) :: sums(3), fall
         logical :: found
         real(xp) :: integral_slopes(2), g, omq, log_slope, root, h, jump, big_r, error
-        real(xp) :: magnitude(2)
+        real(xp) :: magnitude(2), error_jump
         if (present(slopes)) then
             call table_sums(model, a, sums, integral_slopes, magnitude, expected, fall_r)
             ! the endpoint lambda_r = Lambda - delta_r moves with Lambda: the integrands
@@ -1894,12 +1894,15 @@ contains
             slopes(2) = big_r*(integral_slopes(2) + jump*h - real(sums(2), xp))
             if (second) slopes(2) = slopes(2) + 2.0_xp*big_r
             ! compensated sums of terms of one sign, each within about 20 roundings of
-            ! xp, from nodes rounded to xp: the terms vary like exp(-kappa lambda) (power
-            ! laws: exp(-a delta), a < 2 kappa), lambda, delta <= Lambda
-            error = epsilon(1.0_xp)*(32.0_xp + real(2.0_qp*pi/model%sigma_apse* &
-                                                   a%big_lambda, xp))
-            slopes(3) = error*(magnitude(1) + abs(g))
-            slopes(4) = error*big_r*(magnitude(2) + abs(h) + real(sums(2), xp))
+            ! xp: the terms of `arch_sums` from its binary128 nodes' values (and the
+            ! tables', checked to 4 roundings), but g and h at lambda_r, delta_r rounded to
+            ! xp, where the terms vary like exp(-kappa lambda) (power laws: exp(-a delta),
+            ! a < 2 kappa), lambda, delta <= Lambda
+            error = 32.0_xp*epsilon(1.0_xp)
+            error_jump = epsilon(1.0_xp)*(32.0_xp + real(2.0_qp*model%decay_apse* &
+                                                        a%big_lambda, xp))
+            slopes(3) = error*magnitude(1) + error_jump*abs(g)
+            slopes(4) = big_r*(error*(magnitude(2) + real(sums(2), xp)) + error_jump*abs(h))
         else
             call table_sums(model, a, sums, expected=expected, fall_r=fall_r)
         end if
