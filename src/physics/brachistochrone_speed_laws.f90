@@ -678,7 +678,7 @@ contains
         if (a*big_lambda > 0.5_qp) c(2) = 1.0_qp - c(4)
         c(6) = 1.0_qp/c(2)
         ! q/v = sqrt(q) exp(-lambda) R^(a/2) sqrt(a/(2 E(Lambda)))
-        c(7) = sqrt(0.5_qp*a*c(4)*c(6))
+        c(7) = fast_sqrt(0.5_qp*a*c(4)*c(6))
         ! the offset 1/(4 a) where arch_terms switches from expm1 to exp
         c(8) = 0.25_qp/a
     end function power_apse_constants
