@@ -587,7 +587,7 @@ contains
         real(qp) :: z
         integer :: m
         values = 0.0_qp
-        z = log(big_lambda)
+        z = fast_log(big_lambda)
         found = far_piece(model, z) > 0
         if (.not. found) return
         do m = 1, wanted
