@@ -105,6 +105,15 @@ module brachistochrone_central_force
     !! rough evaluations (which end at a step below 1e-5: 12 digits place the next
     !! iterate within about 1e-10)
     real(qp), parameter :: hardware_digits = 20.0_qp, rough_digits = 12.0_qp
+    !> Digits asked of the rough evaluation at R = rho/2 that chooses the early phase's
+    !! unknown and gives its bracket's end (`open_bracket`)
+    real(qp), parameter :: bracket_digits = 8.0_qp
+    !> Laws whose integrands decay faster than exp(-model_decay lambda) from the apse
+    !! (power laws n >= 5) take the early phase's first iterate in u from Theta's shape
+    !! (`arcsin_model_root`; the steep ones, `steep_decay`, in any case)
+    real(qp), parameter :: model_decay = 3.0_qp
+    !> The shapes of the early phase's first-iterate models (`shape_root`)
+    integer, parameter :: shape_arcsin = 1, shape_exp = 2
     !> A panel whose bound is below this share of the running sum is skipped.
     real(qp), parameter :: negligible = 1.0e-40_qp
     !> Panel kinds: lambda = b s^2 (from the apse), lambda, delta, delta = c s^2 (from
@@ -2096,11 +2105,13 @@ contains
     !! `hardware_digits` rules, as theta exp(-shift) and slope exp(-shift) (the scaling of
     !! `theta64`). The slope is that of the integrand at fixed lambda (`arch_sums`) plus
     !! the jump of the weights times the integrand at lambda_r = Lambda - delta_r.
-    pure subroutine theta_xp(model, a, rough, theta, slope, shift)
+    pure subroutine theta_xp(model, a, rough, theta, slope, shift, digits)
         type(central_force_model), intent(in) :: model
         type(arch_setup), intent(in) :: a
         logical, intent(in) :: rough   !! 12-digit rules, transcendentals in double
         real(xp), intent(out) :: theta, slope, shift
+        !> the digits asked of the rules (default 12 where `rough`, else 20)
+        real(qp), intent(in), optional :: digits
         type(arch_setup) :: below, above
         type(panel) :: panels_below(max_panels), panels_above(max_panels)
         real(xp) :: whole(2), part, part_slope, w_sign, p_sign, g, omq, log_slope
@@ -2129,10 +2140,10 @@ contains
             end if
             if (use_below) then
                 call panel_theta_xp(model, below, rough, shift, part, part_slope, &
-                                    panels_below, n_below)
+                                    panels_below, n_below, digits)
             else
                 call panel_theta_xp(model, above, rough, shift, part, part_slope, &
-                                    panels_above, n_above)
+                                    panels_above, n_above, digits)
             end if
             ! (the rough evaluations, on 12-digit rules for a root to about 1e-10, lose up
             ! to 10 bits)
@@ -2142,12 +2153,12 @@ contains
                 w_sign = 0.0_xp
                 p_sign = 1.0_xp
                 call panel_theta_xp(model, above, rough, shift, part, part_slope, &
-                                    panels_above, n_above)
+                                    panels_above, n_above, digits)
             end if
             theta = w_sign*whole(1) + p_sign*part
             slope = w_sign*whole(2) + p_sign*part_slope
         else
-            call panel_theta_xp(model, a, rough, shift, theta, slope)
+            call panel_theta_xp(model, a, rough, shift, theta, slope, digits=digits)
         end if
         if (a%weight_below /= a%weight_above .and. a%delta_r > 0.0_qp .and. &
             a%lambda_r > 0.0_qp) then
@@ -2159,7 +2170,7 @@ contains
 
     !> `theta_xp` over the panels of `a` (its weights), without the jump at the endpoint.
     pure subroutine panel_theta_xp(model, a, rough, shift, theta, slope, given, &
-                                   given_count)
+                                   given_count, digits)
         type(central_force_model), intent(in) :: model
         type(arch_setup), intent(in) :: a
         logical, intent(in) :: rough   !! 12-digit rules, transcendentals in double
@@ -2168,6 +2179,7 @@ contains
         !> `arch_panels(model, a, given, given_count)` where the caller has them
         type(panel), intent(in), optional :: given(max_panels)
         integer, intent(in), optional :: given_count
+        real(qp), intent(in), optional :: digits   !! as `theta_xp`'s
         type(panel) :: panels(max_panels)
         real(xp), dimension(max_nodes) :: lambda, delta, jacobian, g, h
         real(xp) :: part(2), last, big, scale, share, lo, width, exp_shift, weighted, weight
@@ -2203,7 +2215,7 @@ contains
                 if (share < 1.0e-24_xp) cycle
             end if
             pan%log_rho = bernstein_log(model, a%big_lambda, pan)
-            j = rule_for(pan%log_rho, merge(rough_digits, hardware_digits, rough) + &
+            j = rule_for(pan%log_rho, asked_digits(rough, digits) + &
                          real(min(0.0_xp, log10(max(share, 1.0e-30_xp))), qp), &
                          panel_growth(pan, 2.0_qp*pi/model%sigma_apse))
             ! the panel's nodes, the law's terms on all of them (one call), the sums
@@ -2243,6 +2255,15 @@ contains
             length = width
         end select
     end function panel_length_xp
+
+    !> The digits asked of the early phase's rules: `digits` where given, else
+    !! `rough_digits` or `hardware_digits`.
+    pure real(qp) function asked_digits(rough, digits)
+        logical, intent(in) :: rough
+        real(qp), intent(in), optional :: digits
+        asked_digits = merge(rough_digits, hardware_digits, rough)
+        if (present(digits)) asked_digits = digits
+    end function asked_digits
 
     !> `node_point` in hardware precision.
     elemental subroutine node_point_xp(kind, scale, big_lambda, v, lambda, delta, jacobian)
@@ -2352,14 +2373,20 @@ contains
         real(xp) :: scaled, scaled_slope, shift, lambda_slope, upsilon, limit, unscale
         call setup_xp(model, prob, x, a, lambda_slope)
         call theta_xp(model, a, rough, scaled, scaled_slope, shift)
-        ! exp(-shift) where used (1 on the second half-arch: no library call)
+        ! exp(-shift) where used (1 on the second half-arch: no library call; form 1 in
+        ! y = log R: where it is a normal number)
         unscale = 1.0_xp
-        if (shift /= 0.0_xp .and. (prob%form /= 1 .or. prob%use_u)) unscale = exp(-shift)
+        if (shift /= 0.0_xp .and. (prob%form /= 1 .or. prob%use_u .or. &
+                                   shift < 11000.0_xp)) unscale = exp(-shift)
         select case (prob%form)
         case (1)
-            ! log(Upsilon/psi) (the unknown u: the ratio first, as `residual64`)
-            if (prob%use_u) then
-                f = log(scaled*unscale/real(prob%psi, xp))
+            ! log(Upsilon/psi), the ratio first (as `residual64`) where Upsilon is a normal
+            ! number: log Upsilon - log psi would err by roundings of |log psi| (1e-17 at
+            ! psi = 1e-30, beyond the certified step's margin), the ratio by its own
+            upsilon = scaled*unscale
+            if (prob%use_u .or. (upsilon >= tiny(1.0_xp) .and. (shift < 11000.0_xp .or. &
+                                                               shift == 0.0_xp))) then
+                f = log(upsilon/real(prob%psi, xp))
             else
                 f = log(max(scaled, tiny(1.0_xp))) - shift - log(real(prob%psi, xp))
             end if
@@ -2381,9 +2408,9 @@ contains
     !! previous evaluation of the same precision is at hand the root of the inverse
     !! cubic Hermite interpolant through both (`hermite_step`); the first iterate from the
     !! bracket's slopes where `open_bracket` has them (steep laws: a quadratic in lambda_r;
-    !! y = log R on the second half-arch: inverse Hermite through both ends). First `rough`
+    !! y = log R: inverse Hermite through both ends). First `rough`
     !! evaluations (12-digit rules, transcendentals in double precision) until a step is
-    !! below 1e-5 of the unknown or the Newton point within 1e-10 of the Hermite point
+    !! below 1e-5 of the unknown or the Hermite point's estimated error below 1e-10
     !! (the next iterate then within about 1e-10), then hardware-precision ones (20-digit
     !! rules) until a step is below 1e-12, or its own error by the measured curvature
     !! below 1e-20 of the unknown, or f is within its rounding: by the quadratic
@@ -2418,11 +2445,21 @@ contains
         rough = .true.
         xk = falsi()
         if (present(slope_hi) .and. prob%use_u .and. prob%form == 0) then
-            if (slope_hi /= 0.0_real64) xk = hermite(real(slope_hi, xp))
+            if (slope_hi /= 0.0_real64) then
+                xk = hermite(real(slope_hi, xp))
+                ! (Upsilon's own shape where it fits, for laws decaying at least like
+                ! exp(-3 lambda) from the apse: `arcsin_model_root`; slower ones take as
+                ! many evaluations from either first iterate on the engine-timing grid)
+                if (pi/model%sigma_apse >= model_decay) then
+                    x_new = model_point(fa + real(prob%psi, xp), fb + real(prob%psi, xp), &
+                                        real(slope_hi, xp), real(prob%psi, xp))
+                    if (x_new > 0.0_xp) xk = x_new
+                end if
+            end if
         end if
         ! the unknown y = log R: the inverse Hermite root through both ends where their
         ! slopes are known (the bracket's residuals and slopes of `open_bracket`)
-        if (present(slope_hi) .and. .not. prob%use_u .and. prob%form == 2 .and. &
+        if (present(slope_hi) .and. .not. prob%use_u .and. prob%form /= 0 .and. &
             prob%slope_lo /= 0.0_real64) then
             if (slope_hi /= 0.0_real64) then
                 xk = inverse_hermite(a, fa, real(prob%slope_lo, xp), b, fb, &
@@ -2439,9 +2476,22 @@ contains
             ((fa < 0.0_xp) .neqv. (fb < 0.0_xp))) xk = root_in_square(.true.)
         ! rho next to 1 (second half-arch): Upsilon - Theta(rho,rho) ~ c u^2 but for the
         ! smallest u (falsi would start far below the root; f of opposite signs at a = 0
-        ! and b)
+        ! and b); where the slope at b is known, the root of `exp_model_root`'s model
         if (prob%use_u .and. prob%second .and. prob%one_minus_rho < 1.0e-6_qp .and. &
-            ((fa < 0.0_xp) .neqv. (fb < 0.0_xp))) xk = root_in_square(.false.)
+            ((fa < 0.0_xp) .neqv. (fb < 0.0_xp))) then
+            xk = root_in_square(.false.)
+            x_new = -1.0_xp
+            if (present(slope_hi)) then
+                if (slope_hi /= 0.0_real64 .and. prob%form == 0) then
+                    x_new = model_point(fa + real(prob%psi, xp), fb + real(prob%psi, xp), &
+                                        real(slope_hi, xp), real(prob%psi, xp), .true.)
+                else if (slope_hi /= 0.0_real64) then
+                    x_new = model_point(exp(fa), exp(fb), exp(fb)*real(slope_hi, xp), &
+                                        1.0_xp, .true.)
+                end if
+            end if
+            if (x_new > 0.0_xp) xk = x_new
+        end if
         do iteration = 1, 80
             call residual_xp(model, prob, xk, rough, fk, dk)
             steps = steps + 1
@@ -2482,10 +2532,9 @@ contains
             end if
             point = [xk, fk, dk]
             ! the rough root: the Newton step below 1e-5 (the next iterate within about
-            ! 1e-10), or the inverse Hermite step's distance from it (the Newton step's
-            ! error, which the Hermite step's is far below) below 1e-10
+            ! 1e-10), or the inverse Hermite step's error below 1e-10 (`hermite_error`)
             if (rough .and. (abs(x_new - xk) <= 1.0e-5_xp*max(abs(xk), floor) .or. &
-                             newton_error <= 1.0e-10_xp*max(abs(xk), floor))) then
+                             hermite_error() <= 1.0e-10_xp*max(abs(xk), floor))) then
                 ! on to the hardware-precision rules
                 rough = .false.
                 point = 0.0_xp
@@ -2506,6 +2555,20 @@ contains
         slope = real(dk, qp)
         curvature = 0.5_qp*curvature
     contains
+        !> The inverse Hermite step's error, estimated: the Newton step's (`newton_error`,
+        !! huge where there was no Hermite step) times the ratio of the two steps' errors,
+        !! about (x''''/12 x'') f_prev^2 for x(f) (Hermite: x''''/24 f_prev^2 f^2, Newton:
+        !! x''/2 f^2), taken as 10 (curvature (x_prev - xk))^2 and at most 1 (measured on
+        !! 270 early phases of the engine-timing grid, n = 1 + 1e-6 .. 32, logarithmic: the
+        !! Hermite point within 1e-10 in 39 of the 40 where this is below 1e-10 and the
+        !! Newton step's error above; an error beyond costs one more hardware-precision
+        !! evaluation, the final steps' certification is unchanged)
+        pure real(xp) function hermite_error()
+            hermite_error = newton_error
+            if (curvature > 0.0_qp .and. newton_error < huge(1.0_xp)) hermite_error = &
+                newton_error*min(1.0_xp, 10.0_xp*(real(curvature, xp)*(x_prev - xk))**2)
+        end function hermite_error
+
         !> The root of the cubic x(f) through the previous evaluation of the same
         !! precision and this one (values and slopes: inverse Hermite interpolation)
         !! where f is monotone between them and the root is in the bracket; then the
@@ -2527,9 +2590,10 @@ contains
         end subroutine hermite_step
 
         !> The first iterate for f about linear in lambda_r = log(rho/(rho - u^2)) next
-        !! to u = a = 0: the root in lambda_r of the quadratic through f(0), f(b) and the
-        !! slope f'(b) in lambda_r where slope_hi is given and `with_slope`, else regula
-        !! falsi in u^2.
+        !! to u = a = 0: the root of the model of `arcsin_model_root` in exp(f) (Upsilon
+        !! or limit - Upsilon over its value at the root), else the root in lambda_r of the
+        !! quadratic through f(0), f(b) and the slope f'(b) in lambda_r, where slope_hi is
+        !! given and `with_slope`; else regula falsi in u^2.
         pure real(xp) function root_in_square(with_slope)
             logical, intent(in) :: with_slope
             real(xp) :: rho, l_b, l
@@ -2541,7 +2605,32 @@ contains
             l = quadratic_root(0.0_xp, fa, l_b, fb, &
                                real(slope_hi, xp)*(rho - b*b)/(2.0_xp*b))
             if (l > 0.0_xp .and. l < l_b) root_in_square = sqrt(-rho*expm1_xp(-l))
+            l = model_point(exp(fa), exp(fb), exp(fb)*real(slope_hi, xp), 1.0_xp)
+            if (l > 0.0_xp) root_in_square = l
         end function root_in_square
+
+        !> The u in (0, b) where the model of `arcsin_model_root` (`exponential`:
+        !! `exp_model_root`) through Q(u = 0) = q0, Q(b) = qb and dQ/du(b) = dqb (in
+        !! lambda_r = log(rho/(rho - u^2))) is `target`; -1 if there is none.
+        pure real(xp) function model_point(q0, qb, dqb, target, exponential) result(u)
+            real(xp), intent(in) :: q0, qb, dqb, target
+            logical, intent(in), optional :: exponential
+            real(xp) :: rho, l_b, l
+            real(real64) :: data(5)
+            logical :: use_exp
+            u = -1.0_xp
+            rho = real(prob%rho, xp)
+            l_b = -log1p_xp(-b*b/rho)
+            data = real([l_b, q0, qb, dqb*(rho - b*b)/(2.0_xp*b), target], real64)
+            use_exp = .false.
+            if (present(exponential)) use_exp = exponential
+            if (use_exp) then
+                l = real(exp_model_root(data(1), data(2), data(3), data(4), data(5)), xp)
+            else
+                l = real(arcsin_model_root(data(1), data(2), data(3), data(4), data(5)), xp)
+            end if
+            if (l > 0.0_xp .and. l < l_b) u = sqrt(-rho*expm1_xp(-l))
+        end function model_point
 
         pure real(xp) function falsi()
             falsi = b - fb*(b - a)/(fb - fa)
@@ -2556,6 +2645,112 @@ contains
             if (.not. (hermite > min(a, b) .and. hermite < max(a, b))) hermite = falsi()
         end function hermite
     end subroutine hardware_phase
+
+    !> The first iterate of the early phase from Theta's shape: for a steep law
+    !! (sqrt(q/(1 - q)) ~ exp(-k lambda)/sqrt(1 - exp(-2 k lambda))) Theta(r,R) from the
+    !! endpoint at lambda_r to the apse is about arcsin(exp(-k lambda_r))/k, the square
+    !! root at the apse and the exponential decay beyond; so are Upsilon and limit -
+    !! Upsilon on the second half-arch. The model Q(l) = c1 arcsin(exp(-kappa l)) + c0
+    !! through Q(0) = q0, Q(l_b) = qb and Q'(l_b) = dqb (t = arccos(exp(-kappa l_b)) the
+    !! root of -log(cos t)/(t tan t) = -dqb l_b/(q0 - qb), which decreases from 1/2 to 0
+    !! on (0, pi/2): regula falsi with the Illinois correction); its l in (0, l_b) where
+    !! Q(l) = target, or -1 where there is none. (engine-timing grid, n = 32: the first
+    !! iterate within 1e-6 rather than 1e-1 for rho <= 1/2; engine-fuzz: 0.76 fewer
+    !! evaluations per endpoint for n = 32, 0.18 for n = 6.)
+    pure real(real64) function arcsin_model_root(l_b, q0, qb, dqb, target) result(l)
+        real(real64), intent(in) :: l_b, q0, qb, dqb, target
+        real(real64), parameter :: half_pi = 2.0_real64*atan(1.0_real64)
+        real(real64) :: r1, t, c1, c0, kappa, v
+        logical :: found
+        l = -1.0_real64
+        if (q0 == qb .or. .not. l_b > 0.0_real64) return
+        r1 = -dqb*l_b/(q0 - qb)
+        if (.not. (r1 > 1.0e-6_real64 .and. r1 < 0.5_real64 - 1.0e-6_real64)) return
+        call shape_root(shape_arcsin, r1, 1.0e-3_real64, half_pi - 1.0e-8_real64, &
+                        1.0e-7_real64, 0.0_real64, 60, t, found)
+        if (.not. found) return
+        kappa = -log(cos(t))/l_b
+        c1 = (q0 - qb)/t
+        c0 = q0 - c1*half_pi
+        v = (target - c0)/c1
+        if (.not. (v > 0.0_real64 .and. v < half_pi .and. kappa > 0.0_real64)) return
+        l = -log(sin(v))/kappa
+    end function arcsin_model_root
+
+    !> `arcsin_model_root` for a complete arch next to rho = 1 (the second half-arch from
+    !! r ~ 1: Upsilon ~ c u^2 ~ c lambda_r, no square root at lambda_r = 0, and limit -
+    !! Upsilon decaying like exp(-k lambda_r) for a steep law): the model Q(l) = c1
+    !! exp(-kappa l) + c0 through Q(0) = q0, Q(l_b) = qb, Q'(l_b) = dqb (x = kappa l_b
+    !! the root of x/(exp(x) - 1) = -dqb l_b/(q0 - qb), which decreases from 1 to 0:
+    !! regula falsi with the Illinois correction on x in [1e-3, 60]); its l in (0, l_b)
+    !! where Q(l) = target, -1 where there is none. (engine-timing grid: rough
+    !! evaluations per solve n = 10 2.00 -> 1.73, n = 32 1.60 -> 1.40; engine-fuzz 0.02
+    !! (n = 1 + 1e-6) to 0.23 (n = 32) fewer evaluations per endpoint.)
+    pure real(real64) function exp_model_root(l_b, q0, qb, dqb, target) result(l)
+        real(real64), intent(in) :: l_b, q0, qb, dqb, target
+        real(real64) :: r2, x, c1, c0, kappa, w
+        logical :: found
+        l = -1.0_real64
+        if (q0 == qb .or. .not. l_b > 0.0_real64) return
+        r2 = -dqb*l_b/(q0 - qb)
+        if (.not. (r2 > 1.0e-12_real64 .and. r2 < 0.999_real64)) return
+        call shape_root(shape_exp, r2, 1.0e-3_real64, 60.0_real64, 0.0_real64, &
+                        1.0e-9_real64, 80, x, found)
+        if (.not. found) return
+        kappa = x/l_b
+        c1 = (q0 - qb)/(1.0_real64 - exp(-x))
+        c0 = q0 - c1
+        w = (target - c0)/c1
+        if (.not. (w > 0.0_real64 .and. w < 1.0_real64)) return
+        l = -log(w)/kappa
+    end function exp_model_root
+
+    !> The root z in (lo, hi) of shape(z) = r for the early phase's model shapes, both
+    !! decreasing (`shape_arcsin`: -log(cos z)/(z tan z) of `arcsin_model_root`,
+    !! `shape_exp`: z/(exp(z) - 1) of `exp_model_root`), by regula falsi with the Illinois
+    !! correction until the bracket is below abs_tol + rel_tol z or the residual 0, at
+    !! most max_steps steps; not `found` where shape - r has no sign change on [lo, hi].
+    pure subroutine shape_root(shape, r, lo, hi, abs_tol, rel_tol, max_steps, z, found)
+        integer, intent(in) :: shape, max_steps
+        real(real64), intent(in) :: r, lo, hi, abs_tol, rel_tol
+        real(real64), intent(out) :: z
+        logical, intent(out) :: found
+        real(real64) :: z_lo, z_hi, h, h_lo, h_hi
+        integer :: k, side
+        z_lo = lo
+        z_hi = hi
+        h_lo = shape_value(z_lo) - r
+        h_hi = shape_value(z_hi) - r
+        z = lo
+        found = h_lo > 0.0_real64 .and. h_hi < 0.0_real64
+        if (.not. found) return
+        side = 0
+        do k = 1, max_steps
+            z = (z_lo*h_hi - z_hi*h_lo)/(h_hi - h_lo)
+            h = shape_value(z) - r
+            if (h > 0.0_real64) then
+                z_lo = z
+                h_lo = h
+                if (side == 1) h_hi = 0.5_real64*h_hi
+                side = 1
+            else
+                z_hi = z
+                h_hi = h
+                if (side == -1) h_lo = 0.5_real64*h_lo
+                side = -1
+            end if
+            if (z_hi - z_lo < abs_tol + rel_tol*z .or. h == 0.0_real64) exit
+        end do
+    contains
+        pure real(real64) function shape_value(x)
+            real(real64), intent(in) :: x
+            if (shape == shape_arcsin) then
+                shape_value = -log(cos(x))/(x*tan(x))
+            else
+                shape_value = x/(exp(x) - 1.0_real64)
+            end if
+        end function shape_value
+    end subroutine shape_root
 
     !> The root of the inverse cubic Hermite interpolant x(f) through (p, f_p, d_p) and
     !! (r, f_r, d_r) (values and slopes) where f is monotone between them and the root
@@ -3387,7 +3582,6 @@ contains
         !! else 0)
         real(real64), intent(out) :: slope_hi
         real(real64) :: f_half, theta_half, scaled, shift, upsilon_slope, lambda_slope
-        real(xp) :: theta_xp_half, slope_xp, shift_xp
         real(qp) :: top, next
         real(real64) :: lo_slope, tangent
         integer :: probe
@@ -3398,17 +3592,13 @@ contains
         slope_hi = 0.0_real64
         prob%slope_lo = 0.0_real64
         if (self%law%has_terms_xp()) then
-            ! as a rough early evaluation (with the tables)
-            call theta_xp(self, setup_at64(self, prob, sqrt(prob%rho - half)), .true., &
-                          theta_xp_half, slope_xp, shift_xp)
-            if (shift_xp /= 0.0_xp) then
-                theta_xp_half = theta_xp_half*exp(-shift_xp)
-                slope_xp = slope_xp*exp(-shift_xp)
-            end if
-            theta_half = real(theta_xp_half, real64)
-            ! d Upsilon/du = d Upsilon/d Lambda 2u/R at u = sqrt(rho - half), R = half
-            lambda_slope = real(slope_xp, real64)
-            upsilon_slope = lambda_slope*real(2.0_qp*fast_sqrt(prob%rho - half)/half, real64)
+            ! as a rough early evaluation (with the tables), on bracket_digits rules: the
+            ! branch needs only the sign of Upsilon - psi, the first iterate no more
+            ! digits (again on the rough rules where Upsilon is within 1e-6 of psi)
+            call rough_half(bracket_digits, theta_half, lambda_slope, upsilon_slope)
+            if (abs(theta_half - real(prob%psi, real64)) <= &
+                1.0e-6_real64*real(prob%psi, real64)) &
+                call rough_half(rough_digits, theta_half, lambda_slope, upsilon_slope)
         else
             call theta64(self, setup_at64(self, prob, sqrt(prob%rho - half)), scaled, shift)
             theta_half = scaled*exp(-shift)
@@ -3431,21 +3621,31 @@ contains
             lo = hi
             top = hi
             next = hi - 8.0_qp
+            if (slope_hi > 0.0_real64 .and. f_hi > 0.0_real64) then
+                ! the first probe just past the root of f's tangent at R = rho/2 (f nearly
+                ! linear in y: log Upsilon ~ (n+1)/2 y for steep laws), 8 below at most:
+                ! a bracket about the root for the first iterate, or, where f > 0 there
+                ! still, a closer upper end (below)
+                tangent = real(hi, real64) - f_hi/slope_hi
+                if (ieee_is_finite(tangent)) next = max(next, real(tangent - 0.3_real64* &
+                    (real(hi, real64) - tangent) - 1.0e-3_real64, qp))
+            end if
             do probe = 1, 40
                 lo = max(lowest_log_r, next)
                 call bracket_residual(lo, f_lo, lo_slope)
                 steps = steps + 1
                 if (f_lo < 0.0_real64 .or. lo == lowest_log_r) exit
                 next = top - 4.0_qp*2.0_qp**(probe + 1)
-                if (prob%form == 2 .and. lo_slope > 0.0_real64) then
+                if (lo_slope > 0.0_real64) then
                     ! second half-arch: log((limit - Upsilon)/(limit - psi)) is nearly
                     ! linear in y next to the sector's edge (power laws: limit - Upsilon
                     ! ~ C R^(n-1), R-bar down to 1e-1000 and below): on past its tangent's
-                    ! root at this probe where that is further; the probe the bracket's
-                    ! upper end where f > 0 is sure (well above the rough rounding)
+                    ! root at this probe where that is further; either half-arch: the
+                    ! probe the bracket's upper end where f > 0 is sure (well above the
+                    ! rough rounding)
                     tangent = real(lo, real64) - f_lo/lo_slope
-                    if (ieee_is_finite(tangent)) next = min(next, real(tangent - 2.0_real64 &
-                        - 0.25_real64*(real(lo, real64) - tangent), qp))
+                    if (ieee_is_finite(tangent) .and. prob%form == 2) next = min(next, &
+                        real(tangent - 2.0_real64 - 0.25_real64*(real(lo, real64) - tangent), qp))
                     if (real(f_lo, xp) > 4.0_xp*residual_noise(prob, real(f_lo, xp), &
                                                                .true.)) then
                         hi = lo
@@ -3482,6 +3682,24 @@ contains
             end select
         end if
     contains
+        !> Theta at R = rho/2 and its slopes in Lambda and in u on rules for `digits`
+        !! digits (`theta_xp`, rough).
+        pure subroutine rough_half(digits, theta, d_lambda, d_u)
+            real(qp), intent(in) :: digits
+            real(real64), intent(out) :: theta, d_lambda, d_u
+            real(xp) :: theta_xp_half, slope_xp, shift_xp
+            call theta_xp(self, setup_at64(self, prob, fast_sqrt(prob%rho - half)), &
+                          .true., theta_xp_half, slope_xp, shift_xp, digits)
+            if (shift_xp /= 0.0_xp) then
+                theta_xp_half = theta_xp_half*exp(-shift_xp)
+                slope_xp = slope_xp*exp(-shift_xp)
+            end if
+            theta = real(theta_xp_half, real64)
+            ! d Upsilon/du = d Upsilon/d Lambda 2u/R at u = sqrt(rho - half), R = half
+            d_lambda = real(slope_xp, real64)
+            d_u = d_lambda*real(2.0_qp*fast_sqrt(prob%rho - half)/half, real64)
+        end subroutine rough_half
+
         !> The residual f at y = log R and (laws with hardware terms, else 0) its slope:
         !! a rough early evaluation (with the tables) for laws with hardware terms, else
         !! `residual64`.
