@@ -80,9 +80,9 @@ module brachistochrone_central_force
                                       status_not_finite, &
                                       status_no_convergence, argument_status, &
                                       status_parameter_out_of_range
-    use brachistochrone_quad_math, only: log1p
     use brachistochrone_fast_math, only: hardware_real, fast_sqrt
-    use brachistochrone_fast_exp, only: fast_exp
+    use brachistochrone_fast_exp, only: fast_exp, fast_expm1
+    use brachistochrone_fast_log, only: fast_log, fast_log1p
     use brachistochrone_quadrature, only: gauss_legendre_rule, gauss_legendre
     use brachistochrone_speed_laws, only: speed_law
     use brachistochrone_chebyshev, only: chebyshev_table, chebyshev_points, chebyshev_fit, &
@@ -416,7 +416,7 @@ contains
             return
         end if
         if (.not. (big_lambda >= table_low .and. big_lambda <= table_high)) return
-        z = log(big_lambda)
+        z = fast_log(big_lambda)
         piece = min(table_pieces, max(1, int((z - log(table_low))/(log(table_high) - &
                     log(table_low))*real(table_pieces, qp)) + 1))
         if (.not. model%whole_ok(piece)) return
@@ -596,7 +596,7 @@ contains
         real(qp) :: z
         integer :: m
         values = 0.0_qp
-        z = log(big_lambda)
+        z = fast_log(big_lambda)
         found = far_piece(model, z) > 0
         if (.not. found) return
         do m = 1, wanted
@@ -645,9 +645,9 @@ contains
         a%big_r = big_r
         a%one_minus_big_r = one_minus_big_r
         if (big_r > 0.5_qp) then
-            a%big_lambda = -log1p(-one_minus_big_r)
+            a%big_lambda = -fast_log1p(-one_minus_big_r)
         else
-            a%big_lambda = -log(big_r)
+            a%big_lambda = -fast_log(big_r)
         end if
         call finish_setup(model, a, d, delta_r, second, whole)
     end function setup_arch
@@ -675,7 +675,7 @@ contains
         if (present(lambda_r)) then
             a%lambda_r = lambda_r
         else if (a%big_r > 0.0_qp .and. d < a%big_r) then
-            a%lambda_r = log1p(d/a%big_r)
+            a%lambda_r = fast_log1p(d/a%big_r)
         else
             a%lambda_r = a%big_lambda - delta_r
         end if
@@ -946,7 +946,9 @@ contains
         real(qp) :: s
         real(xp) :: s0
         if (precision(1.0_xp) < 18 .or. .not. (z > 1.0e-4000_qp .and. z < 1.0e4000_qp)) then
-            s = sqrt(z)
+            ! (z = 0, the split at an end: no library call)
+            s = z
+            if (z /= 0.0_qp) s = sqrt(z)
             return
         end if
         s0 = sqrt(real(z, xp))
@@ -1950,9 +1952,9 @@ contains
         real(qp), intent(in) :: r, one_minus_r
         real(qp) :: delta
         if (r > 0.5_qp) then
-            delta = -log1p(-one_minus_r)
+            delta = -fast_log1p(-one_minus_r)
         else
-            delta = -log(r)
+            delta = -fast_log(r)
         end if
     end function minus_log
 
@@ -2004,7 +2006,7 @@ contains
             d = x*x
             a%big_r = prob%rho - d
             a%one_minus_big_r = prob%one_minus_rho + d
-            lambda_r = log1p(d/a%big_r)
+            lambda_r = fast_log1p(d/a%big_r)
             a%big_lambda = prob%delta_rho + lambda_r
             call finish_setup(model, a, d, prob%delta_rho, prob%second, .false., lambda_r)
         else if (prob%use_r) then
@@ -3186,14 +3188,15 @@ contains
     !> x0 exp(dy), a step dy in log x: x0 + x0 expm1(dy) (exact to a rounding of x0 for
     !! small steps), but x0 exp(dy) for dy < -1/2, where 1 + expm1(dy) keeps only the
     !! digits of exp(dy) above eps (below dy = -78 none: x0 + x0 expm1(dy) = 0, and
-    !! next to the sector's edge the Newton step in log R is often -100 or more)
+    !! next to the sector's edge the Newton step in log R is often -100 or more; expm1's
+    !! few ulps (`fast_expm1`) are a few ulps of x0 expm1(dy), far below x0's rounding)
     elemental function log_step(x0, dy) result(x)
         real(qp), intent(in) :: x0, dy
         real(qp) :: x
         if (dy < -0.5_qp) then
             x = x0*exp(dy)
         else
-            x = x0 + x0*expm1_qp(dy)
+            x = x0 + x0*fast_expm1(dy)
         end if
     end function log_step
 
@@ -3609,7 +3612,7 @@ contains
             ! R-bar < rho/2: unknown y = log R on [y_lo, log(rho/2)]
             prob%use_u = .false.
             prob%form = merge(2, 1, prob%second)
-            hi = log(half)
+            hi = fast_log(half)
             ! (Upsilon at R = rho/2 as above: the sign the branch was chosen by)
             f_hi = form_of(real(theta_half, qp))
             ! (its slope in y: d Lambda/dy = -1)
@@ -3669,7 +3672,7 @@ contains
             prob%form = 0
             if (pi/self%sigma_apse > steep_decay) prob%form = merge(2, 1, prob%second)
             lo = 0.0_qp
-            hi = sqrt(prob%rho - half)
+            hi = fast_sqrt(prob%rho - half)
             f_lo = form_of(apse_angle_rho)
             f_hi = form_of(real(theta_half, qp))
             select case (prob%form)
@@ -3688,8 +3691,8 @@ contains
             real(qp), intent(in) :: digits
             real(real64), intent(out) :: theta, d_lambda, d_u
             real(xp) :: theta_xp_half, slope_xp, shift_xp
-            call theta_xp(self, setup_at64(self, prob, sqrt(prob%rho - half)), .true., &
-                          theta_xp_half, slope_xp, shift_xp, digits)
+            call theta_xp(self, setup_at64(self, prob, fast_sqrt(prob%rho - half)), &
+                          .true., theta_xp_half, slope_xp, shift_xp, digits)
             if (shift_xp /= 0.0_xp) then
                 theta_xp_half = theta_xp_half*exp(-shift_xp)
                 slope_xp = slope_xp*exp(-shift_xp)
@@ -3697,7 +3700,7 @@ contains
             theta = real(theta_xp_half, real64)
             ! d Upsilon/du = d Upsilon/d Lambda 2u/R at u = sqrt(rho - half), R = half
             d_lambda = real(slope_xp, real64)
-            d_u = d_lambda*real(2.0_qp*sqrt(prob%rho - half)/half, real64)
+            d_u = d_lambda*real(2.0_qp*fast_sqrt(prob%rho - half)/half, real64)
         end subroutine rough_half
 
         !> The residual f at y = log R and (laws with hardware terms, else 0) its slope:

@@ -678,7 +678,7 @@ contains
         if (a*big_lambda > 0.5_qp) c(2) = 1.0_qp - c(4)
         c(6) = 1.0_qp/c(2)
         ! q/v = sqrt(q) exp(-lambda) R^(a/2) sqrt(a/(2 E(Lambda)))
-        c(7) = sqrt(0.5_qp*a*c(4)*c(6))
+        c(7) = fast_sqrt(0.5_qp*a*c(4)*c(6))
         ! the offset 1/(4 a) where arch_terms switches from expm1 to exp
         c(8) = 0.25_qp/a
     end function power_apse_constants
@@ -1038,8 +1038,8 @@ contains
         found = a > 0.0_qp
         t = 0.0_qp
         if (self%n == 3.0_qp) then
-            t = sqrt(-fast_expm1(-2.0_qp*delta_hi))
-            if (delta_lo > 0.0_qp) t = t - sqrt(-fast_expm1(-2.0_qp*delta_lo))
+            t = fast_sqrt(-fast_expm1(-2.0_qp*delta_hi))
+            if (delta_lo > 0.0_qp) t = t - fast_sqrt(-fast_expm1(-2.0_qp*delta_lo))
         else if (self%n == 2.0_qp) then
             t = inverse_square_fall(delta_hi)
             if (delta_lo > 0.0_qp) t = t - inverse_square_fall(delta_lo)
@@ -1352,7 +1352,7 @@ contains
         real(qp), intent(in) :: big_r, one_minus_big_r, big_lambda
         real(qp) :: c(8)
         c = [big_lambda, 0.0_qp, 0.0_qp, 0.0_qp, big_r, 1.0_qp/big_lambda, &
-             1.0_qp/sqrt(2.0_qp*big_lambda), 0.0_qp]
+             inverse_sqrt(2.0_qp*big_lambda), 0.0_qp]
     end function logarithmic_apse_constants
 
     !> The power law's terms in the limit a -> 0: E(y)/a -> y, P = 2 delta.
@@ -1447,9 +1447,9 @@ contains
         logical, intent(out) :: found
         found = .true.
         if (delta_lo > 1.0_qp) then
-            t = erfc(sqrt(delta_lo)) - erfc(sqrt(delta_hi))
+            t = erfc(fast_sqrt(delta_lo)) - erfc(fast_sqrt(delta_hi))
         else
-            t = erf(sqrt(delta_hi)) - erf(sqrt(delta_lo))
+            t = erf(fast_sqrt(delta_hi)) - erf(fast_sqrt(delta_lo))
         end if
         t = sqrt(0.5_qp*acos(-1.0_qp))*t
     end subroutine logarithmic_closed_fall
