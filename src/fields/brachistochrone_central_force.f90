@@ -137,6 +137,11 @@ module brachistochrone_central_force
     !! to about 2e-35), far_pieces equal pieces in z = log Lambda (`build_far_tables`).
     real(qp), parameter :: far_high = 80.0_qp
     integer, parameter :: far_pieces = 4, far_points = 33
+    !> The deep tables beyond those: Lambda in [far_high, deep_high] (R from 2e-35 down to
+    !! the bottom of binary128's range), deep_pieces equal pieces in z = log Lambda
+    !! (`build_deep_tables`).
+    real(qp), parameter :: deep_high = -lowest_log_r
+    integer, parameter :: deep_pieces = 8, deep_points = 33
 
     !> One Gauss-Legendre rule on [0, 1].
     type :: gauss_nodes
@@ -168,6 +173,11 @@ module brachistochrone_central_force
         type(chebyshev_table) :: far(5)
         logical :: far_ok(far_pieces) = .false.
         type(chebyshev_table_xp) :: far_xp(2)
+        !> the same beyond the far tables (Lambda in [far_high, deep_high],
+        !! `build_deep_tables`)
+        type(chebyshev_table) :: deep(5)
+        logical :: deep_ok(deep_pieces) = .false.
+        type(chebyshev_table_xp) :: deep_xp(2)
         !> the whole-half-arch integrals (weights 1) in z = log Lambda: Theta, S and T
         !! corrections/R, and their slopes at fixed lambda (as `arch_sums`)
         type(chebyshev_table) :: whole(5)
@@ -256,6 +266,7 @@ contains
         end if
         call build_whole_tables(model)
         call build_far_tables(model)
+        call build_deep_tables(model)
     end function new_central_force_model
 
     !> The constants of the panel layouts from the sigmas (the same expressions as where
@@ -537,7 +548,9 @@ contains
             z = lower + width*(real(piece - 1, qp) + merge(0.3_qp, 0.71_qp, side == 1))
             direct = whole_direct(model, exp(z))
             do m = 1, 5
-                if (far) then
+                if (far .and. z > log(far_high)) then
+                    call deep_value(model, m, z, table(m))
+                else if (far) then
                     call far_value(model, m, z, table(m))
                 else
                     call whole_value(model, m, z, table(m))
@@ -586,6 +599,10 @@ contains
         integer, intent(in) :: wanted
         real(qp) :: z
         integer :: m
+        if (big_lambda > far_high) then
+            call deep_lookup(model, big_lambda, values, found, wanted)
+            return
+        end if
         values = 0.0_qp
         z = log(big_lambda)
         found = far_piece(model, z) > 0
@@ -617,6 +634,10 @@ contains
         real(xp), intent(out) :: values(2)
         logical, intent(out) :: found
         integer :: m
+        if (big_lambda > real(far_high, xp)) then
+            call deep_lookup_xp(model, big_lambda, values, found)
+            return
+        end if
         values = 0.0_xp
         found = far_piece(model, real(log(big_lambda), qp)) > 0
         if (.not. found) return
@@ -625,6 +646,103 @@ contains
         end do
         values(2) = exp(values(2))   ! the slope's table holds its logarithm
     end subroutine far_lookup_xp
+
+    !> Tabulate the whole-half-arch integrals beyond the far tables (Lambda from far_high
+    !! to deep_high: R-bar from 2e-35 down to the bottom of binary128's range; the
+    !! logarithmic law and power laws near n = 1 next to their sectors' edges, tiny rho)
+    !! as `build_far_tables`, on deep_pieces pieces, each checked the same way. A piece
+    !! where a slope falls below the hardware kind's normal range (steep laws: the slopes
+    !! fall like R^(n-1)) is not used.
+    subroutine build_deep_tables(model)
+        type(central_force_model), intent(inout) :: model
+        real(qp) :: points(deep_points, deep_pieces), values(deep_points, deep_pieces, 5)
+        real(qp) :: width, lower, upper
+        real(qp), parameter :: slope_noise = real(epsilon(1.0_xp), qp), &
+                               least_slope = 2.0_qp**10*real(tiny(1.0_xp), qp)
+        logical :: normal(deep_pieces)
+        integer :: piece, m
+        lower = log(far_high)
+        upper = log(deep_high)
+        points = chebyshev_points(lower, upper, deep_pieces, deep_points)
+        values = direct_values(model, points)
+        ! the slopes as their logarithms (as `build_whole_tables`); 1 in the pieces not used
+        normal = [(all(values(:, piece, 4:5) >= least_slope), piece = 1, deep_pieces)]
+        do piece = 1, deep_pieces
+            if (.not. normal(piece)) values(:, piece, 4:5) = 1.0_qp
+        end do
+        values(:, :, 4:5) = log(values(:, :, 4:5))
+        do m = 1, 5
+            model%deep(m) = chebyshev_fit(lower, upper, values(:, :, m), &
+                                          merge(0.1_qp*slope_noise/max(1.0_qp, &
+                                          maxval(abs(values(:, :, m)))), 0.5_qp*eps_qp, m > 3))
+        end do
+        model%deep_xp = [hardware_copy(model%deep(1)), hardware_copy(model%deep(4))]
+        width = (upper - lower)/real(deep_pieces, qp)
+        do piece = 1, deep_pieces
+            model%deep_ok(piece) = normal(piece)
+            if (normal(piece)) model%deep_ok(piece) = piece_agrees(model, lower, width, &
+                                                                   piece, .true.)
+        end do
+    end subroutine build_deep_tables
+
+    !> Whether z = log Lambda is on a checked piece of the deep tables.
+    pure function deep_found(model, z) result(found)
+        type(central_force_model), intent(in) :: model
+        real(qp), intent(in) :: z
+        logical :: found
+        found = z >= log(far_high) .and. z <= log(deep_high)
+        if (found) found = model%deep_ok(min(deep_pieces, max(1, int((z - log(far_high))/ &
+                                   (log(deep_high) - log(far_high))*real(deep_pieces, qp)) + 1)))
+    end function deep_found
+
+    !> `whole_lookup` beyond the far tables (the deep tables).
+    pure subroutine deep_lookup(model, big_lambda, values, found, wanted)
+        type(central_force_model), intent(in) :: model
+        real(qp), intent(in) :: big_lambda
+        real(qp), intent(out) :: values(5)
+        logical, intent(out) :: found
+        integer, intent(in) :: wanted
+        real(qp) :: z
+        integer :: m
+        values = 0.0_qp
+        z = log(big_lambda)
+        found = deep_found(model, z)
+        if (.not. found) return
+        do m = 1, wanted
+            call deep_value(model, m, z, values(m))
+        end do
+    end subroutine deep_lookup
+
+    !> Deep table m at z; the slopes (m = 4, 5) from their logarithms (as `far_value`).
+    pure subroutine deep_value(model, m, z, value)
+        type(central_force_model), intent(in) :: model
+        integer, intent(in) :: m
+        real(qp), intent(in) :: z
+        real(qp), intent(out) :: value
+        real(xp) :: high, low
+        call model%deep(m)%evaluate(z, value)
+        if (m > 3) then
+            high = real(value, xp)
+            low = real(value - real(high, qp), xp)
+            value = real(exp(high)*(1.0_xp + low), qp)
+        end if
+    end subroutine deep_value
+
+    !> `whole_lookup_xp` beyond the far tables (the deep tables' hardware copies).
+    pure subroutine deep_lookup_xp(model, big_lambda, values, found)
+        type(central_force_model), intent(in) :: model
+        real(xp), intent(in) :: big_lambda
+        real(xp), intent(out) :: values(2)
+        logical, intent(out) :: found
+        integer :: m
+        values = 0.0_xp
+        found = deep_found(model, real(log(big_lambda), qp))
+        if (.not. found) return
+        do m = 1, 2
+            call model%deep_xp(m)%evaluate(log(big_lambda), values(m))
+        end do
+        values(2) = exp(values(2))   ! the slope's table holds its logarithm
+    end subroutine deep_lookup_xp
 
     !> The apse data for R (with 1 - R exact) and the endpoint r = R + d.
     pure function setup_arch(model, big_r, one_minus_big_r, d, delta_r, second, whole) &
