@@ -312,16 +312,31 @@ contains
     !> `whole_direct` at Lambda = exp(z) for every point z of a table: values(k, piece, :)
     !! at points(k, piece), shared among the OpenMP threads (each point is independent
     !! and `whole_direct` is pure, so the values do not depend on the number of threads).
-    function direct_values(model, points) result(values)
+    !! With `least_slope`: 0 beyond a point whose slopes are below it (at least every
+    !! point below the first such point evaluated, whatever the threads' order).
+    function direct_values(model, points, least_slope) result(values)
         type(central_force_model), intent(in) :: model
         real(qp), intent(in) :: points(:, :)
-        real(qp) :: values(size(points, 1), size(points, 2), 5)
+        real(qp), intent(in), optional :: least_slope
+        real(qp) :: values(size(points, 1), size(points, 2), 5), cut
         integer :: item, k, piece
-        !$omp parallel do schedule(dynamic, 1) default(shared) private(item, k, piece)
+        logical :: beyond
+        cut = huge(1.0_qp)
+        !$omp parallel do schedule(dynamic, 1) default(shared) private(item, k, piece, beyond)
         do item = 1, size(points)
             k = mod(item - 1, size(points, 1)) + 1
             piece = (item - 1)/size(points, 1) + 1
+            !$omp critical (direct_values_cut)
+            beyond = points(k, piece) > cut
+            !$omp end critical (direct_values_cut)
+            values(k, piece, :) = 0.0_qp
+            if (beyond) cycle
             values(k, piece, :) = whole_direct(model, exp(points(k, piece)))
+            if (.not. present(least_slope)) cycle
+            if (all(values(k, piece, 4:5) >= least_slope)) cycle
+            !$omp critical (direct_values_cut)
+            cut = min(cut, points(k, piece))
+            !$omp end critical (direct_values_cut)
         end do
         !$omp end parallel do
     end function direct_values
@@ -664,10 +679,14 @@ contains
         lower = log(far_high)
         upper = log(deep_high)
         points = chebyshev_points(lower, upper, deep_pieces, deep_points)
-        values = direct_values(model, points)
-        ! the slopes as their logarithms (as `build_whole_tables`); 1 in the pieces not used
-        normal = [(all(values(:, piece, 4:5) >= least_slope), piece = 1, deep_pieces)]
+        ! (not beyond the first point whose slopes leave the hardware range: only the
+        ! pieces before it are used)
+        values = direct_values(model, points, least_slope)
         do piece = 1, deep_pieces
+            normal(piece) = all(values(:, piece, 4:5) >= least_slope)
+            if (piece > 1) normal(piece) = normal(piece) .and. normal(piece - 1)
+            ! the slopes as their logarithms (as `build_whole_tables`); 1 in the pieces
+            ! not used
             if (.not. normal(piece)) values(:, piece, 4:5) = 1.0_qp
         end do
         values(:, :, 4:5) = log(values(:, :, 4:5))
