@@ -48,7 +48,10 @@
 !! W + int_0^lambda_r or 2W - int_lambda_r^Lambda, the first int_lambda_r^Lambda or
 !! W - int_0^lambda_r (if that loses at most a bit). Beyond them, Lambda up to 80 (R down
 !! to 2e-35), far tables built and checked the same way (`build_far_tables`, slopes as
-!! logarithms: they pass for every law). Elsewhere: all panels.
+!! logarithms: they pass for every law), and on to Lambda = 11355 (the bottom of
+!! binary128's range) deep tables (`build_deep_tables`: every piece for the logarithmic
+!! law and n = 1 + 1e-6 .. 1.5; steep laws' slopes, falling like R^(n-1), leave the
+!! hardware range at Lambda ~ 11355/(n-1): no piece beyond). Elsewhere: all panels.
 !!
 !! Two-point problem: the root R-bar of Upsilon(R) = psi, in the unknown u = sqrt(rho - R)
 !! for R in [rho/2, rho] (R-bar and rho - R-bar exact next to the apse) or y = log R
@@ -667,7 +670,11 @@ contains
     !! logarithmic law and power laws near n = 1 next to their sectors' edges, tiny rho)
     !! as `build_far_tables`, on deep_pieces pieces, each checked the same way. A piece
     !! where a slope falls below the hardware kind's normal range (steep laws: the slopes
-    !! fall like R^(n-1)) is not used.
+    !! fall like R^(n-1)) is not used, nor any beyond it. Pieces used: all eight for the
+    !! logarithmic law and n = 1 + 1e-6, 1.1, 1.5; seven for n = 2; n = 3: 1, 2, 4, 5,
+    !! 6; n = 6: 1, 3, 4, 5; n = 32: 1, 2 (the others fail their check on the slope of
+    !! Theta). About 280 full evaluations: 0.1-0.2 s (with 25 points a piece, n = 1.1's
+    !! first three fail: there Theta's approach to its limit is resolved).
     subroutine build_deep_tables(model)
         type(central_force_model), intent(inout) :: model
         real(qp) :: points(deep_points, deep_pieces), values(deep_points, deep_pieces, 5)
