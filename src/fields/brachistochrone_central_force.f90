@@ -1446,7 +1446,7 @@ contains
     !! e^lambda q'/(2 (1 - q)^(3/2)) (q' = d q/d Lambda, from the law's hardware terms),
     !! summed in hardware precision on the same nodes (want_length_time needed).
     pure subroutine arch_sums(model, a, digits, want_length_time, sums, slopes, given, &
-                              given_count, every_panel)
+                              given_count, every_panel, offset)
         type(central_force_model), intent(in) :: model
         type(arch_setup), intent(in) :: a
         real(qp), intent(in) :: digits
@@ -1458,13 +1458,18 @@ contains
         integer, intent(in), optional :: given_count
         !> no panel skipped and each on the full rules (the tables' build)
         logical, intent(in), optional :: every_panel
+        !> sizes the sums are added to (`table_sums`: the whole half-arch's): the panels
+        !! after the first are asked for their shares of the sums plus these
+        real(qp), intent(in), optional :: offset(3)
         type(panel) :: panels(max_panels)
         real(qp) :: part(3), last(3), jacobian, q, omq, qv, rx
         real(qp) :: root_omq, common, g(3), root_q, weighted, width, terms(max_nodes, 6), rest
         real(xp) :: part_xp(2), carry(2), carry_all(2), log_slope, g_xp, slopes_k(max_nodes)
         integer :: count, p, k, j
-        real(qp) :: shares(3)
+        real(qp) :: shares(3), base(3)
         logical :: all_panels
+        base = 0.0_qp
+        if (present(offset)) base = abs(offset)
         all_panels = .false.
         if (present(every_panel)) all_panels = every_panel
         if (present(given) .and. present(given_count)) then
@@ -1481,7 +1486,7 @@ contains
             associate (pan => panels(p))
             shares = 1.0_qp
             if (p > 1 .and. .not. all_panels) then
-                shares = panel_share(pan, last, sums, merge(3, 1, want_length_time))
+                shares = panel_share(pan, last, sums + base, merge(3, 1, want_length_time))
                 ! skipped, not ended: a sliver next to a split is followed by a full panel
                 if (maxval(shares) < negligible) cycle
             end if
@@ -1607,7 +1612,7 @@ contains
         real(qp), intent(in), optional :: fall_r  !! t0(r), the fall time to the endpoint
         type(arch_setup) :: below, above
         type(panel) :: panels_below(max_panels), panels_above(max_panels)
-        real(qp) :: whole(5), part(3), w_sign, p_sign, sizes(3)
+        real(qp) :: whole(5), part(3), w_sign, p_sign, sizes(3), offset(3)
         real(xp) :: part_slopes(2), whole_hw(2)
         integer :: n_below, n_above
         logical :: found, use_below
@@ -1642,6 +1647,8 @@ contains
             w_sign = merge(1.0_qp, 0.0_qp, use_below)
             p_sign = merge(-1.0_qp, 1.0_qp, use_below)
         end if
+        ! (what the part is added to: W, 2 W - part >= W, W - part >= W/2 where kept)
+        offset = merge(1.0_qp, 0.5_qp, a%weight_below == 2.0_qp)*whole(1:3)
         if (use_below) then
             call part_sums(below, panels_below, n_below, part, part_slopes)
         else
@@ -1659,6 +1666,7 @@ contains
                        a%delta_r >= 0.5_qp*a%big_lambda)) then
                 w_sign = 0.0_qp
                 p_sign = 1.0_qp
+                offset = 0.0_qp
                 call part_sums(above, panels_above, n_above, part, part_slopes)
             end if
         end if
@@ -1687,10 +1695,11 @@ contains
             real(qp), intent(out) :: part(3)
             real(xp), intent(out) :: part_slopes(2)
             if (present(slopes)) then
-                call arch_sums(model, b, fine_digits, .true., part, part_slopes, pans, n_pans)
+                call arch_sums(model, b, fine_digits, .true., part, part_slopes, pans, n_pans, &
+                               offset=offset)
             else
                 call arch_sums(model, b, fine_digits, .true., part, given=pans, &
-                               given_count=n_pans)
+                               given_count=n_pans, offset=offset)
                 part_slopes = 0.0_xp
             end if
         end subroutine part_sums
