@@ -48,7 +48,10 @@
 !! W + int_0^lambda_r or 2W - int_lambda_r^Lambda, the first int_lambda_r^Lambda or
 !! W - int_0^lambda_r (if that loses at most a bit). Beyond them, Lambda up to 80 (R down
 !! to 2e-35), far tables built and checked the same way (`build_far_tables`, slopes as
-!! logarithms: they pass for every law). Elsewhere: all panels.
+!! logarithms: they pass for every law), and on to Lambda = 11355 (the bottom of
+!! binary128's range) deep tables (`build_deep_tables`: every piece for the logarithmic
+!! law and n = 1 + 1e-6 .. 1.5; steep laws' slopes, falling like R^(n-1), leave the
+!! hardware range at Lambda ~ 11355/(n-1): no piece beyond). Elsewhere: all panels.
 !!
 !! Two-point problem: the root R-bar of Upsilon(R) = psi, in the unknown u = sqrt(rho - R)
 !! for R in [rho/2, rho] (R-bar and rho - R-bar exact next to the apse) or y = log R
@@ -146,6 +149,11 @@ module brachistochrone_central_force
     !! to about 2e-35), far_pieces equal pieces in z = log Lambda (`build_far_tables`).
     real(qp), parameter :: far_high = 80.0_qp
     integer, parameter :: far_pieces = 4, far_points = 33
+    !> The deep tables beyond those: Lambda in [far_high, deep_high] (R from 2e-35 down to
+    !! the bottom of binary128's range), deep_pieces equal pieces in z = log Lambda
+    !! (`build_deep_tables`).
+    real(qp), parameter :: deep_high = -lowest_log_r
+    integer, parameter :: deep_pieces = 8, deep_points = 33
 
     !> One Gauss-Legendre rule on [0, 1].
     type :: gauss_nodes
@@ -177,6 +185,11 @@ module brachistochrone_central_force
         type(chebyshev_table) :: far(5)
         logical :: far_ok(far_pieces) = .false.
         type(chebyshev_table_xp) :: far_xp(2)
+        !> the same beyond the far tables (Lambda in [far_high, deep_high],
+        !! `build_deep_tables`)
+        type(chebyshev_table) :: deep(5)
+        logical :: deep_ok(deep_pieces) = .false.
+        type(chebyshev_table_xp) :: deep_xp(2)
         !> the whole-half-arch integrals (weights 1) in z = log Lambda: Theta, S and T
         !! corrections/R, and their slopes at fixed lambda (as `arch_sums`)
         type(chebyshev_table) :: whole(5)
@@ -265,6 +278,7 @@ contains
         end if
         call build_whole_tables(model)
         call build_far_tables(model)
+        call build_deep_tables(model)
     end function new_central_force_model
 
     !> The constants of the panel layouts from the sigmas (the same expressions as where
@@ -310,16 +324,31 @@ contains
     !> `whole_direct` at Lambda = exp(z) for every point z of a table: values(k, piece, :)
     !! at points(k, piece), shared among the OpenMP threads (each point is independent
     !! and `whole_direct` is pure, so the values do not depend on the number of threads).
-    function direct_values(model, points) result(values)
+    !! With `least_slope`: 0 beyond a point whose slopes are below it (at least every
+    !! point below the first such point evaluated, whatever the threads' order).
+    function direct_values(model, points, least_slope) result(values)
         type(central_force_model), intent(in) :: model
         real(qp), intent(in) :: points(:, :)
-        real(qp) :: values(size(points, 1), size(points, 2), 5)
+        real(qp), intent(in), optional :: least_slope
+        real(qp) :: values(size(points, 1), size(points, 2), 5), cut
         integer :: item, k, piece
-        !$omp parallel do schedule(dynamic, 1) default(shared) private(item, k, piece)
+        logical :: beyond
+        cut = huge(1.0_qp)
+        !$omp parallel do schedule(dynamic, 1) default(shared) private(item, k, piece, beyond)
         do item = 1, size(points)
             k = mod(item - 1, size(points, 1)) + 1
             piece = (item - 1)/size(points, 1) + 1
+            !$omp critical (direct_values_cut)
+            beyond = points(k, piece) > cut
+            !$omp end critical (direct_values_cut)
+            values(k, piece, :) = 0.0_qp
+            if (beyond) cycle
             values(k, piece, :) = whole_direct(model, exp(points(k, piece)))
+            if (.not. present(least_slope)) cycle
+            if (all(values(k, piece, 4:5) >= least_slope)) cycle
+            !$omp critical (direct_values_cut)
+            cut = min(cut, points(k, piece))
+            !$omp end critical (direct_values_cut)
         end do
         !$omp end parallel do
     end function direct_values
@@ -546,7 +575,9 @@ contains
             z = lower + width*(real(piece - 1, qp) + merge(0.3_qp, 0.71_qp, side == 1))
             direct = whole_direct(model, exp(z))
             do m = 1, 5
-                if (far) then
+                if (far .and. z > log(far_high)) then
+                    call deep_value(model, m, z, table(m))
+                else if (far) then
                     call far_value(model, m, z, table(m))
                 else
                     call whole_value(model, m, z, table(m))
@@ -595,6 +626,10 @@ contains
         integer, intent(in) :: wanted
         real(qp) :: z
         integer :: m
+        if (big_lambda > far_high) then
+            call deep_lookup(model, big_lambda, values, found, wanted)
+            return
+        end if
         values = 0.0_qp
         z = fast_log(big_lambda)
         found = far_piece(model, z) > 0
@@ -626,6 +661,10 @@ contains
         real(xp), intent(out) :: values(2)
         logical, intent(out) :: found
         integer :: m
+        if (big_lambda > real(far_high, xp)) then
+            call deep_lookup_xp(model, big_lambda, values, found)
+            return
+        end if
         values = 0.0_xp
         found = far_piece(model, real(log(big_lambda), qp)) > 0
         if (.not. found) return
@@ -634,6 +673,111 @@ contains
         end do
         values(2) = exp(values(2))   ! the slope's table holds its logarithm
     end subroutine far_lookup_xp
+
+    !> Tabulate the whole-half-arch integrals beyond the far tables (Lambda from far_high
+    !! to deep_high: R-bar from 2e-35 down to the bottom of binary128's range; the
+    !! logarithmic law and power laws near n = 1 next to their sectors' edges, tiny rho)
+    !! as `build_far_tables`, on deep_pieces pieces, each checked the same way. A piece
+    !! where a slope falls below the hardware kind's normal range (steep laws: the slopes
+    !! fall like R^(n-1)) is not used, nor any beyond it. Pieces used: all eight for the
+    !! logarithmic law and n = 1 + 1e-6, 1.1, 1.5; seven for n = 2; n = 3: 1, 2, 4, 5,
+    !! 6; n = 6: 1, 3, 4, 5; n = 32: 1, 2 (the others fail their check on the slope of
+    !! Theta). About 280 full evaluations: 0.1-0.2 s (with 25 points a piece, n = 1.1's
+    !! first three fail: there Theta's approach to its limit is resolved).
+    subroutine build_deep_tables(model)
+        type(central_force_model), intent(inout) :: model
+        real(qp) :: points(deep_points, deep_pieces), values(deep_points, deep_pieces, 5)
+        real(qp) :: width, lower, upper
+        real(qp), parameter :: slope_noise = real(epsilon(1.0_xp), qp), &
+                               least_slope = 2.0_qp**10*real(tiny(1.0_xp), qp)
+        logical :: normal(deep_pieces)
+        integer :: piece, m
+        lower = log(far_high)
+        upper = log(deep_high)
+        points = chebyshev_points(lower, upper, deep_pieces, deep_points)
+        ! (not beyond the first point whose slopes leave the hardware range: only the
+        ! pieces before it are used)
+        values = direct_values(model, points, least_slope)
+        do piece = 1, deep_pieces
+            normal(piece) = all(values(:, piece, 4:5) >= least_slope)
+            if (piece > 1) normal(piece) = normal(piece) .and. normal(piece - 1)
+            ! the slopes as their logarithms (as `build_whole_tables`); 1 in the pieces
+            ! not used
+            if (.not. normal(piece)) values(:, piece, 4:5) = 1.0_qp
+        end do
+        values(:, :, 4:5) = log(values(:, :, 4:5))
+        do m = 1, 5
+            model%deep(m) = chebyshev_fit(lower, upper, values(:, :, m), &
+                                          merge(0.1_qp*slope_noise/max(1.0_qp, &
+                                          maxval(abs(values(:, :, m)))), 0.5_qp*eps_qp, m > 3))
+        end do
+        model%deep_xp = [hardware_copy(model%deep(1)), hardware_copy(model%deep(4))]
+        width = (upper - lower)/real(deep_pieces, qp)
+        do piece = 1, deep_pieces
+            model%deep_ok(piece) = normal(piece)
+            if (normal(piece)) model%deep_ok(piece) = piece_agrees(model, lower, width, &
+                                                                   piece, .true.)
+        end do
+    end subroutine build_deep_tables
+
+    !> Whether z = log Lambda is on a checked piece of the deep tables.
+    pure function deep_found(model, z) result(found)
+        type(central_force_model), intent(in) :: model
+        real(qp), intent(in) :: z
+        logical :: found
+        found = z >= log(far_high) .and. z <= log(deep_high)
+        if (found) found = model%deep_ok(min(deep_pieces, max(1, int((z - log(far_high))/ &
+                                   (log(deep_high) - log(far_high))*real(deep_pieces, qp)) + 1)))
+    end function deep_found
+
+    !> `whole_lookup` beyond the far tables (the deep tables).
+    pure subroutine deep_lookup(model, big_lambda, values, found, wanted)
+        type(central_force_model), intent(in) :: model
+        real(qp), intent(in) :: big_lambda
+        real(qp), intent(out) :: values(5)
+        logical, intent(out) :: found
+        integer, intent(in) :: wanted
+        real(qp) :: z
+        integer :: m
+        values = 0.0_qp
+        z = log(big_lambda)
+        found = deep_found(model, z)
+        if (.not. found) return
+        do m = 1, wanted
+            call deep_value(model, m, z, values(m))
+        end do
+    end subroutine deep_lookup
+
+    !> Deep table m at z; the slopes (m = 4, 5) from their logarithms (as `far_value`).
+    pure subroutine deep_value(model, m, z, value)
+        type(central_force_model), intent(in) :: model
+        integer, intent(in) :: m
+        real(qp), intent(in) :: z
+        real(qp), intent(out) :: value
+        real(xp) :: high, low
+        call model%deep(m)%evaluate(z, value)
+        if (m > 3) then
+            high = real(value, xp)
+            low = real(value - real(high, qp), xp)
+            value = real(exp(high)*(1.0_xp + low), qp)
+        end if
+    end subroutine deep_value
+
+    !> `whole_lookup_xp` beyond the far tables (the deep tables' hardware copies).
+    pure subroutine deep_lookup_xp(model, big_lambda, values, found)
+        type(central_force_model), intent(in) :: model
+        real(xp), intent(in) :: big_lambda
+        real(xp), intent(out) :: values(2)
+        logical, intent(out) :: found
+        integer :: m
+        values = 0.0_xp
+        found = deep_found(model, real(log(big_lambda), qp))
+        if (.not. found) return
+        do m = 1, 2
+            call model%deep_xp(m)%evaluate(log(big_lambda), values(m))
+        end do
+        values(2) = exp(values(2))   ! the slope's table holds its logarithm
+    end subroutine deep_lookup_xp
 
     !> The apse data for R (with 1 - R exact) and the endpoint r = R + d.
     pure function setup_arch(model, big_r, one_minus_big_r, d, delta_r, second, whole) &
@@ -1313,7 +1457,7 @@ contains
     !! e^lambda q'/(2 (1 - q)^(3/2)) (q' = d q/d Lambda, from the law's hardware terms),
     !! summed in hardware precision on the same nodes (want_length_time needed).
     pure subroutine arch_sums(model, a, digits, want_length_time, sums, slopes, given, &
-                              given_count, every_panel)
+                              given_count, every_panel, offset)
         type(central_force_model), intent(in) :: model
         type(arch_setup), intent(in) :: a
         real(qp), intent(in) :: digits
@@ -1325,13 +1469,18 @@ contains
         integer, intent(in), optional :: given_count
         !> no panel skipped and each on the full rules (the tables' build)
         logical, intent(in), optional :: every_panel
+        !> sizes the sums are added to (`table_sums`: the whole half-arch's): the panels
+        !! after the first are asked for their shares of the sums plus these
+        real(qp), intent(in), optional :: offset(3)
         type(panel) :: panels(max_panels)
         real(qp) :: part(3), last(3), jacobian, q, omq, qv, rx
         real(qp) :: root_omq, common, g(3), root_q, weighted, width, terms(max_nodes, 6), rest
         real(xp) :: part_xp(2), carry(2), carry_all(2), log_slope, g_xp, slopes_k(max_nodes)
         integer :: count, p, k, j
-        real(qp) :: shares(3)
+        real(qp) :: shares(3), base(3)
         logical :: all_panels
+        base = 0.0_qp
+        if (present(offset)) base = abs(offset)
         all_panels = .false.
         if (present(every_panel)) all_panels = every_panel
         if (present(given) .and. present(given_count)) then
@@ -1348,7 +1497,7 @@ contains
             associate (pan => panels(p))
             shares = 1.0_qp
             if (p > 1 .and. .not. all_panels) then
-                shares = panel_share(pan, last, sums, merge(3, 1, want_length_time))
+                shares = panel_share(pan, last, sums + base, merge(3, 1, want_length_time))
                 ! skipped, not ended: a sliver next to a split is followed by a full panel
                 if (maxval(shares) < negligible) cycle
             end if
@@ -1474,7 +1623,7 @@ contains
         real(qp), intent(in), optional :: fall_r  !! t0(r), the fall time to the endpoint
         type(arch_setup) :: below, above
         type(panel) :: panels_below(max_panels), panels_above(max_panels)
-        real(qp) :: whole(5), part(3), w_sign, p_sign, sizes(3)
+        real(qp) :: whole(5), part(3), w_sign, p_sign, sizes(3), offset(3)
         real(xp) :: part_slopes(2), whole_hw(2)
         integer :: n_below, n_above
         logical :: found, use_below
@@ -1509,6 +1658,8 @@ contains
             w_sign = merge(1.0_qp, 0.0_qp, use_below)
             p_sign = merge(-1.0_qp, 1.0_qp, use_below)
         end if
+        ! (what the part is added to: W, 2 W - part >= W, W - part >= W/2 where kept)
+        offset = merge(1.0_qp, 0.5_qp, a%weight_below == 2.0_qp)*whole(1:3)
         if (use_below) then
             call part_sums(below, panels_below, n_below, part, part_slopes)
         else
@@ -1526,6 +1677,7 @@ contains
                        a%delta_r >= 0.5_qp*a%big_lambda)) then
                 w_sign = 0.0_qp
                 p_sign = 1.0_qp
+                offset = 0.0_qp
                 call part_sums(above, panels_above, n_above, part, part_slopes)
             end if
         end if
@@ -1554,10 +1706,11 @@ contains
             real(qp), intent(out) :: part(3)
             real(xp), intent(out) :: part_slopes(2)
             if (present(slopes)) then
-                call arch_sums(model, b, fine_digits, .true., part, part_slopes, pans, n_pans)
+                call arch_sums(model, b, fine_digits, .true., part, part_slopes, pans, n_pans, &
+                               offset=offset)
             else
                 call arch_sums(model, b, fine_digits, .true., part, given=pans, &
-                               given_count=n_pans)
+                               given_count=n_pans, offset=offset)
                 part_slopes = 0.0_xp
             end if
         end subroutine part_sums
