@@ -56,6 +56,7 @@ contains
         call next_to_the_apse_angle()
         call whole_tables()
         call far_tables()
+        call deep_tables()
         call conserved_momentum()
         call general_references('power1.5', power_law(n=1.5_qp))
         call general_references('power3', power_law(n=3.0_qp))
@@ -565,21 +566,50 @@ contains
         call far_law(power_law(n=32.0_qp), 'power n = 32', rho(1:9), fraction(1:9), 3)
     end subroutine far_tables
 
+    !> The deep tables (Lambda from 80 to 11355, R-bar from 2e-35 down to the bottom of
+    !! binary128) against all panels, for the logarithmic law and power laws n = 1.1,
+    !! 1.5 (every deep piece) and 6 (the pieces whose slopes stay in the hardware range,
+    !! Lambda up to about 2000): theta, s, t on both half-arches at apse radii 1e-40 ..
+    !! 1e-4900, and R, s, t of the two-point problem with R-bar from 1e-47 down to
+    !! 2e-1003 (next to the sector's edge: logarithmic psi/pi = 0.997, 0.9995 at rho =
+    !! 0.5, 1: R-bar 3e-73, 4e-435; n = 1.1, 1 - psi/sector = 1e-6, 1e-12: 8e-48, 8e-108;
+    !! and rho = 1e-50 .. 1e-1000), R-bar's conditioning measured and credited (as
+    !! `far_tables`).
+    subroutine deep_tables()
+        real(qp) :: rho(4), fraction(4)
+        call section('central force: deep tables against all panels')
+        rho = [0.5_qp, 1.0_qp, 1.0e-60_qp, 1.0e-1000_qp]
+        fraction = [0.997_qp, 0.9995_qp, 0.5_qp, 0.999_qp]
+        call far_law(logarithmic_law(), 'logarithmic', rho, fraction, 8, deep=.true.)
+        rho = [1.0_qp, 0.5_qp, 1.0e-50_qp, 1.0e-1000_qp]
+        fraction = [1.0_qp - 1.0e-6_qp, 1.0_qp - 1.0e-12_qp, 0.5_qp, 0.999_qp]
+        call far_law(power_law(n=1.1_qp), 'power n = 1.1', rho, fraction, 8, deep=.true.)
+        call far_law(power_law(n=1.5_qp), 'power n = 1.5', rho, fraction, 8, deep=.true.)
+        rho = [1.0e-50_qp, 1.0e-50_qp, 1.0e-300_qp, 1.0e-300_qp]
+        fraction = [1.0e-20_qp, 0.999_qp, 0.5_qp, 0.999_qp]
+        call far_law(power_law(n=6.0_qp), 'power n = 6', rho, fraction, 4, deep=.true.)
+    end subroutine deep_tables
+
     !> `far_tables` for one law: half-arches at the radii, the two-point problem at
-    !! (rho, fraction of the sector); at least `pieces` far pieces built and checked.
-    subroutine far_law(law, name, rho, fraction, pieces)
+    !! (rho, fraction of the sector); at least `pieces` far pieces built and checked
+    !! (with `deep`: the deep tables' radii and pieces).
+    subroutine far_law(law, name, rho, fraction, pieces, deep)
         class(speed_law), intent(in) :: law
         character(len=*), intent(in) :: name
         real(qp), intent(in) :: rho(:), fraction(:)
         integer, intent(in) :: pieces
+        logical, intent(in), optional :: deep
         type(central_force_model) :: with, without
         type(endpoint_solution) :: a, b, c
-        real(qp) :: big_r, r, x(3), y(3), worst, worst_solve, limit, credit
-        real(qp), parameter :: radii(7) = [1.0e-4_qp, 1.0e-6_qp, 1.0e-10_qp, 1.0e-16_qp, &
-                                           1.0e-22_qp, 1.0e-30_qp, 1.0e-34_qp]
+        real(qp) :: big_r, r, x(3), y(3), worst, worst_solve, limit, credit, radii(7)
+        logical :: built
         real(qp), parameter :: fractions(7) = [0.0_qp, 1.0e-20_qp, 1.0e-6_qp, 0.1_qp, &
                                                0.5_qp, 0.9_qp, 1.0_qp]
         integer :: i, j, k, m, status
+        radii = [1.0e-4_qp, 1.0e-6_qp, 1.0e-10_qp, 1.0e-16_qp, 1.0e-22_qp, 1.0e-30_qp, &
+                 1.0e-34_qp]
+        if (present(deep)) radii = [1.0e-40_qp, 1.0e-100_qp, 1.0e-300_qp, 1.0e-800_qp, &
+                                    1.0e-1500_qp, 1.0e-3000_qp, 1.0e-4900_qp]
         worst = 99.0_qp
         worst_solve = 99.0_qp
         with = new_central_force_model(law)
@@ -613,11 +643,17 @@ contains
                                   digits_of_agreement(a%time, b%time))
             end if
         end do
-        write (output_unit, '(3a,i0,a,2f7.2,a,i0,a)') '   ', name, ': fewest digits of '// &
+        built = count(with%far_ok) >= pieces .and. .not. any(without%far_ok)
+        k = count(with%far_ok)
+        if (present(deep)) then
+            built = count(with%deep_ok) >= pieces .and. .not. any(without%deep_ok)
+            k = count(with%deep_ok)
+        end if
+        write (output_unit, '(3a,i0,a,2f7.2,a,i0,2a)') '   ', name, ': fewest digits of '// &
             'theta, s, t (98 points | R (credited), s, t on ', size(rho), ' endpoints):', &
-            worst, worst_solve, ' (', count(with%far_ok), ' pieces)'
-        call check(count(with%far_ok) >= pieces .and. .not. any(without%far_ok), &
-                   'far tables built and checked ('//name//')')
+            worst, worst_solve, ' (', k, trim(merge(' deep pieces)', ' pieces)     ', &
+                                                      present(deep)))
+        call check(built, 'far tables built and checked ('//name//')')
         call check(worst >= 32.5_qp, 'half-arch values with far tables = all panels ('// &
                    name//')')
         call check(worst_solve >= 32.5_qp, 'two-point R (conditioning credited), s, t with '// &

@@ -19,6 +19,7 @@ program test_main
     use test_sha256, only: run_sha256_tests
     use test_c_api, only: run_c_api_tests
     use test_result_stream, only: run_result_stream_tests
+    use test_fast_log, only: run_fast_log_tests
     implicit none
     integer :: code
     call run_numerics_tests()
@@ -39,6 +40,7 @@ program test_main
     call run_sha256_tests()
     call run_c_api_tests()
     call run_result_stream_tests()
+    call run_fast_log_tests()
     code = summary()
     if (code /= 0) error stop 1
 end program test_main

@@ -98,8 +98,8 @@ program engine_timing
         maxval(worst)/median(worst)
     write (output_unit, '(a,i0)') 'endpoints not solved = ', failed
     write (output_unit, '(a,f0.3,a,i0,a,*(l1))') 'model build, s = ', build, &
-        ' (whole-half-arch tables: ', count(general%whole_ok), ' pieces checked; far: ', &
-        general%far_ok
+        ' (whole-half-arch tables: ', count(general%whole_ok), ' pieces checked; far, deep: ', &
+        general%far_ok, general%deep_ok
     if (text == 'extreme') call time_extremes(general, limit, repeats, median(worst))
 contains
 

@@ -55,7 +55,7 @@ contains
             ! subtraction, below 2^-62) in binary128, its product with r/2 in hardware
             ! precision (2^-64 of a term of 2^-63 r), both conversions on the bits
             x_xp = hardware_real(x)
-            if (x_xp > 1.0e-300_xp .and. x_xp < 1.0e300_xp) then
+            if (x_xp > 1.0e-4900_xp .and. x_xp < 1.0e4900_xp) then
                 r_xp = 1.0_xp/sqrt(x_xp)
                 r = quad_real(r_xp)
                 r = r + quad_real(0.5_xp*r_xp*hardware_real(1.0_qp - x*(r*r)))
@@ -80,14 +80,18 @@ contains
         real(xp) :: x_xp, s_xp
         if (x87_layout) then
             x_xp = hardware_real(x)
-            if (x_xp > 1.0e-300_xp .and. x_xp < 1.0e300_xp) then
+            ! (both kinds share the exponent range: all of it but its ends, where s^2
+            ! or r^2 would leave it; steep laws' far nodes reach 1e-1000 and below)
+            if (x_xp > 1.0e-4900_xp .and. x_xp < 1.0e4900_xp) then
                 s_xp = sqrt(x_xp)
                 s = quad_real(s_xp)
                 s = s + quad_real(hardware_real(x - s*s)/(2.0_xp*s_xp))
                 return
             end if
         end if
-        s = sqrt(x)
+        ! (zero, an end of a range, without a library call)
+        s = x
+        if (x /= 0.0_qp) s = sqrt(x)
     end function fast_sqrt
 
     !> real(y, qp) on the bits for normal y where `xp` is x87 extended (the library's

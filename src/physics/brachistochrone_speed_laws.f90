@@ -678,7 +678,7 @@ contains
         if (a*big_lambda > 0.5_qp) c(2) = 1.0_qp - c(4)
         c(6) = 1.0_qp/c(2)
         ! q/v = sqrt(q) exp(-lambda) R^(a/2) sqrt(a/(2 E(Lambda)))
-        c(7) = sqrt(0.5_qp*a*c(4)*c(6))
+        c(7) = fast_sqrt(0.5_qp*a*c(4)*c(6))
         ! the offset 1/(4 a) where arch_terms switches from expm1 to exp
         c(8) = 0.25_qp/a
     end function power_apse_constants
@@ -1038,8 +1038,8 @@ contains
         found = a > 0.0_qp
         t = 0.0_qp
         if (self%n == 3.0_qp) then
-            t = sqrt(-fast_expm1(-2.0_qp*delta_hi))
-            if (delta_lo > 0.0_qp) t = t - sqrt(-fast_expm1(-2.0_qp*delta_lo))
+            t = fast_sqrt(-fast_expm1(-2.0_qp*delta_hi))
+            if (delta_lo > 0.0_qp) t = t - fast_sqrt(-fast_expm1(-2.0_qp*delta_lo))
         else if (self%n == 2.0_qp) then
             t = inverse_square_fall(delta_hi)
             if (delta_lo > 0.0_qp) t = t - inverse_square_fall(delta_lo)
@@ -1352,7 +1352,7 @@ contains
         real(qp), intent(in) :: big_r, one_minus_big_r, big_lambda
         real(qp) :: c(8)
         c = [big_lambda, 0.0_qp, 0.0_qp, 0.0_qp, big_r, 1.0_qp/big_lambda, &
-             1.0_qp/sqrt(2.0_qp*big_lambda), 0.0_qp]
+             inverse_sqrt(2.0_qp*big_lambda), 0.0_qp]
     end function logarithmic_apse_constants
 
     !> The power law's terms in the limit a -> 0: E(y)/a -> y, P = 2 delta.
@@ -1447,9 +1447,9 @@ contains
         logical, intent(out) :: found
         found = .true.
         if (delta_lo > 1.0_qp) then
-            t = erfc(sqrt(delta_lo)) - erfc(sqrt(delta_hi))
+            t = erfc(fast_sqrt(delta_lo)) - erfc(fast_sqrt(delta_hi))
         else
-            t = erf(sqrt(delta_hi)) - erf(sqrt(delta_lo))
+            t = erf(fast_sqrt(delta_hi)) - erf(fast_sqrt(delta_lo))
         end if
         t = sqrt(0.5_qp*acos(-1.0_qp))*t
     end subroutine logarithmic_closed_fall
@@ -1804,26 +1804,10 @@ contains
         real(xp), intent(out) :: g, one_minus_q, log_slope
         real(xp), intent(in), optional :: exp_shift
         real(xp) :: e2, om2, ea, e_lambda, ead, e_delta, top, decay
-        logical :: known  ! E(delta) at hand
-        call power_lambda_exps_xp(c, lambda, delta, rough, e2, om2, ea, e_lambda, ead, &
-                                  e_delta, known)
+        call power_exps_xp(c, lambda, delta, rough, e2, om2, ea, e_lambda, ead, e_delta, &
+                           one_minus_q)
         ! (exp(-2 lambda), exp(-a lambda) normal: from double precision where `rough`)
         top = normal_reach(rough)
-        if (.not. known) then
-            if (c(3)*delta <= 0.25_xp .and. lambda <= delta) then
-                ! nearer the apse: exp(-a lambda) E(delta) = E(Lambda) - E(lambda)
-                e_delta = (c(2) - e_lambda)/ea
-                ead = 1.0_xp - e_delta
-            else if (c(3)*delta >= 0.5_xp .and. c(4) > tiny(1.0_xp) .and. &
-                     c(3)*lambda <= top) then
-                ! exp(-a delta) = exp(-a Lambda)/exp(-a lambda)
-                ead = c(4)/ea
-                e_delta = 1.0_xp - ead
-            else
-                call exp_and_decay_xp(c(3)*delta, ead, e_delta, rough)
-            end if
-        end if
-        one_minus_q = om2 + e2*e_lambda/c(2)
         ! exp(-(a+2) lambda/2) from both where their product is normal
         decay = 0.0_xp
         if (merge(max(2.0_xp, c(3)), c(3) + 2.0_xp, rough)*lambda <= top) decay = sqrt(e2*ea)
@@ -1868,37 +1852,22 @@ contains
         logical, intent(in) :: rough
         real(xp), intent(out) :: g, h
         real(xp) :: e2, om2, ea, e_lambda, ead, e_delta, one_minus_q
-        logical :: known  ! E(delta) at hand
-        call power_lambda_exps_xp(c, lambda, delta, rough, e2, om2, ea, e_lambda, ead, &
-                                  e_delta, known)
-        if (.not. known) then
-            if (c(3)*delta <= 0.25_xp .and. lambda <= delta) then
-                ! nearer the apse: exp(-a lambda) E(delta) = E(Lambda) - E(lambda)
-                e_delta = (c(2) - e_lambda)/ea
-                ead = 1.0_xp - e_delta
-            else if (c(3)*delta >= 0.5_xp .and. c(4) > tiny(1.0_xp)) then
-                ! exp(-a delta) = exp(-a Lambda)/exp(-a lambda)
-                ead = c(4)/ea
-                e_delta = 1.0_xp - ead
-            else
-                call exp_and_decay_xp(c(3)*delta, ead, e_delta, rough)
-            end if
-        end if
-        one_minus_q = om2 + e2*e_lambda/c(2)
+        call power_exps_xp(c, lambda, delta, rough, e2, om2, ea, e_lambda, ead, e_delta, &
+                           one_minus_q)
         g = sqrt(e_delta/(one_minus_q*c(2)))*(exp_shift*sqrt(e2*ea))
         h = c(6)*e_lambda*ead/(e_delta*one_minus_q)
     end subroutine power_node_xp
 
-    !> exp(-2 lambda) = e2, 1 - it = om2, exp(-a lambda) = ea, E(lambda) = e_lambda for
-    !! `power_theta_terms_xp` and `power_node_xp` and, where the start is nearer (a delta
-    !! <= 1/4, delta < lambda, a lambda <= 1/2: `known`), exp(-a delta) = ead, E(delta) =
-    !! e_delta (else 0).
-    pure subroutine power_lambda_exps_xp(c, lambda, delta, rough, e2, om2, ea, e_lambda, &
-                                         ead, e_delta, known)
+    !> exp(-2 lambda) = e2, 1 - it = om2, exp(-a lambda) = ea, E(lambda) = e_lambda,
+    !! exp(-a delta) = ead, E(delta) = e_delta and 1 - q for `power_theta_terms_xp` and
+    !! `power_node_xp` (the same operations for both: g's last bits matter next to the
+    !! sector's edge, see `power_node_xp`).
+    pure subroutine power_exps_xp(c, lambda, delta, rough, e2, om2, ea, e_lambda, ead, &
+                                  e_delta, one_minus_q)
         real(xp), intent(in) :: c(6), lambda, delta
         logical, intent(in) :: rough
-        real(xp), intent(out) :: e2, om2, ea, e_lambda, ead, e_delta
-        logical, intent(out) :: known
+        real(xp), intent(out) :: e2, om2, ea, e_lambda, ead, e_delta, one_minus_q
+        logical :: known  ! E(delta) at hand
         known = .false.
         ead = 0.0_xp
         e_delta = 0.0_xp
@@ -1930,7 +1899,23 @@ contains
                 call exp_and_decay_xp(c(3)*lambda, ea, e_lambda, rough)
             end if
         end if
-    end subroutine power_lambda_exps_xp
+        if (.not. known) then
+            if (c(3)*delta <= 0.25_xp .and. lambda <= delta) then
+                ! nearer the apse: exp(-a lambda) E(delta) = E(Lambda) - E(lambda)
+                e_delta = (c(2) - e_lambda)/ea
+                ead = 1.0_xp - e_delta
+            else if (c(3)*delta >= 0.5_xp .and. c(4) > tiny(1.0_xp) .and. &
+                     c(3)*lambda <= normal_reach(rough)) then
+                ! exp(-a delta) = exp(-a Lambda)/exp(-a lambda) (exp(-a lambda) normal:
+                ! from double precision where `rough`)
+                ead = c(4)/ea
+                e_delta = 1.0_xp - ead
+            else
+                call exp_and_decay_xp(c(3)*delta, ead, e_delta, rough)
+            end if
+        end if
+        one_minus_q = om2 + e2*e_lambda/c(2)
+    end subroutine power_exps_xp
 
     !> Logarithmic law: [Lambda, 0, 0, 0, 0, 0].
     pure function logarithmic_apse_constants_xp(self, big_lambda) result(c)
