@@ -83,7 +83,7 @@ module brachistochrone_central_force
                                       status_not_finite, &
                                       status_no_convergence, argument_status, &
                                       status_parameter_out_of_range
-    use brachistochrone_fast_math, only: hardware_real, fast_sqrt
+    use brachistochrone_fast_math, only: hardware_real, fast_sqrt, quad_real
     use brachistochrone_fast_exp, only: fast_exp, fast_expm1
     use brachistochrone_fast_log, only: fast_log, fast_log1p
     use brachistochrone_quadrature, only: gauss_legendre_rule, gauss_legendre
@@ -149,6 +149,9 @@ module brachistochrone_central_force
     !! to about 2e-35), far_pieces equal pieces in z = log Lambda (`build_far_tables`).
     real(qp), parameter :: far_high = 80.0_qp
     integer, parameter :: far_pieces = 4, far_points = 33
+    !> Whether the hardware kind is x87 extended (64-bit significand): pairs of it then
+    !! hold more than binary128's 113 bits (`pair_horner`)
+    logical, parameter :: pair_kind = digits(1.0_xp) >= 64
     !> The deep tables beyond those: Lambda in [far_high, deep_high] (R from 2e-35 down to
     !! the bottom of binary128's range), deep_pieces equal pieces in z = log Lambda
     !! (`build_deep_tables`).
@@ -162,6 +165,18 @@ module brachistochrone_central_force
         real(real64), allocatable :: offset64(:), weight64(:)
         real(xp), allocatable :: offset_xp(:), weight_xp(:)
     end type gauss_nodes
+
+    !> Five tables on the same pieces (`chebyshev_table`s: `whole`, `far`) in parts for
+    !! evaluation (`split_tables`, `table_value`): the powers of t from split(piece, m) on,
+    !! whose sum of sizes is below 2^-60 of the value's (the slopes' logarithms, m = 4, 5:
+    !! below 2^-10), in hardware precision (tail_xp(j, piece, m)); those below as pairs of
+    !! the hardware kind (pair_xp(j, piece, m, 1:2), their sum exact), summed in pairs
+    !! where that is within its bound (pair_ok), else in binary128.
+    type :: table_parts
+        real(xp), allocatable :: tail_xp(:, :, :), pair_xp(:, :, :, :)
+        integer, allocatable :: split(:, :)
+        logical, allocatable :: pair_ok(:, :)
+    end type table_parts
 
     !> The general engine for one speed law: the law and the Gauss rules.
     type :: central_force_model
@@ -197,11 +212,9 @@ module brachistochrone_central_force
         logical :: whole_ok(table_pieces) = .false.
         !> Theta's table and its slope's in hardware precision (powers of t per piece)
         real(xp), allocatable :: whole_xp(:, :, :)
-        !> Theta, S and T tables: the powers of t from whole_split(piece, m) on, whose
-        !! sum of sizes is below 2^-60 of the value's, in hardware precision
-        !! (`whole_value`); the slopes' (logarithms): below 2^-10
-        real(xp), allocatable :: whole_tail_xp(:, :, :)
-        integer :: whole_split(table_pieces, 5) = table_points
+        !> the five whole tables and the five far tables in parts of the hardware kind
+        !! (`split_tables`, `table_value`)
+        type(table_parts) :: whole_parts, far_parts
     contains
         procedure :: half_arch => general_half_arch    !! theta, s, t at r (eqs. 27-41)
         procedure :: apse_angle => general_apse_angle  !! Theta(R,R)
@@ -386,7 +399,7 @@ contains
         end do
         model%whole_xp = reshape(real([model%whole(1)%power, model%whole(4)%power], xp), &
                                  [table_points, table_pieces, 2])
-        call split_whole_tables(model, values)
+        model%whole_parts = split_tables(model%whole, values)
         width = (upper - lower)/real(table_pieces, qp)
         do piece = 1, table_pieces
             model%whole_ok(piece) = piece_agrees(model, lower, width, piece, .false.) &
@@ -436,7 +449,8 @@ contains
         real(qp), intent(out) :: values(5)
         logical, intent(out) :: found
         integer, intent(in) :: wanted  !! how many of the five (1 .. 5)
-        real(qp) :: z
+        real(qp) :: z, t
+        real(xp) :: t_pair(2)
         integer :: piece, m
         values = 0.0_qp
         found = .false.
@@ -449,8 +463,10 @@ contains
         piece = min(table_pieces, max(1, int((z - log(table_low))/(log(table_high) - &
                     log(table_low))*real(table_pieces, qp)) + 1))
         if (.not. model%whole_ok(piece)) return
+        ! (the five tables share their pieces: t once)
+        call whole_point(model%whole(1), z, piece, t, t_pair)
         do m = 1, wanted
-            call whole_value(model, m, z, values(m))
+            call whole_value(model, m, piece, t, t_pair, values(m))
         end do
         found = .true.
     end subroutine whole_lookup
@@ -461,67 +477,156 @@ contains
     !! there (error below ~70 eps(xp) 2^-60 < eps/4 of the value, t's rounding included).
     !! For the slopes' logarithms (m = 4, 5; wanted to about eps(xp)/10 absolute) from
     !! where that sum is below 2^-10 (error below ~70 eps(xp) 2^-10).
-    subroutine split_whole_tables(model, values)
-        type(central_force_model), intent(inout) :: model
+    !! The powers below the split as pairs of the hardware kind (hi rounded, lo = a - hi:
+    !! exact, a has 113 bits), summed by `pair_horner` where its bound, 12 (split + 1)
+    !! 2^-128 times the sum of all the coefficients' sizes, is below 2^-117 of the least
+    !! size (and the hardware kind is x87 extended; elsewhere Horner in binary128).
+    pure function split_tables(tables, values) result(parts)
+        type(chebyshev_table), intent(in) :: tables(5)  !! on the same pieces
         real(qp), intent(in) :: values(:, :, :)  !! the tabulated values (point, piece, m)
+        type(table_parts) :: parts
         real(qp) :: least, tail
-        integer :: piece, m, j, used
-        allocate (model%whole_tail_xp(0:table_points - 1, table_pieces, 5))
-        model%whole_tail_xp = 0.0_xp
+        integer :: piece, m, j, used, points, pieces
+        points = tables(1)%terms
+        pieces = tables(1)%pieces
+        allocate (parts%tail_xp(0:points - 1, pieces, 5), parts%pair_xp(0:points - 1, &
+                  pieces, 5, 2), parts%split(pieces, 5), parts%pair_ok(pieces, 5))
+        parts%tail_xp = 0.0_xp
+        parts%pair_xp = 0.0_xp
         do m = 1, 5
-            do piece = 1, table_pieces
+            do piece = 1, pieces
                 ! (no associate: a section's name would start at 1)
-                used = model%whole(m)%used(piece)
+                used = tables(m)%used(piece)
                 least = 0.5_qp*minval(abs(values(:, piece, m)))
                 if (m > 3) least = 2.0_qp**50
-                model%whole_split(piece, m) = used
+                parts%split(piece, m) = used
                 tail = 0.0_qp
                 do j = used - 1, 1, -1
-                    tail = tail + abs(model%whole(m)%power(j, piece))
+                    tail = tail + abs(tables(m)%power(j, piece))
                     if (.not. (tail <= 2.0_qp**(-60)*least)) exit
-                    model%whole_split(piece, m) = j
+                    parts%split(piece, m) = j
                 end do
-                model%whole_tail_xp(0:used - 1, piece, m) = &
-                    real(model%whole(m)%power(0:used - 1, piece), xp)
+                associate (a => tables(m)%power(0:used - 1, piece), &
+                           split => parts%split(piece, m))
+                parts%tail_xp(0:used - 1, piece, m) = real(a, xp)
+                parts%pair_xp(0:used - 1, piece, m, 1) = real(a, xp)
+                parts%pair_xp(0:used - 1, piece, m, 2) = &
+                    real(a - real(parts%pair_xp(0:used - 1, piece, m, 1), qp), xp)
+                parts%pair_ok(piece, m) = pair_kind .and. 12.0_qp*real(split + 1, qp)* &
+                    2.0_qp**(-128)*sum(abs(a)) <= 2.0_qp**(-117)*least
+                end associate
             end do
         end do
-    end subroutine split_whole_tables
+    end function split_tables
 
-    !> Table m at z: the powers of t from `whole_split` on in hardware precision, the
-    !! rest in quad precision; the slopes (m = 4, 5) from their logarithms.
-    pure subroutine whole_value(model, m, z, value)
-        type(central_force_model), intent(in) :: model
-        integer, intent(in) :: m
+    !> The piece of the whole-half-arch tables holding z = log Lambda (the five tables
+    !! share their pieces) and t in [-1, 1] there, also as a pair of the hardware kind
+    !! (t_pair(1) + t_pair(2) = t exactly: t has 113 bits).
+    pure subroutine whole_point(table, z, piece, t, t_pair)
+        type(chebyshev_table), intent(in) :: table  !! `whole(1)` (`far(1)`)
         real(qp), intent(in) :: z
-        real(qp), intent(out) :: value
-        real(qp) :: width, position, t
-        real(xp) :: t_xp, high, low
-        integer :: piece, j, split, used
-        associate (table => model%whole(m))
+        integer, intent(out) :: piece
+        real(qp), intent(out) :: t
+        real(xp), intent(out) :: t_pair(2)
+        real(qp) :: width, position
         width = (table%upper - table%lower)/real(table%pieces, qp)
         position = (z - table%lower)/width
         piece = min(table%pieces, max(1, int(position) + 1))
         t = 2.0_qp*(position - real(piece - 1, qp)) - 1.0_qp
-        used = table%used(piece)
-        split = model%whole_split(piece, m)
-        t_xp = real(t, xp)
+        t_pair(1) = hardware_real(t)
+        t_pair(2) = hardware_real(t - quad_real(t_pair(1)))
+    end subroutine whole_point
+
+    !> Table m at t on `piece` (`whole_point`): the powers of t from the split on in
+    !! hardware precision, the rest in pairs of it (`pair_horner`, where `pair_ok`) or in
+    !! quad precision; the slopes (m = 4, 5) from their logarithms (`table_parts`).
+    pure subroutine whole_value(model, m, piece, t, t_pair, value)
+        type(central_force_model), intent(in) :: model
+        integer, intent(in) :: m, piece
+        real(qp), intent(in) :: t
+        real(xp), intent(in) :: t_pair(2)
+        real(qp), intent(out) :: value
+        call table_value(model%whole(m), model%whole_parts, m, piece, t, t_pair, value)
+    end subroutine whole_value
+
+    !> `whole_value` for either set of tables (`table`: the m-th of the set `parts` is
+    !! made from).
+    pure subroutine table_value(table, parts, m, piece, t, t_pair, value)
+        type(chebyshev_table), intent(in) :: table
+        type(table_parts), intent(in) :: parts
+        integer, intent(in) :: m, piece
+        real(qp), intent(in) :: t
+        real(xp), intent(in) :: t_pair(2)
+        real(qp), intent(out) :: value
+        real(xp) :: high, low
+        integer :: j, split
+        split = parts%split(piece, m)
         high = 0.0_xp
-        do j = used - 1, split, -1
-            high = high*t_xp + model%whole_tail_xp(j, piece, m)
+        do j = table%used(piece) - 1, split, -1
+            high = high*t_pair(1) + parts%tail_xp(j, piece, m)
         end do
-        value = real(high, qp)
+        if (parts%pair_ok(piece, m)) then
+            call pair_horner(parts%pair_xp(:, piece, m, 1), parts%pair_xp(:, piece, m, 2), &
+                             split, t_pair, high, low)
+            if (m > 3) then
+                ! the slopes' tables hold their logarithms: exp in hardware precision, the
+                ! pair's low part taken as a factor
+                value = quad_real(exp(high)*(1.0_xp + low))
+            else
+                value = quad_real(high) + quad_real(low)
+            end if
+            return
+        end if
+        value = quad_real(high)
         do j = split - 1, 0, -1
             value = value*t + table%power(j, piece)
         end do
-        end associate
         if (m > 3) then
-            ! the slopes' tables hold their logarithms: exp in hardware precision, the
-            ! logarithm's part below the hardware kind's rounding taken as a factor
+            ! (as above, from the binary128 logarithm)
             high = real(value, xp)
             low = real(value - real(high, qp), xp)
             value = real(exp(high)*(1.0_xp + low), qp)
         end if
-    end subroutine whole_value
+    end subroutine table_value
+
+    !> Horner's rule on the powers j < n of t in pairs of the hardware kind (x87 extended,
+    !! u = 2^-64): v <- v t + a with v = high + low, t = t_pair(1) + t_pair(2), a = ah(j) +
+    !! al(j) (t and a exact), from v = high (the tail's sum), high and low renormalized.
+    !! Each step: high t_pair(1) exactly (Dekker's product, Veltkamp's split at 32 bits),
+    !! the cross products to u of their u^2 size (low t_pair(2) dropped: u^2 |v t|), the
+    !! sum with ah(j) exactly (Knuth's two-sum), the low parts within about 2u of their
+    !! sizes (u |p| + u |ah|): at most 12 u^2 (|v t| + |a|) per step, |t| <= 1 scaling it
+    !! down in the later steps: in all at most 12 (n + 1) u^2 times the sum of the
+    !! coefficients' sizes (|v| <= that sum). (x87 arithmetic in its own precision, no
+    !! reassociation: the exact transformations hold.)
+    pure subroutine pair_horner(ah, al, n, t_pair, high, low)
+        real(xp), intent(in) :: ah(0:), al(0:), t_pair(2)
+        integer, intent(in) :: n
+        real(xp), intent(inout) :: high
+        real(xp), intent(out) :: low
+        real(xp), parameter :: splitter = 2.0_xp**32 + 1.0_xp
+        real(xp) :: c, t1, t2, v1, v2, p, e, s, b, l
+        integer :: j
+        c = splitter*t_pair(1)
+        t1 = c - (c - t_pair(1))
+        t2 = t_pair(1) - t1
+        low = 0.0_xp
+        do j = n - 1, 0, -1
+            c = splitter*high
+            v1 = c - (c - high)
+            v2 = high - v1
+            p = high*t_pair(1)
+            e = (((v1*t1 - p) + v1*t2) + v2*t1) + v2*t2
+            e = e + (high*t_pair(2) + low*t_pair(1))
+            s = p + ah(j)
+            b = s - p
+            l = ((p - (s - b)) + (ah(j) - b) + e) + al(j)
+            ! (two-sum again: s may be small after cancellation)
+            high = s + l
+            b = high - s
+            low = (s - (high - b)) + (l - b)
+        end do
+    end subroutine pair_horner
 
     !> Tabulate the whole-half-arch integrals beyond the tables (Lambda from table_high
     !! to far_high: R-bar far below 1e-3, the logarithmic law next to its sector's edge,
@@ -553,6 +658,7 @@ contains
                                          maxval(abs(values(:, :, m)))), 0.5_qp*eps_qp, m > 3))
         end do
         model%far_xp = [hardware_copy(model%far(1)), hardware_copy(model%far(4))]
+        model%far_parts = split_tables(model%far, values)
         width = (upper - lower)/real(far_pieces, qp)
         do piece = 1, far_pieces
             model%far_ok(piece) = piece_agrees(model, lower, width, piece, .true.)
@@ -568,21 +674,28 @@ contains
         integer, intent(in) :: piece
         logical, intent(in) :: far
         logical :: agrees
-        real(qp) :: z, direct(5), table(5)
-        integer :: side, m
+        real(qp) :: z, direct(5), table(5), t
+        real(xp) :: t_pair(2)
+        integer :: side, m, at
         agrees = .true.
         do side = 1, 2
             z = lower + width*(real(piece - 1, qp) + merge(0.3_qp, 0.71_qp, side == 1))
             direct = whole_direct(model, exp(z))
-            do m = 1, 5
-                if (far .and. z > log(far_high)) then
+            if (far .and. z > log(far_high)) then
+                do m = 1, 5
                     call deep_value(model, m, z, table(m))
-                else if (far) then
-                    call far_value(model, m, z, table(m))
-                else
-                    call whole_value(model, m, z, table(m))
-                end if
-            end do
+                end do
+            else if (far) then
+                call whole_point(model%far(1), z, at, t, t_pair)
+                do m = 1, 5
+                    call table_value(model%far(m), model%far_parts, m, at, t, t_pair, table(m))
+                end do
+            else
+                call whole_point(model%whole(1), z, at, t, t_pair)
+                do m = 1, 5
+                    call whole_value(model, m, at, t, t_pair, table(m))
+                end do
+            end if
             agrees = table_agrees(model, z, direct, table) .and. agrees
         end do
     end function piece_agrees
@@ -624,8 +737,9 @@ contains
         real(qp), intent(out) :: values(5)
         logical, intent(out) :: found
         integer, intent(in) :: wanted
-        real(qp) :: z
-        integer :: m
+        real(qp) :: z, t
+        real(xp) :: t_pair(2)
+        integer :: m, piece
         if (big_lambda > far_high) then
             call deep_lookup(model, big_lambda, values, found, wanted)
             return
@@ -634,25 +748,12 @@ contains
         z = fast_log(big_lambda)
         found = far_piece(model, z) > 0
         if (.not. found) return
+        call whole_point(model%far(1), z, piece, t, t_pair)
         do m = 1, wanted
-            call far_value(model, m, z, values(m))
+            call table_value(model%far(m), model%far_parts, m, piece, t, t_pair, values(m))
         end do
     end subroutine far_lookup
 
-    !> Far table m at z; the slopes (m = 4, 5) from their logarithms (as `whole_value`).
-    pure subroutine far_value(model, m, z, value)
-        type(central_force_model), intent(in) :: model
-        integer, intent(in) :: m
-        real(qp), intent(in) :: z
-        real(qp), intent(out) :: value
-        real(xp) :: high, low
-        call model%far(m)%evaluate(z, value)
-        if (m > 3) then
-            high = real(value, xp)
-            low = real(value - real(high, qp), xp)
-            value = real(exp(high)*(1.0_xp + low), qp)
-        end if
-    end subroutine far_value
 
     !> `whole_lookup_xp` beyond the tables (the far tables' hardware copies).
     pure subroutine far_lookup_xp(model, big_lambda, values, found)
@@ -748,7 +849,7 @@ contains
         end do
     end subroutine deep_lookup
 
-    !> Deep table m at z; the slopes (m = 4, 5) from their logarithms (as `far_value`).
+    !> Deep table m at z; the slopes (m = 4, 5) from their logarithms (as `table_value`).
     pure subroutine deep_value(model, m, z, value)
         type(central_force_model), intent(in) :: model
         integer, intent(in) :: m
