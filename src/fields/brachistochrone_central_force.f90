@@ -376,7 +376,6 @@ contains
         type(central_force_model), intent(inout) :: model
         real(qp) :: points(table_points, table_pieces)
         real(qp) :: values(table_points, table_pieces, 5), width, lower, upper
-        real(qp), parameter :: slope_noise = real(epsilon(1.0_xp), qp)
         integer :: piece, m
         logical :: positive
         lower = log(table_low)
@@ -392,11 +391,7 @@ contains
         end do
         ! the values carry rounding noise of about eps (the slopes: of the hardware kind,
         ! absolute in their logarithms)
-        do m = 1, 5
-            model%whole(m) = chebyshev_fit(lower, upper, values(:, :, m), &
-                                           merge(0.5_qp*eps_qp, 0.1_qp*slope_noise/ &
-                                           max(1.0_qp, maxval(abs(values(:, :, m)))), m <= 3))
-        end do
+        model%whole = fit_tables(lower, upper, values)
         model%whole_xp = reshape(real([model%whole(1)%power, model%whole(4)%power], xp), &
                                  [table_points, table_pieces, 2])
         model%whole_parts = split_tables(model%whole, values)
@@ -628,6 +623,22 @@ contains
         end do
     end subroutine pair_horner
 
+    !> The five whole-half-arch tables (Theta, the S and T corrections, the slopes'
+    !! logarithms) fitted on the pieces of [lower, upper] through `values` at their
+    !! Chebyshev points: the values to half a rounding of binary128, the logarithms to a
+    !! tenth of a rounding of the hardware kind (of their largest size, at least 1).
+    function fit_tables(lower, upper, values) result(tables)
+        real(qp), intent(in) :: lower, upper, values(:, :, :)
+        type(chebyshev_table) :: tables(5)
+        real(qp), parameter :: slope_noise = real(epsilon(1.0_xp), qp)
+        integer :: m
+        do m = 1, 5
+            tables(m) = chebyshev_fit(lower, upper, values(:, :, m), &
+                                      merge(0.5_qp*eps_qp, 0.1_qp*slope_noise/ &
+                                      max(1.0_qp, maxval(abs(values(:, :, m)))), m <= 3))
+        end do
+    end function fit_tables
+
     !> Tabulate the whole-half-arch integrals beyond the tables (Lambda from table_high
     !! to far_high: R-bar far below 1e-3, the logarithmic law next to its sector's edge,
     !! small rho), on far_pieces pieces in z = log Lambda (far_points Chebyshev points
@@ -643,8 +654,7 @@ contains
         type(central_force_model), intent(inout) :: model
         real(qp) :: points(far_points, far_pieces), values(far_points, far_pieces, 5)
         real(qp) :: width, lower, upper
-        real(qp), parameter :: slope_noise = real(epsilon(1.0_xp), qp)
-        integer :: piece, m
+        integer :: piece
         lower = log(table_high)
         upper = log(far_high)
         points = chebyshev_points(lower, upper, far_pieces, far_points)
@@ -652,11 +662,7 @@ contains
         ! the slopes as their logarithms (as `build_whole_tables`)
         if (.not. all(values(:, :, 4:5) > 0.0_qp)) return
         values(:, :, 4:5) = log(values(:, :, 4:5))
-        do m = 1, 5
-            model%far(m) = chebyshev_fit(lower, upper, values(:, :, m), &
-                                         merge(0.1_qp*slope_noise/max(1.0_qp, &
-                                         maxval(abs(values(:, :, m)))), 0.5_qp*eps_qp, m > 3))
-        end do
+        model%far = fit_tables(lower, upper, values)
         model%far_xp = [hardware_copy(model%far(1)), hardware_copy(model%far(4))]
         model%far_parts = split_tables(model%far, values)
         width = (upper - lower)/real(far_pieces, qp)
@@ -789,10 +795,9 @@ contains
         type(central_force_model), intent(inout) :: model
         real(qp) :: points(deep_points, deep_pieces), values(deep_points, deep_pieces, 5)
         real(qp) :: width, lower, upper
-        real(qp), parameter :: slope_noise = real(epsilon(1.0_xp), qp), &
-                               least_slope = 2.0_qp**10*real(tiny(1.0_xp), qp)
+        real(qp), parameter :: least_slope = 2.0_qp**10*real(tiny(1.0_xp), qp)
         logical :: normal(deep_pieces)
-        integer :: piece, m
+        integer :: piece
         lower = log(far_high)
         upper = log(deep_high)
         points = chebyshev_points(lower, upper, deep_pieces, deep_points)
@@ -807,11 +812,7 @@ contains
             if (.not. normal(piece)) values(:, piece, 4:5) = 1.0_qp
         end do
         values(:, :, 4:5) = log(values(:, :, 4:5))
-        do m = 1, 5
-            model%deep(m) = chebyshev_fit(lower, upper, values(:, :, m), &
-                                          merge(0.1_qp*slope_noise/max(1.0_qp, &
-                                          maxval(abs(values(:, :, m)))), 0.5_qp*eps_qp, m > 3))
-        end do
+        model%deep = fit_tables(lower, upper, values)
         model%deep_xp = [hardware_copy(model%deep(1)), hardware_copy(model%deep(4))]
         width = (upper - lower)/real(deep_pieces, qp)
         do piece = 1, deep_pieces
@@ -950,7 +951,7 @@ contains
         integer, intent(out) :: count
         real(qp) :: b, c, meet, lo, hi, origin, decay_rate, top
         type(panel) :: start_side(max_panels)
-        integer :: n_start, k
+        integer :: n_start
         count = 0
         call root_scales(model, a, b, c)
         if (a%big_lambda <= 0.125_qp*(b + c)) then
@@ -1020,11 +1021,7 @@ contains
                 call add_split(start_side, n_start, kind_start, lo, hi, 1.0_qp, a%delta_r, a)
                 lo = hi
             end do
-            do k = n_start, 1, -1
-                if (count >= max_panels) exit
-                count = count + 1
-                panels(count) = start_side(k)
-            end do
+            call append_reversed(panels, count, start_side, n_start)
         end if
     end subroutine arch_panels
 
@@ -1072,7 +1069,7 @@ contains
         real(xp), parameter :: steps = real(ladder, xp)
         real(xp) :: x(3), b, c, meet, lo, hi, origin, top, rest, longest
         type(panel) :: start_side(max_panels)
-        integer :: n_start, k
+        integer :: n_start
         count = 0
         x = real([a%big_lambda, a%lambda_r, a%delta_r], xp)
         call root_scales_xp(model, a, x, b, c)
@@ -1124,12 +1121,23 @@ contains
             call add_split_xp(start_side, n_start, kind_start, lo, hi, 1.0_xp, x(3), a)
             lo = hi
         end do
-        do k = n_start, 1, -1
+        call append_reversed(panels, count, start_side, n_start)
+    end subroutine arch_panels_xp
+
+    !> The start side's panels (`side(1:n)`, laid out from the start) appended in the
+    !! order away from the apse, as far as `panels` holds them.
+    pure subroutine append_reversed(panels, count, side, n)
+        type(panel), intent(inout) :: panels(max_panels)
+        integer, intent(inout) :: count
+        type(panel), intent(in) :: side(max_panels)
+        integer, intent(in) :: n
+        integer :: k
+        do k = n, 1, -1
             if (count >= max_panels) exit
             count = count + 1
-            panels(count) = start_side(k)
+            panels(count) = side(k)
         end do
-    end subroutine arch_panels_xp
+    end subroutine append_reversed
 
     !> `root_scales` in hardware precision, x = [Lambda, lambda_r, delta_r].
     pure subroutine root_scales_xp(model, a, x, b, c)
@@ -1157,30 +1165,16 @@ contains
         continued_root_xp = x(2) >= 0.25_xp*b .and. x(2) < max(b, min(x(1) - c, x(1)*b/(b + c)))
     end function continued_root_xp
 
-    !> `add_split` in hardware precision (the panels' ends rounded to binary128 exactly).
+    !> `add_split` from hardware-precision ends and split (converted exactly: the same
+    !! comparisons and panels).
     pure subroutine add_split_xp(panels, count, kind, lo, hi, scale, split, a)
         type(panel), intent(inout) :: panels(:)
         integer, intent(inout) :: count
         integer, intent(in) :: kind
         real(xp), intent(in) :: lo, hi, scale, split
         type(arch_setup), intent(in) :: a
-        real(qp) :: w_lo, w_hi
-        logical :: reversed
-        reversed = kind == kind_start .or. kind == kind_start_root
-        w_lo = merge(a%weight_above, a%weight_below, reversed)
-        w_hi = merge(a%weight_below, a%weight_above, reversed)
-        if (split <= lo) then
-            call push(panels, count, panel(kind, real(lo, qp), real(hi, qp), real(scale, qp), &
-                                           w_hi, 1.0_real64))
-        else if (split >= hi) then
-            call push(panels, count, panel(kind, real(lo, qp), real(hi, qp), real(scale, qp), &
-                                           w_lo, 1.0_real64))
-        else
-            call push(panels, count, panel(kind, real(lo, qp), real(split, qp), &
-                                           real(scale, qp), w_lo, 1.0_real64))
-            call push(panels, count, panel(kind, real(split, qp), real(hi, qp), &
-                                           real(scale, qp), w_hi, 1.0_real64))
-        end if
+        call add_split(panels, count, kind, real(lo, qp), real(hi, qp), real(scale, qp), &
+                       real(split, qp), a)
     end subroutine add_split_xp
 
     !> sqrt(z) for the root panels' splits, within an ulp: the hardware kind's square root
