@@ -214,7 +214,7 @@ module brachistochrone_central_force
         real(xp), allocatable :: whole_xp(:, :, :)
         !> the five whole tables and the five far tables in parts of the hardware kind
         !! (`split_tables`, `table_value`)
-        type(table_parts) :: whole_parts, far_parts
+        type(table_parts) :: whole_parts, far_parts, deep_parts
     contains
         procedure :: half_arch => general_half_arch    !! theta, s, t at r (eqs. 27-41)
         procedure :: apse_angle => general_apse_angle  !! Theta(R,R)
@@ -444,9 +444,8 @@ contains
         real(qp), intent(out) :: values(5)
         logical, intent(out) :: found
         integer, intent(in) :: wanted  !! how many of the five (1 .. 5)
-        real(qp) :: z, t
-        real(xp) :: t_pair(2)
-        integer :: piece, m
+        real(qp) :: z
+        integer :: piece
         values = 0.0_qp
         found = .false.
         if (big_lambda > table_high) then
@@ -459,10 +458,7 @@ contains
                     log(table_low))*real(table_pieces, qp)) + 1))
         if (.not. model%whole_ok(piece)) return
         ! (the five tables share their pieces: t once)
-        call whole_point(model%whole(1), z, piece, t, t_pair)
-        do m = 1, wanted
-            call whole_value(model, m, piece, t, t_pair, values(m))
-        end do
+        call tables_at(model%whole, model%whole_parts, z, wanted, values)
         found = .true.
     end subroutine whole_lookup
 
@@ -535,17 +531,7 @@ contains
     !> Table m at t on `piece` (`whole_point`): the powers of t from the split on in
     !! hardware precision, the rest in pairs of it (`pair_horner`, where `pair_ok`) or in
     !! quad precision; the slopes (m = 4, 5) from their logarithms (`table_parts`).
-    pure subroutine whole_value(model, m, piece, t, t_pair, value)
-        type(central_force_model), intent(in) :: model
-        integer, intent(in) :: m, piece
-        real(qp), intent(in) :: t
-        real(xp), intent(in) :: t_pair(2)
-        real(qp), intent(out) :: value
-        call table_value(model%whole(m), model%whole_parts, m, piece, t, t_pair, value)
-    end subroutine whole_value
-
-    !> `whole_value` for either set of tables (`table`: the m-th of the set `parts` is
-    !! made from).
+    !! (`table`: the m-th of the set `parts` is made from: whole-half-arch, far or deep).
     pure subroutine table_value(table, parts, m, piece, t, t_pair, value)
         type(chebyshev_table), intent(in) :: table
         type(table_parts), intent(in) :: parts
@@ -680,27 +666,18 @@ contains
         integer, intent(in) :: piece
         logical, intent(in) :: far
         logical :: agrees
-        real(qp) :: z, direct(5), table(5), t
-        real(xp) :: t_pair(2)
-        integer :: side, m, at
+        real(qp) :: z, direct(5), table(5)
+        integer :: side
         agrees = .true.
         do side = 1, 2
             z = lower + width*(real(piece - 1, qp) + merge(0.3_qp, 0.71_qp, side == 1))
             direct = whole_direct(model, exp(z))
             if (far .and. z > log(far_high)) then
-                do m = 1, 5
-                    call deep_value(model, m, z, table(m))
-                end do
+                call tables_at(model%deep, model%deep_parts, z, 5, table)
             else if (far) then
-                call whole_point(model%far(1), z, at, t, t_pair)
-                do m = 1, 5
-                    call table_value(model%far(m), model%far_parts, m, at, t, t_pair, table(m))
-                end do
+                call tables_at(model%far, model%far_parts, z, 5, table)
             else
-                call whole_point(model%whole(1), z, at, t, t_pair)
-                do m = 1, 5
-                    call whole_value(model, m, at, t, t_pair, table(m))
-                end do
+                call tables_at(model%whole, model%whole_parts, z, 5, table)
             end if
             agrees = table_agrees(model, z, direct, table) .and. agrees
         end do
@@ -743,9 +720,7 @@ contains
         real(qp), intent(out) :: values(5)
         logical, intent(out) :: found
         integer, intent(in) :: wanted
-        real(qp) :: z, t
-        real(xp) :: t_pair(2)
-        integer :: m, piece
+        real(qp) :: z
         if (big_lambda > far_high) then
             call deep_lookup(model, big_lambda, values, found, wanted)
             return
@@ -754,11 +729,25 @@ contains
         z = fast_log(big_lambda)
         found = far_piece(model, z) > 0
         if (.not. found) return
-        call whole_point(model%far(1), z, piece, t, t_pair)
-        do m = 1, wanted
-            call table_value(model%far(m), model%far_parts, m, piece, t, t_pair, values(m))
-        end do
+        call tables_at(model%far, model%far_parts, z, wanted, values)
     end subroutine far_lookup
+
+    !> The first `wanted` of five tables on the same pieces (whole-half-arch, far or deep)
+    !! at z = log Lambda (`whole_point`, `table_value`).
+    pure subroutine tables_at(tables, parts, z, wanted, values)
+        type(chebyshev_table), intent(in) :: tables(5)
+        type(table_parts), intent(in) :: parts   !! `split_tables(tables, ...)`
+        real(qp), intent(in) :: z
+        integer, intent(in) :: wanted
+        real(qp), intent(inout) :: values(5)
+        real(qp) :: t
+        real(xp) :: t_pair(2)
+        integer :: m, piece
+        call whole_point(tables(1), z, piece, t, t_pair)
+        do m = 1, wanted
+            call table_value(tables(m), parts, m, piece, t, t_pair, values(m))
+        end do
+    end subroutine tables_at
 
 
     !> `whole_lookup_xp` beyond the tables (the far tables' hardware copies).
@@ -813,6 +802,7 @@ contains
         end do
         values(:, :, 4:5) = log(values(:, :, 4:5))
         model%deep = fit_tables(lower, upper, values)
+        model%deep_parts = split_tables(model%deep, values)
         model%deep_xp = [hardware_copy(model%deep(1)), hardware_copy(model%deep(4))]
         width = (upper - lower)/real(deep_pieces, qp)
         do piece = 1, deep_pieces
@@ -840,30 +830,12 @@ contains
         logical, intent(out) :: found
         integer, intent(in) :: wanted
         real(qp) :: z
-        integer :: m
         values = 0.0_qp
-        z = log(big_lambda)
+        z = fast_log(big_lambda)
         found = deep_found(model, z)
         if (.not. found) return
-        do m = 1, wanted
-            call deep_value(model, m, z, values(m))
-        end do
+        call tables_at(model%deep, model%deep_parts, z, wanted, values)
     end subroutine deep_lookup
-
-    !> Deep table m at z; the slopes (m = 4, 5) from their logarithms (as `table_value`).
-    pure subroutine deep_value(model, m, z, value)
-        type(central_force_model), intent(in) :: model
-        integer, intent(in) :: m
-        real(qp), intent(in) :: z
-        real(qp), intent(out) :: value
-        real(xp) :: high, low
-        call model%deep(m)%evaluate(z, value)
-        if (m > 3) then
-            high = real(value, xp)
-            low = real(value - real(high, qp), xp)
-            value = real(exp(high)*(1.0_xp + low), qp)
-        end if
-    end subroutine deep_value
 
     !> `whole_lookup_xp` beyond the far tables (the deep tables' hardware copies).
     pure subroutine deep_lookup_xp(model, big_lambda, values, found)
