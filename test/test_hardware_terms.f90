@@ -40,7 +40,7 @@ contains
         real(qp), parameter :: fractions(7) = [1.0e-6_qp, 0.01_qp, 0.3_qp, 0.5_qp, 0.9_qp, &
                                                0.999_qp, 0.999999_qp]
         real(qp), parameter :: shifts(2) = [0.0_qp, 37.5_qp]
-        real(xp) :: c(6), big_x, lambda_x, delta_x, shift_x, g, omq, slope, g_p(1), h_p(1)
+        real(xp) :: c(5), big_x, lambda_x, delta_x, shift_x, g, omq, slope, g_p(1), h_p(1)
         real(qp) :: big, lambda, delta, q, omq_ref, g_ref, slope_ref, unit, worst(5)
         integer :: i, j, s, mode
         logical :: rough

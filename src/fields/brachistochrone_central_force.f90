@@ -239,7 +239,7 @@ module brachistochrone_central_force
         real(qp) :: c(8) = 0.0_qp
         real(qp) :: lambda_r = 0.0_qp, delta_r = 0.0_qp
         real(qp) :: weight_below = 0.0_qp, weight_above = 1.0_qp
-        real(xp) :: cx(6) = 0.0_xp    !! the law's constants in hardware precision
+        real(xp) :: cx(5) = 0.0_xp    !! the law's constants in hardware precision
         !> Theta of a first half-arch where known beforehand (psi: the two-point problem's
         !! target), else 0: picks the panels of the early phase (`theta_xp`)
         real(qp) :: angle_hint = 0.0_qp

@@ -1602,7 +1602,7 @@ contains
     pure function default_apse_constants_xp(self, big_lambda) result(c)
         class(speed_law), intent(in) :: self
         real(xp), intent(in) :: big_lambda  !! -log R
-        real(xp) :: c(6)
+        real(xp) :: c(5)
         c = 0.0_xp
     end function default_apse_constants_xp
 
@@ -1610,7 +1610,7 @@ contains
     pure subroutine default_theta_terms_xp(self, c, lambda, delta, shift, rough, g, &
                                            one_minus_q, log_slope, exp_shift)
         class(speed_law), intent(in) :: self
-        real(xp), intent(in) :: c(6)                 !! from apse_constants_xp
+        real(xp), intent(in) :: c(5)                 !! from apse_constants_xp
         real(xp), intent(in) :: lambda, delta        !! offsets from the apse and the start
         real(xp), intent(in) :: shift                !! log of the scale factor of g
         logical, intent(in) :: rough                 !! transcendentals in double precision
@@ -1630,7 +1630,7 @@ contains
     pure subroutine default_panel_terms_xp(self, c, lambda, delta, shift, rough, exp_shift, &
                                            g, h)
         class(speed_law), intent(in) :: self
-        real(xp), intent(in) :: c(6)                 !! from apse_constants_xp
+        real(xp), intent(in) :: c(5)                 !! from apse_constants_xp
         real(xp), intent(in) :: lambda(:), delta(:)  !! the nodes' offsets (`theta_terms_xp`)
         real(xp), intent(in) :: shift                !! log of the scale factor of g
         logical, intent(in) :: rough                 !! transcendentals in double precision
@@ -1777,16 +1777,15 @@ contains
         end if
     end function scaled_exp
 
-    !> Power law: [Lambda, E(Lambda), a, exp(-a Lambda), 1/E(Lambda), a/(2 E(Lambda))].
+    !> Power law: [Lambda, E(Lambda), a, exp(-a Lambda), a/(2 E(Lambda))].
     pure function power_apse_constants_xp(self, big_lambda) result(c)
         class(power_law), intent(in) :: self
         real(xp), intent(in) :: big_lambda
-        real(xp) :: c(6), a
+        real(xp) :: c(5), a
         a = real(self%n - 1.0_qp, xp)
-        c = [big_lambda, 0.0_xp, a, 0.0_xp, 0.0_xp, 0.0_xp]
+        c = [big_lambda, 0.0_xp, a, 0.0_xp, 0.0_xp]
         call exp_and_decay_xp(a*big_lambda, c(4), c(2), .false.)
-        c(5) = 1.0_xp/c(2)
-        c(6) = 0.5_xp*a*c(5)
+        c(5) = 0.5_xp*a*(1.0_xp/c(2))
     end function power_apse_constants_xp
 
     !> Power law: q = exp(-(a+2) lambda) E(delta)/E(Lambda), 1 - q = (1 - exp(-2 lambda))
@@ -1799,7 +1798,7 @@ contains
     pure subroutine power_theta_terms_xp(self, c, lambda, delta, shift, rough, g, &
                                          one_minus_q, log_slope, exp_shift)
         class(power_law), intent(in) :: self
-        real(xp), intent(in) :: c(6), lambda, delta, shift
+        real(xp), intent(in) :: c(5), lambda, delta, shift
         logical, intent(in) :: rough
         real(xp), intent(out) :: g, one_minus_q, log_slope
         real(xp), intent(in), optional :: exp_shift
@@ -1822,7 +1821,7 @@ contains
     pure subroutine power_panel_terms_xp(self, c, lambda, delta, shift, rough, exp_shift, &
                                          g, h)
         class(power_law), intent(in) :: self
-        real(xp), intent(in) :: c(6), lambda(:), delta(:), shift, exp_shift
+        real(xp), intent(in) :: c(5), lambda(:), delta(:), shift, exp_shift
         logical, intent(in) :: rough
         real(xp), intent(out) :: g(:), h(:)
         real(xp) :: top, rate, one_minus_q, log_slope
@@ -1848,14 +1847,14 @@ contains
     !! g's last bits), h = a E(lambda) exp(-a delta)/(2 E(Lambda) E(delta) P), P = 1 - q,
     !! with one division where the slope and its 1/P took two.
     pure subroutine power_node_xp(c, lambda, delta, rough, exp_shift, g, h)
-        real(xp), intent(in) :: c(6), lambda, delta, exp_shift
+        real(xp), intent(in) :: c(5), lambda, delta, exp_shift
         logical, intent(in) :: rough
         real(xp), intent(out) :: g, h
         real(xp) :: e2, om2, ea, e_lambda, ead, e_delta, one_minus_q
         call power_exps_xp(c, lambda, delta, rough, e2, om2, ea, e_lambda, ead, e_delta, &
                            one_minus_q)
         g = sqrt(e_delta/(one_minus_q*c(2)))*(exp_shift*sqrt(e2*ea))
-        h = c(6)*e_lambda*ead/(e_delta*one_minus_q)
+        h = c(5)*e_lambda*ead/(e_delta*one_minus_q)
     end subroutine power_node_xp
 
     !> exp(-2 lambda) = e2, 1 - it = om2, exp(-a lambda) = ea, E(lambda) = e_lambda,
@@ -1864,7 +1863,7 @@ contains
     !! sector's edge, see `power_node_xp`).
     pure subroutine power_exps_xp(c, lambda, delta, rough, e2, om2, ea, e_lambda, ead, &
                                   e_delta, one_minus_q)
-        real(xp), intent(in) :: c(6), lambda, delta
+        real(xp), intent(in) :: c(5), lambda, delta
         logical, intent(in) :: rough
         real(xp), intent(out) :: e2, om2, ea, e_lambda, ead, e_delta, one_minus_q
         logical :: known  ! E(delta) at hand
@@ -1917,12 +1916,12 @@ contains
         one_minus_q = om2 + e2*e_lambda/c(2)
     end subroutine power_exps_xp
 
-    !> Logarithmic law: [Lambda, 0, 0, 0, 0, 0].
+    !> Logarithmic law: [Lambda, 0, 0, 0, 0].
     pure function logarithmic_apse_constants_xp(self, big_lambda) result(c)
         class(logarithmic_law), intent(in) :: self
         real(xp), intent(in) :: big_lambda
-        real(xp) :: c(6)
-        c = [big_lambda, 0.0_xp, 0.0_xp, 0.0_xp, 0.0_xp, 0.0_xp]
+        real(xp) :: c(5)
+        c = [big_lambda, 0.0_xp, 0.0_xp, 0.0_xp, 0.0_xp]
     end function logarithmic_apse_constants_xp
 
     !> Logarithmic law: q = exp(-2 lambda) delta/Lambda, 1 - q = (1 - exp(-2 lambda)) +
@@ -1930,7 +1929,7 @@ contains
     pure subroutine logarithmic_theta_terms_xp(self, c, lambda, delta, shift, rough, g, &
                                                one_minus_q, log_slope, exp_shift)
         class(logarithmic_law), intent(in) :: self
-        real(xp), intent(in) :: c(6), lambda, delta, shift
+        real(xp), intent(in) :: c(5), lambda, delta, shift
         logical, intent(in) :: rough
         real(xp), intent(out) :: g, one_minus_q, log_slope
         real(xp), intent(in), optional :: exp_shift
@@ -1949,12 +1948,12 @@ contains
         harmonic_has_terms_xp = .true.
     end function harmonic_has_terms_xp
 
-    !> Harmonic law: [Lambda, 1 - R^2, 0, 0, 0, 0].
+    !> Harmonic law: [Lambda, 1 - R^2, 0, 0, 0].
     pure function harmonic_apse_constants_xp(self, big_lambda) result(c)
         class(harmonic_law), intent(in) :: self
         real(xp), intent(in) :: big_lambda
-        real(xp) :: c(6), e
-        c = [big_lambda, 0.0_xp, 0.0_xp, 0.0_xp, 0.0_xp, 0.0_xp]
+        real(xp) :: c(5), e
+        c = [big_lambda, 0.0_xp, 0.0_xp, 0.0_xp, 0.0_xp]
         call exp_and_decay_xp(2.0_xp*big_lambda, e, c(2), .false.)
     end function harmonic_apse_constants_xp
 
@@ -1963,7 +1962,7 @@ contains
     pure subroutine harmonic_theta_terms_xp(self, c, lambda, delta, shift, rough, g, &
                                             one_minus_q, log_slope, exp_shift)
         class(harmonic_law), intent(in) :: self
-        real(xp), intent(in) :: c(6), lambda, delta, shift
+        real(xp), intent(in) :: c(5), lambda, delta, shift
         logical, intent(in) :: rough
         real(xp), intent(out) :: g, one_minus_q, log_slope
         real(xp), intent(in), optional :: exp_shift
