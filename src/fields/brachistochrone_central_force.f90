@@ -219,6 +219,7 @@ module brachistochrone_central_force
         procedure :: half_arch => general_half_arch    !! theta, s, t at r (eqs. 27-41)
         procedure :: apse_angle => general_apse_angle  !! Theta(R,R)
         procedure :: fall_time => general_fall_time    !! radial fall time from 1 to r
+        procedure :: angle_slopes => general_angle_slopes  !! d theta/d Lambda, error bounds
         procedure :: solve => general_solve            !! the two-point problem
     end type central_force_model
 
@@ -2214,6 +2215,34 @@ contains
         call arch_values(self, a, r - big_r, 1.0_qp - r, second, &
                          fall_piece(self, 0.0_qp, a%delta_r), angle, length, time)
     end subroutine general_half_arch
+
+    !> d theta/d Lambda at fixed r (Lambda = -log R) on the first (or second) half-arch
+    !! with apse R as the certified steps take it (`final_step`): in hardware precision
+    !! with the bound on its error (`arch_values`), and with the endpoint's terms from
+    !! binary128 (`sharp_jump`): values = [slope, bound, sharp slope, its bound]; zeros
+    !! for a law without hardware-precision terms. For tests of the bounds.
+    pure subroutine general_angle_slopes(self, r, big_r, second, values, status)
+        class(central_force_model), intent(in) :: self
+        real(qp), intent(in) :: r        !! radius, R <= r <= 1
+        real(qp), intent(in) :: big_r    !! apse radius, 0 < R < 1
+        logical, intent(in) :: second    !! second half-arch: 2 F(R,R) - F(r,R)
+        real(qp), intent(out) :: values(4)
+        integer, intent(out) :: status   !! status_ok or the reason
+        type(arch_setup) :: a
+        real(qp) :: angle, length, time
+        real(xp) :: slopes(4), parts(4), sharp(4)
+        values = 0.0_qp
+        status = argument_status([r, big_r], big_r > 0.0_qp .and. big_r < 1.0_qp .and. &
+                                             r >= big_r .and. r <= 1.0_qp)
+        if (status /= status_ok .or. .not. self%law%has_terms_xp()) return
+        a = setup_arch(self, big_r, 1.0_qp - big_r, r - big_r, minus_log(r, 1.0_qp - r), &
+                       second, .false.)
+        call arch_values(self, a, r - big_r, 1.0_qp - r, second, &
+                         fall_piece(self, 0.0_qp, a%delta_r), angle, length, time, slopes, &
+                         parts=parts)
+        call sharp_jump(self, a, r - big_r, parts, sharp)
+        values = real([slopes(1), slopes(3), sharp(1), sharp(3)], qp)
+    end subroutine general_angle_slopes
 
     !> -log r, from 1 - r where r is near 1.
     elemental function minus_log(r, one_minus_r) result(delta)
