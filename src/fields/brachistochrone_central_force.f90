@@ -66,8 +66,10 @@
 !! 20-digit rules, to within the rounding of the hardware kind. Then one full-precision
 !! evaluation of Theta, S and T with their slopes in hardware precision (`final_step`):
 !! a Newton step of relative size about 1e-18, certified when its curvature and slope
-!! errors are below 1e-35 of the unknown (otherwise the next step from there; secant
-!! steps as the last resort), s corrected along its slope and t by Hamilton-Jacobi
+!! errors are below 1e-35 of the unknown (where only the bound of the slopes' endpoint
+!! terms in hardware precision stands in the way, those terms from binary128 and the
+!! step again: `sharp_jump`; otherwise the next step from there; secant steps as the
+!! last resort), s corrected along its slope and t by Hamilton-Jacobi
 !! (dt/dpsi = K at fixed rho). B within 1e-16 of its apse angle (below what the early
 !! phase resolves) starts from the slope next to u = 0 instead (`apse_start`). psi within
 !! 1e-10 of the sector's edge (below what the early phase resolves of limit - Upsilon):
