@@ -2161,11 +2161,12 @@ contains
     !> The slopes of `arch_values` (`parts`: the four without the endpoint's terms) with
     !! the endpoint's jump terms g, h (the Theta and S integrands at lambda_r times the
     !! jump of the weights) from the law's binary128 terms at the exact lambda_r, delta_r
-    !! (one node, about 1% of a full evaluation: only where the certification of
+    !! (one node of the 25-40 of a full evaluation: only where the certification of
     !! `final_step` fails by their error bound). `arch_values` takes g, h in hardware
     !! precision at lambda_r, delta_r rounded to it, where exp(-a delta), exp(-a Lambda)
     !! with arguments up to a Lambda make their error bound grow like Lambda times the
-    !! decay rate (on the engine-timing grid, n = 32, 130 roundings at Lambda = 1.6).
+    !! decay rate (n = 32, Lambda = 1.6: 85 eps_xp |g|, where the errors measured are
+    !! about eps_xp/2, `test_slope_bounds`).
     !! Here g = sqrt(q)/sqrt(1 - q) and h = (1 + d/R) q/(sqrt(1 - q) (1 + sqrt(1 - q)))
     !! in binary128 from the quadrature's own q, 1 - q, sqrt(q) (each within a few
     !! binary128 roundings, below 1e-30 of themselves: a positive sum, and differences
@@ -2173,7 +2174,8 @@ contains
     !! themselves, each rounded once to hardware precision; with the rounding of the sum
     !! it enters (below the rounding of |jump g| plus that of the other part, which
     !! `error magnitude` bounds as in `arch_values`) and, for h, that of R and of R h:
-    !! at most four roundings, 3 eps_xp |g| (and R |h|, six) bound their errors.
+    !! at most four roundings (of eps_xp/2 each): 3 eps_xp |g| and 3 eps_xp R |h| (six
+    !! roundings) bound their errors.
     pure subroutine sharp_jump(model, a, d, parts, slopes)
         type(central_force_model), intent(in) :: model
         type(arch_setup), intent(in) :: a
@@ -3242,11 +3244,10 @@ contains
             error = curve*dx*dx + abs(dx)*(real(slopes(3)/abs(slopes(1)), qp) + noise)
             if (.not. prob%use_u) slope_next = slope_next/x0
             ! not certified, but within the bounds without the endpoint's terms g, h in
-            ! hardware precision (`arch_values`): those from binary128 (`sharp_jump`, 1% of
-            ! an evaluation; the second certified step it saves, 30% of a solve), and the
-            ! step again
-            if (pass == 2 .or. (certified(error) .and. &
-                                moves_s(slopes(4)))) exit
+            ! hardware precision (`arch_values`): those from binary128 (`sharp_jump`, one
+            ! node of the 25-40 of an evaluation; the second certified step it saves is 30%
+            ! of a solve), and the step again
+            if (pass == 2 .or. (certified(error) .and. moves_s(slopes(4)))) exit
             if (.not. (certified(curve*dx*dx + &
                                  abs(dx)*(real(parts(3)/abs(slopes(1)), qp) + noise)) .and. &
                        moves_s(parts(4)))) exit
