@@ -2165,8 +2165,8 @@ contains
     !! `final_step` fails by their error bound). `arch_values` takes g, h in hardware
     !! precision at lambda_r, delta_r rounded to it, where exp(-a delta), exp(-a Lambda)
     !! with arguments up to a Lambda make their error bound grow like Lambda times the
-    !! decay rate (n = 32, Lambda = 1.6: 85 eps_xp |g|, where the errors measured are
-    !! about eps_xp/2, `test_slope_bounds`).
+    !! decay rate (n = 32, Lambda = 1.6: 85 eps_xp |g|; the error measured there, against
+    !! binary128 differences, about eps_xp |g|).
     !! Here g = sqrt(q)/sqrt(1 - q) and h = (1 + d/R) q/(sqrt(1 - q) (1 + sqrt(1 - q)))
     !! in binary128 from the quadrature's own q, 1 - q, sqrt(q) (each within a few
     !! binary128 roundings, below 1e-30 of themselves: a positive sum, and differences
