@@ -8,6 +8,7 @@ program test_main
     use test_format, only: run_format_tests
     use test_hardware_level, only: run_hardware_level_tests
     use test_hardware_terms, only: run_hardware_terms_tests
+    use test_slope_bounds, only: run_slope_bounds_tests
     use test_central_force, only: run_central_force_tests
     use test_sector_edge, only: run_sector_edge_tests
     use test_curves, only: run_curve_tests
@@ -28,6 +29,7 @@ program test_main
     call run_format_tests()
     call run_hardware_level_tests()
     call run_hardware_terms_tests()
+    call run_slope_bounds_tests()
     call run_physics_tests()
     call run_central_force_tests()
     call run_sector_edge_tests()

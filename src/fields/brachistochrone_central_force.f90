@@ -66,8 +66,10 @@
 !! 20-digit rules, to within the rounding of the hardware kind. Then one full-precision
 !! evaluation of Theta, S and T with their slopes in hardware precision (`final_step`):
 !! a Newton step of relative size about 1e-18, certified when its curvature and slope
-!! errors are below 1e-35 of the unknown (otherwise the next step from there; secant
-!! steps as the last resort), s corrected along its slope and t by Hamilton-Jacobi
+!! errors are below 1e-35 of the unknown (where only the bound of the slopes' endpoint
+!! terms in hardware precision stands in the way, those terms from binary128 and the
+!! step again: `sharp_jump`; otherwise the next step from there; secant steps as the
+!! last resort), s corrected along its slope and t by Hamilton-Jacobi
 !! (dt/dpsi = K at fixed rho). B within 1e-16 of its apse angle (below what the early
 !! phase resolves) starts from the slope next to u = 0 instead (`apse_start`). psi within
 !! 1e-10 of the sector's edge (below what the early phase resolves of limit - Upsilon):
@@ -219,6 +221,7 @@ module brachistochrone_central_force
         procedure :: half_arch => general_half_arch    !! theta, s, t at r (eqs. 27-41)
         procedure :: apse_angle => general_apse_angle  !! Theta(R,R)
         procedure :: fall_time => general_fall_time    !! radial fall time from 1 to r
+        procedure :: angle_slopes => general_angle_slopes  !! d theta/d Lambda, error bounds
         procedure :: solve => general_solve            !! the two-point problem
     end type central_force_model
 
@@ -2082,7 +2085,7 @@ contains
     !> Theta, S, T at the endpoint for the apse data `a` (first or second half-arch as
     !! the weights say); d = r - R exact, one_minus_r = 1 - r.
     pure subroutine arch_values(model, a, d, one_minus_r, second, fall_r, angle, length, &
-                                time, slopes, expected)
+                                time, slopes, expected, parts)
         type(central_force_model), intent(in) :: model
         type(arch_setup), intent(in) :: a
         real(qp), intent(in) :: d, one_minus_r
@@ -2093,6 +2096,8 @@ contains
         !! absolute errors (the law's hardware terms needed)
         real(xp), intent(out), optional :: slopes(4)
         real(qp), intent(in), optional :: expected  !! the angle where known (`table_sums`)
+        !> with slopes: the four without the endpoint's jump terms (`sharp_jump`)
+        real(xp), intent(out), optional :: parts(4)
         real(qp) :: sums(3), fall
         logical :: found
         real(xp) :: integral_slopes(2), g, omq, log_slope, root, h, jump, big_r, error
@@ -2125,6 +2130,13 @@ contains
                                                         a%big_lambda, xp))
             slopes(3) = error*magnitude(1) + error_jump*abs(g)
             slopes(4) = big_r*(error*(magnitude(2) + real(sums(2), xp)) + error_jump*abs(h))
+            if (present(parts)) then
+                parts(1) = integral_slopes(1)
+                parts(2) = big_r*(integral_slopes(2) - real(sums(2), xp))
+                if (second) parts(2) = parts(2) + 2.0_xp*big_r
+                parts(3) = error*magnitude(1)
+                parts(4) = big_r*error*(magnitude(2) + real(sums(2), xp))
+            end if
         else
             call table_sums(model, a, sums, expected=expected, fall_r=fall_r)
         end if
@@ -2146,6 +2158,47 @@ contains
         time = fall + a%big_r*sums(3)
     end subroutine arch_values
 
+    !> The slopes of `arch_values` (`parts`: the four without the endpoint's terms) with
+    !! the endpoint's jump terms g, h (the Theta and S integrands at lambda_r times the
+    !! jump of the weights) from the law's binary128 terms at the exact lambda_r, delta_r
+    !! (one node of the 25-40 of a full evaluation: only where the certification of
+    !! `final_step` fails by their error bound). `arch_values` takes g, h in hardware
+    !! precision at lambda_r, delta_r rounded to it, where exp(-a delta), exp(-a Lambda)
+    !! with arguments up to a Lambda make their error bound grow like Lambda times the
+    !! decay rate (n = 32, Lambda = 1.6: 85 eps_xp |g|; the error measured there, against
+    !! binary128 differences, about eps_xp |g|).
+    !! Here g = sqrt(q)/sqrt(1 - q) and h = (1 + d/R) q/(sqrt(1 - q) (1 + sqrt(1 - q)))
+    !! in binary128 from the quadrature's own q, 1 - q, sqrt(q) (each within a few
+    !! binary128 roundings, below 1e-30 of themselves: a positive sum, and differences
+    !! that lose at most two bits, `speed_law%arch_terms`) are within 2^-100 of
+    !! themselves, each rounded once to hardware precision; with the rounding of the sum
+    !! it enters (below the rounding of |jump g| plus that of the other part, which
+    !! `error magnitude` bounds as in `arch_values`) and, for h, that of R and of R h:
+    !! at most four roundings (of eps_xp/2 each): 3 eps_xp |g| and 3 eps_xp R |h| (six
+    !! roundings) bound their errors.
+    pure subroutine sharp_jump(model, a, d, parts, slopes)
+        type(central_force_model), intent(in) :: model
+        type(arch_setup), intent(in) :: a
+        real(qp), intent(in) :: d
+        real(xp), intent(in) :: parts(4)
+        real(xp), intent(out) :: slopes(4)
+        real(qp) :: q, omq, q_over_v, r_over_x, root_q, root_omq
+        real(xp) :: jump, g, h, big_r
+        slopes = parts
+        if (.not. (a%delta_r > 0.0_qp .and. a%lambda_r > 0.0_qp)) return
+        call model%law%arch_terms(a%c, a%lambda_r, a%delta_r, q, omq, q_over_v, r_over_x, &
+                                  root_q)
+        root_omq = fast_sqrt(omq)
+        g = hardware_real(root_q/root_omq)
+        h = hardware_real((1.0_qp + d/a%big_r)*q/(root_omq*(1.0_qp + root_omq)))
+        jump = real(a%weight_below - a%weight_above, xp)
+        big_r = real(a%big_r, xp)
+        slopes(1) = parts(1) + jump*g
+        slopes(2) = parts(2) + big_r*(jump*h)
+        slopes(3) = parts(3) + 3.0_xp*epsilon(1.0_xp)*abs(g)
+        slopes(4) = parts(4) + big_r*(3.0_xp*epsilon(1.0_xp)*abs(h))
+    end subroutine sharp_jump
+
     !> theta, s, t at radius r on the first (or second) half-arch with apse R.
     pure subroutine general_half_arch(self, r, big_r, second, angle, length, time, status)
         class(central_force_model), intent(in) :: self
@@ -2166,6 +2219,34 @@ contains
         call arch_values(self, a, r - big_r, 1.0_qp - r, second, &
                          fall_piece(self, 0.0_qp, a%delta_r), angle, length, time)
     end subroutine general_half_arch
+
+    !> d theta/d Lambda at fixed r (Lambda = -log R) on the first (or second) half-arch
+    !! with apse R as the certified steps take it (`final_step`): in hardware precision
+    !! with the bound on its error (`arch_values`), and with the endpoint's terms from
+    !! binary128 (`sharp_jump`): values = [slope, bound, sharp slope, its bound]; zeros
+    !! for a law without hardware-precision terms. For tests of the bounds.
+    pure subroutine general_angle_slopes(self, r, big_r, second, values, status)
+        class(central_force_model), intent(in) :: self
+        real(qp), intent(in) :: r        !! radius, R <= r <= 1
+        real(qp), intent(in) :: big_r    !! apse radius, 0 < R < 1
+        logical, intent(in) :: second    !! second half-arch: 2 F(R,R) - F(r,R)
+        real(qp), intent(out) :: values(4)
+        integer, intent(out) :: status   !! status_ok or the reason
+        type(arch_setup) :: a
+        real(qp) :: angle, length, time
+        real(xp) :: slopes(4), parts(4), sharp(4)
+        values = 0.0_qp
+        status = argument_status([r, big_r], big_r > 0.0_qp .and. big_r < 1.0_qp .and. &
+                                             r >= big_r .and. r <= 1.0_qp)
+        if (status /= status_ok .or. .not. self%law%has_terms_xp()) return
+        a = setup_arch(self, big_r, 1.0_qp - big_r, r - big_r, minus_log(r, 1.0_qp - r), &
+                       second, .false.)
+        call arch_values(self, a, r - big_r, 1.0_qp - r, second, &
+                         fall_piece(self, 0.0_qp, a%delta_r), angle, length, time, slopes, &
+                         parts=parts)
+        call sharp_jump(self, a, r - big_r, parts, sharp)
+        values = real([slopes(1), slopes(3), sharp(1), sharp(3)], qp)
+    end subroutine general_angle_slopes
 
     !> -log r, from 1 - r where r is near 1.
     elemental function minus_log(r, one_minus_r) result(delta)
@@ -3083,7 +3164,9 @@ contains
     !! quad phase's unknown, u or R): Upsilon, s, t at x0 with d Upsilon/dx and ds/dx in
     !! hardware precision; accepted (`done`) only if the step's own error (curvature dx^2
     !! and the slope's error times dx) is below 1e-35 of the unknown and the slope of s
-    !! moves s by less than a rounding; then s is corrected along its slope and t by
+    !! moves s by less than a rounding (where only the bound of the slopes' endpoint terms
+    !! in hardware precision stands in the way, those terms from binary128 and the step
+    !! again: `sharp_jump`); then s is corrected along its slope and t by
     !! Hamilton-Jacobi (t(x) = t(x0) + K (psi - Upsilon(x0))). Otherwise x_next, slope_next
     !! (the Newton point and the slope) for the secant steps of `quad_phase`.
     !! With `previous` (next to the sector's edge, the unknown R: `edge_steps`) the step is
@@ -3102,8 +3185,9 @@ contains
         real(qp), intent(in), optional :: previous(2)   !! y = log R and F'(y) before x0
         real(qp), intent(out), optional :: log_form(2)  !! F, F' at x0 (F = -huge: none)
         type(arch_setup) :: a
-        real(xp) :: slopes(4)
+        real(xp) :: slopes(4), parts(4)
         real(qp) :: d, angle, s, t, f, lambda_slope, dx, x, floor, curve, error, noise
+        integer :: pass
         logical :: edge
         done = .false.
         x_next = x0
@@ -3123,47 +3207,53 @@ contains
             curve = merge(2.0_qp*curvature, 10.0_qp, curvature > 0.0_qp)
         end if
         call arch_values(model, a, d, prob%one_minus_rho, prob%second, prob%fall_rho, &
-                         angle, s, t, slopes, prob%psi)
+                         angle, s, t, slopes, prob%psi, parts)
         solution%steps = solution%steps + 1
         f = angle - prob%psi
-        slope_next = real(slopes(1), qp)*lambda_slope
-        if (.not. (ieee_is_finite(slope_next) .and. slope_next /= 0.0_qp)) return
-        dx = -f/slope_next
-        noise = 0.0_qp
-        edge = present(previous) .and. present(log_form) .and. .not. prob%use_u
-        if (edge) then
-            call edge_newton(prob, x0, angle, slope_next, previous, dx, curve, noise, &
-                             log_form)
-            if (abs(f) <= 2.0_qp*eps_qp*prob%psi) then
-                ! x0 is R-bar as far as Upsilon's rounding places it
-                dx = 0.0_qp
-                curve = 0.0_qp
-                noise = 0.0_qp
-            else if (log_form(2) == 0.0_qp) then
+        do pass = 1, 2
+            slope_next = real(slopes(1), qp)*lambda_slope
+            if (.not. (ieee_is_finite(slope_next) .and. slope_next /= 0.0_qp)) return
+            dx = -f/slope_next
+            noise = 0.0_qp
+            edge = present(previous) .and. present(log_form) .and. .not. prob%use_u
+            if (edge) then
+                call edge_newton(prob, x0, angle, slope_next, previous, dx, curve, noise, &
+                                 log_form)
+                if (abs(f) <= 2.0_qp*eps_qp*prob%psi) then
+                    ! x0 is R-bar as far as Upsilon's rounding places it
+                    dx = 0.0_qp
+                    curve = 0.0_qp
+                    noise = 0.0_qp
+                else if (log_form(2) == 0.0_qp) then
+                    return
+                end if
+            end if
+            if (prob%use_u) then
+                x = x0 + dx
+            else
+                ! (Upsilon's curvature in log R is about 1/Lambda next to the sector's edge,
+                ! in R about 1/R: the Newton step in log R errs far less)
+                x = log_step(x0, dx)
+            end if
+            if (.not. (x > lo .and. x < hi)) then
+                if (prob%use_u .and. .not. prob%second) &
+                    x_next = ratio_form_point(prob, x0, angle, slope_next, lo, hi, x0)
                 return
             end if
-        end if
-        if (prob%use_u) then
-            x = x0 + dx
-        else
-            ! (Upsilon's curvature in log R is about 1/Lambda next to the sector's edge,
-            ! in R about 1/R: the Newton step in log R errs far less)
-            x = log_step(x0, dx)
-        end if
-        if (.not. (x > lo .and. x < hi)) then
-            if (prob%use_u .and. .not. prob%second) &
-                x_next = ratio_form_point(prob, x0, angle, slope_next, lo, hi, x0)
-            return
-        end if
-        x_next = x
-        error = curve*dx*dx + abs(dx)*(real(slopes(3)/abs(slopes(1)), qp) + noise)
-        ! below 1e-35 of the unknown (R: relative), or, for the unknown R (below rho/2),
-        ! moving Upsilon by less than 1e-35 psi (within the rounding of psi: R-bar's
-        ! conditioning, next to the edge of the sector) and s by less than 1e-35 of itself
-        if (.not. prob%use_u) slope_next = slope_next/x0
-        if (.not. (error <= 1.0e-35_qp*max(abs(x), floor) .or. (.not. prob%use_u .and. &
-                   error*abs(slope_next*x0) <= 1.0e-35_qp*prob%psi .and. &
-                   error*abs(real(slopes(2), qp)*lambda_slope) <= 1.0e-35_qp*abs(s)))) then
+            x_next = x
+            error = curve*dx*dx + abs(dx)*(real(slopes(3)/abs(slopes(1)), qp) + noise)
+            if (.not. prob%use_u) slope_next = slope_next/x0
+            ! not certified, but within the bounds without the endpoint's terms g, h in
+            ! hardware precision (`arch_values`): those from binary128 (`sharp_jump`, one
+            ! node of the 25-40 of an evaluation; the second certified step it saves is 30%
+            ! of a solve), and the step again
+            if (pass == 2 .or. (certified(error) .and. moves_s(slopes(4)))) exit
+            if (.not. (certified(curve*dx*dx + &
+                                 abs(dx)*(real(parts(3)/abs(slopes(1)), qp) + noise)) .and. &
+                       moves_s(parts(4)))) exit
+            call sharp_jump(model, a, d, parts, slopes)
+        end do
+        if (.not. certified(error)) then
             ! not certified: next to the sector's edge the next point by Newton on
             ! log(limit - Upsilon), nearly linear in log R there (`log_form_point`)
             if (.not. prob%use_u .and. prob%form == 2 .and. .not. edge) &
@@ -3175,7 +3265,7 @@ contains
                 x_next = ratio_form_point(prob, x0, angle, slope_next, lo, hi, x)
             return
         end if
-        if (.not. abs(dx*lambda_slope*real(slopes(4), qp)) <= eps_qp*abs(s)) return
+        if (.not. moves_s(slopes(4))) return
         ! (next to the edge the step in log R may be large: s along its slope errs by
         ! |s''| dx^2/2, s - s(R = 0) ~ R, |s''| about |s'| in log R)
         if (edge .and. .not. dx*dx*abs(real(slopes(2), qp)) <= 0.25_qp*eps_qp*abs(s)) return
@@ -3193,6 +3283,24 @@ contains
         solution%has_time = .true.
         solution%status = status_ok
         done = .true.
+    contains
+        !> The step's error bound below 1e-35 of the unknown (R: relative), or, for the
+        !! unknown R (below rho/2), moving Upsilon by less than 1e-35 psi (within the
+        !! rounding of psi: R-bar's conditioning, next to the edge of the sector) and s
+        !! by less than 1e-35 of itself.
+        pure logical function certified(bound)
+            real(qp), intent(in) :: bound
+            certified = bound <= 1.0e-35_qp*max(abs(x), floor) .or. (.not. prob%use_u .and. &
+                        bound*abs(slope_next*x0) <= 1.0e-35_qp*prob%psi .and. &
+                        bound*abs(real(slopes(2), qp)*lambda_slope) <= 1.0e-35_qp*abs(s))
+        end function certified
+
+        !> The error of s's slope (at most `error_bound`) times the step below a rounding
+        !! of s.
+        pure logical function moves_s(error_bound)
+            real(xp), intent(in) :: error_bound
+            moves_s = abs(dx*lambda_slope*real(error_bound, qp)) <= eps_qp*abs(s)
+        end function moves_s
     end subroutine final_step
 
     !> Newton's step dy on F = log((limit - Upsilon)/(limit - psi)) in y = log R at x0
