@@ -3,8 +3,9 @@
 !! real(y, qp) and real(x, xp), bit for bit, on every class of value.
 module test_fast_math
     use brachistochrone_kinds, only: qp, xp
-    use brachistochrone_fast_math, only: fast_sqrt, inverse_sqrt, quad_real, hardware_real
-    use, intrinsic :: iso_fortran_env, only: int64, int16
+    use brachistochrone_fast_math, only: fast_sqrt, inverse_sqrt, quad_real, hardware_real, &
+                                         double_real
+    use, intrinsic :: iso_fortran_env, only: int64, int16, real64
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_positive_inf, ieee_quiet_nan, &
                                              ieee_negative_inf, ieee_signaling_nan, &
                                              ieee_is_nan
@@ -23,6 +24,7 @@ contains
         call square_root_tests()
         call quad_real_tests()
         call hardware_real_special_tests()
+        call double_real_tests()
     end subroutine run_fast_math_tests
 
     !> A positive argument of the draw: every binade of binary128's normal range (random
@@ -210,6 +212,54 @@ contains
         end do
         call check(mismatches == 0, 'hardware_real = real(x, xp): subnormal, NaN, inf, -0')
     end subroutine hardware_real_special_tests
+
+    !> double_real = real(x, real64) bit for bit: random values of every binade of
+    !! binary128 (most out of double's range: overflow, subnormal and zero results),
+    !! rounding ties of both parities and their neighbours, all-ones fractions (carry into
+    !! the exponent, to infinity at the top), zeros, infinities, NaN.
+    subroutine double_real_tests()
+        integer(int64), parameter :: half = shiftl(1_int64, 59), low60 = shiftl(1_int64, 60) - 1
+        real(qp) :: u(3), x, specials(8)
+        integer(int64) :: bits(2)
+        integer :: i, mismatches
+        mismatches = 0
+        do i = 1, samples
+            call random_number(u)
+            x = (1.0_qp + u(1))*2.0_qp**int(2200.0_qp*(u(2) - 0.5_qp))
+            if (mod(i, 7) == 0) x = (1.0_qp + u(1))*2.0_qp**int(32760.0_qp*(u(2) - 0.5_qp))
+            if (u(3) < 0.3_qp) x = -x
+            bits = transfer(x, bits)
+            select case (mod(i, 6))
+            case (1) ! a tie
+                bits(1) = ior(iand(bits(1), not(low60)), half)
+            case (2) ! one below a tie
+                bits(1) = ior(iand(bits(1), not(low60)), half - 1_int64)
+            case (3) ! one above a tie
+                bits(1) = ior(iand(bits(1), not(low60)), half + 1_int64)
+            case (4) ! all ones
+                bits(1) = -1_int64
+                bits(2) = ior(bits(2), shiftl(1_int64, 48) - 1_int64)
+            end select
+            x = transfer(bits, x)
+            if (.not. same_double(double_real(x), real(x, real64))) mismatches = mismatches + 1
+        end do
+        call check(mismatches == 0, 'double_real = real(x, real64) on 200000 values')
+        specials = [0.0_qp, -0.0_qp, ieee_value(x, ieee_negative_inf), &
+                    ieee_value(x, ieee_quiet_nan), real(huge(1.0_real64), qp), &
+                    real(tiny(1.0_real64), qp)*(1.0_qp - epsilon(x)), tiny(x)/3, huge(x)]
+        mismatches = 0
+        do i = 1, size(specials)
+            if (.not. same_double(double_real(specials(i)), real(specials(i), real64))) &
+                mismatches = mismatches + 1
+        end do
+        call check(mismatches == 0, 'double_real = real(x, real64): zeros, inf, NaN, ends')
+    end subroutine double_real_tests
+
+    !> The same double bits.
+    pure logical function same_double(a, b)
+        real(real64), intent(in) :: a, b
+        same_double = transfer(a, 0_int64) == transfer(b, 0_int64)
+    end function same_double
 
     !> The x87 number of these bits.
     pure function x87_number(significand, sign_exponent) result(y)

@@ -29,7 +29,7 @@ module brachistochrone_fast_math
     implicit none
     private
 
-    public :: inverse_sqrt, hardware_real, fast_sqrt, quad_real
+    public :: inverse_sqrt, hardware_real, fast_sqrt, quad_real, double_real
 
     !> Widest hardware real kind below quad (x87 extended where available).
     integer, parameter :: seed_kind_candidate = selected_real_kind(18, 4931)
@@ -45,6 +45,9 @@ module brachistochrone_fast_math
     !! the bits is used only where they are binary128 and x87 extended.
     integer(int64), parameter :: quad_bits(2) = transfer(1.5_qp, [0_int64, 0_int64])
     integer(int64), parameter :: extended_bits(2) = transfer(1.5_xp, [0_int64, 0_int64])
+    !> binary128 stored as two little-endian 64-bit words (`double_real`'s condition).
+    logical, parameter :: quad_layout = quad_bits(1) == 0_int64 .and. &
+        quad_bits(2) == ishft(int(z'3FFF8', int64), 44)
     logical, parameter :: x87_layout = xp /= real64 .and. digits(1.0_xp) == 64 .and. &
         storage_size(1.0_xp) == 128 .and. quad_bits(1) == 0_int64 .and. &
         quad_bits(2) == ishft(int(z'3FFF8', int64), 44) .and. &
@@ -214,6 +217,29 @@ contains
         sign_exponent = sign_exponent + merge(1_int64, 0_int64, significand == 0_int64)
         y = extended_value(ior(significand, top_bit), sign_exponent)
     end function hardware_real
+
+    !> real(x, real64), the same bits, on the bits where the result is a normal double
+    !! (libgcc's __trunctfdf2 otherwise): the 112-bit fraction rounded to 52 (to nearest,
+    !! ties to even, without a branch), a carry stepping the exponent (to infinity past
+    !! the largest double), the exponent rebiased; no memory between the words and the
+    !! vector register.
+    elemental function double_real(x) result(d)
+        real(qp), intent(in) :: x !! any value
+        real(real64) :: d
+        integer(int64), parameter :: low60 = shiftl(1_int64, 60) - 1_int64, &
+                                     half_60 = shiftl(1_int64, 59)
+        integer(int64) :: low, high, exponent, round_up
+        call quad_parts(x, low, high)
+        exponent = iand(shiftr(high, 48), exponent_mask) - (16383_int64 - 1023_int64)
+        if (exponent < 1_int64 .or. exponent > 2046_int64 .or. .not. quad_layout) then
+            d = real(quad_words(low, high), real64)
+            return
+        end if
+        round_up = shiftr(iand(low, low60) + (half_60 - 1_int64) + &
+                          iand(shiftr(low, 60), 1_int64), 60)
+        d = transfer(ior(iand(high, top_bit), ior(shiftl(exponent, 52), &
+                         ior(shiftl(iand(high, low48), 4), shiftr(low, 60)))) + round_up, d)
+    end function double_real
 
     !> The significand (with its explicit leading bit) and the sign and biased exponent of
     !! an x87 extended y, read as the 8 and the 2 bytes the hardware store writes (a read
