@@ -564,9 +564,9 @@ contains
         end do
         if (m > 3) then
             ! (as above, from the binary128 logarithm)
-            high = real(value, xp)
-            low = real(value - real(high, qp), xp)
-            value = real(exp(high)*(1.0_xp + low), qp)
+            high = hardware_real(value)
+            low = hardware_real(value - quad_real(high))
+            value = quad_real(exp(high)*(1.0_xp + low))
         end if
     end subroutine table_value
 
@@ -2563,11 +2563,11 @@ contains
         type(arch_setup), intent(out) :: a
         real(xp), intent(out) :: lambda_slope
         real(xp) :: d, big_r, lambda_r, delta_r, big_lambda
-        delta_r = real(prob%delta_rho, xp)
+        delta_r = hardware_real(prob%delta_rho)
         if (prob%use_u) then
             ! R = rho - u^2 >= rho/2 >= r - R: lambda_r = log(1 + u^2/R)
             d = x*x
-            big_r = real(prob%rho, xp) - d
+            big_r = hardware_real(prob%rho) - d
             lambda_r = log1p_xp(d/big_r)
             big_lambda = delta_r + lambda_r
             lambda_slope = 2.0_xp*x/big_r
@@ -2576,8 +2576,8 @@ contains
             lambda_r = big_lambda - delta_r
             lambda_slope = -1.0_xp
         end if
-        a%big_lambda = real(big_lambda, qp)
-        a%lambda_r = real(lambda_r, qp)
+        a%big_lambda = quad_real(big_lambda)
+        a%lambda_r = quad_real(lambda_r)
         a%delta_r = prob%delta_rho
         a%weight_below = merge(2.0_qp, 0.0_qp, prob%second)
         a%weight_above = 1.0_qp
