@@ -7,6 +7,7 @@ program test_main
     use test_namelist, only: run_namelist_tests
     use test_format, only: run_format_tests
     use test_hardware_level, only: run_hardware_level_tests
+    use test_fast_math, only: run_fast_math_tests
     use test_hardware_terms, only: run_hardware_terms_tests
     use test_slope_bounds, only: run_slope_bounds_tests
     use test_central_force, only: run_central_force_tests
@@ -28,6 +29,7 @@ program test_main
     call run_namelist_tests()
     call run_format_tests()
     call run_hardware_level_tests()
+    call run_fast_math_tests()
     call run_hardware_terms_tests()
     call run_slope_bounds_tests()
     call run_physics_tests()

@@ -85,7 +85,7 @@ module brachistochrone_central_force
                                       status_not_finite, &
                                       status_no_convergence, argument_status, &
                                       status_parameter_out_of_range
-    use brachistochrone_fast_math, only: hardware_real, fast_sqrt, quad_real
+    use brachistochrone_fast_math, only: hardware_real, fast_sqrt, quad_real, double_real
     use brachistochrone_fast_exp, only: fast_exp, fast_expm1
     use brachistochrone_fast_log, only: fast_log, fast_log1p
     use brachistochrone_quadrature, only: gauss_legendre_rule, gauss_legendre
@@ -502,10 +502,10 @@ contains
                 end do
                 associate (a => tables(m)%power(0:used - 1, piece), &
                            split => parts%split(piece, m))
-                parts%tail_xp(0:used - 1, piece, m) = real(a, xp)
-                parts%pair_xp(0:used - 1, piece, m, 1) = real(a, xp)
+                parts%tail_xp(0:used - 1, piece, m) = hardware_real(a)
+                parts%pair_xp(0:used - 1, piece, m, 1) = hardware_real(a)
                 parts%pair_xp(0:used - 1, piece, m, 2) = &
-                    real(a - real(parts%pair_xp(0:used - 1, piece, m, 1), qp), xp)
+                    hardware_real(a - quad_real(parts%pair_xp(0:used - 1, piece, m, 1)))
                 parts%pair_ok(piece, m) = pair_kind .and. 12.0_qp*real(split + 1, qp)* &
                     2.0_qp**(-128)*sum(abs(a)) <= 2.0_qp**(-117)*least
                 end associate
@@ -567,9 +567,9 @@ contains
         end do
         if (m > 3) then
             ! (as above, from the binary128 logarithm)
-            high = real(value, xp)
-            low = real(value - real(high, qp), xp)
-            value = real(exp(high)*(1.0_xp + low), qp)
+            high = hardware_real(value)
+            low = hardware_real(value - quad_real(high))
+            value = quad_real(exp(high)*(1.0_xp + low))
         end if
     end subroutine table_value
 
@@ -1046,7 +1046,7 @@ contains
         type(panel) :: start_side(max_panels)
         integer :: n_start
         count = 0
-        x = real([a%big_lambda, a%lambda_r, a%delta_r], xp)
+        x = hardware_real([a%big_lambda, a%lambda_r, a%delta_r])
         call root_scales_xp(model, a, x, b, c)
         if (x(1) <= 0.125_xp*(b + c)) then
             ! a short arch (rare: R next to 1): `arch_panels`' one panel
@@ -1066,8 +1066,8 @@ contains
         longest = model%layout_xp(4)
         if (continued_root_xp(a, x, b, c)) then
             lo = min(meet, x(2) + longest)
-            call push(panels, count, panel(kind_apse_root, real(sqrt(x(2)/b), qp), &
-                      real(sqrt(lo/b), qp), real(b, qp), a%weight_above, 1.0_real64))
+            call push(panels, count, panel(kind_apse_root, quad_real(sqrt(x(2)/b)), &
+                      quad_real(sqrt(lo/b)), quad_real(b), a%weight_above, 1.0_real64))
         else
             call add_split_xp(panels, count, kind_apse_root, 0.0_xp, 1.0_xp, b, &
                               sqrt(x(2)/b), a)
@@ -1148,8 +1148,8 @@ contains
         integer, intent(in) :: kind
         real(xp), intent(in) :: lo, hi, scale, split
         type(arch_setup), intent(in) :: a
-        call add_split(panels, count, kind, real(lo, qp), real(hi, qp), real(scale, qp), &
-                       real(split, qp), a)
+        call add_split(panels, count, kind, quad_real(lo), quad_real(hi), quad_real(scale), &
+                       quad_real(split), a)
     end subroutine add_split_xp
 
     !> sqrt(z) for the root panels' splits, within an ulp: the hardware kind's square root
@@ -1270,10 +1270,10 @@ contains
         logical :: apse_side
         integer :: k
         reach = 35.0_real64*log(10.0_real64)
-        if (present(digits)) reach = real(max(digits, 2.0_qp), real64)*log(10.0_real64)
-        lo = real(p%lo, real64)
-        hi = real(p%hi, real64)
-        scale = real(p%scale, real64)
+        if (present(digits)) reach = double_real(max(digits, 2.0_qp))*log(10.0_real64)
+        lo = double_real(p%lo)
+        hi = double_real(p%hi)
+        scale = double_real(p%scale)
         kappa = model%decay64
         if (present(unweighted)) then
             if (unweighted) kappa = 0.0_real64
@@ -1285,7 +1285,7 @@ contains
         ! resolve)
         apse_side = p%kind <= kind_apse .or. p%kind == kind_full
         side = merge(1.0_real64, -1.0_real64, apse_side)
-        re = [0.0_real64, 0.0_real64, real(big_lambda, real64), real(big_lambda, real64), &
+        re = [0.0_real64, 0.0_real64, double_real(big_lambda), double_real(big_lambda), &
               0.0_real64]
         im = [0.0_real64, merge(model%sigma64(1), model%sigma64(2), apse_side), 0.0_real64, &
               merge(model%sigma64(2), model%sigma64(1), apse_side), 2.0_real64]
@@ -1460,7 +1460,7 @@ contains
         real(real64) :: growth
         real(real64) :: h, mid, most
         if (p%kind == kind_apse .or. p%kind == kind_start) then
-            growth = real(kappa*0.5_qp*(p%hi - p%lo), real64)
+            growth = double_real(kappa*0.5_qp*(p%hi - p%lo))
         else if (p%hi > 1.0_qp) then
             ! a root panel continued past s = 1: on the ellipse s = mid + h cos(z), Im z
             ! = l <= log_rho (cosh l <= most), the integrands' exponent kappa Re(lambda)
@@ -1468,14 +1468,14 @@ contains
             ! by at most (cosh l - 1) times the growth below (the apse side: scale h (2
             ! mid + h max(0, most - mid/h)), the second term where the ellipse passes
             ! s = 0; the start side: scale h (2 mid + h (1 + most)))
-            h = real(0.5_qp*(p%hi - p%lo), real64)
-            mid = real(0.5_qp*(p%hi + p%lo), real64)
+            h = double_real(0.5_qp*(p%hi - p%lo))
+            mid = double_real(0.5_qp*(p%hi + p%lo))
             most = cosh(p%log_rho)
             if (p%kind == kind_apse_root) then
-                growth = real(kappa*p%scale, real64)*h*(2.0_real64*mid + &
+                growth = double_real(kappa*p%scale)*h*(2.0_real64*mid + &
                          h*max(0.0_real64, most - mid/h))
             else
-                growth = real(kappa*p%scale, real64)*h*(2.0_real64*mid + h*(1.0_real64 + most))
+                growth = double_real(kappa*p%scale)*h*(2.0_real64*mid + h*(1.0_real64 + most))
             end if
         else
             growth = 0.0_real64
@@ -1699,7 +1699,7 @@ contains
         logical :: found, use_below
         ! whether the tables apply, and W for the choice, from Theta's table in hardware
         ! precision; the binary128 tables only where W enters the sums
-        call whole_lookup_xp(model, real(a%big_lambda, xp), whole_hw, found)
+        call whole_lookup_xp(model, hardware_real(a%big_lambda), whole_hw, found)
         found = found .and. a%weight_above == 1.0_qp .and. &
                 (a%weight_below == 0.0_qp .or. a%weight_below == 2.0_qp)
         if (.not. found) then
@@ -1710,7 +1710,7 @@ contains
                           n_above)
         use_below = n_below <= n_above
         if (present(expected) .and. a%weight_below == 0.0_qp) &
-            use_below = use_below .and. expected >= 0.5_qp*real(whole_hw(1), qp)
+            use_below = use_below .and. expected >= 0.5_qp*quad_real(whole_hw(1))
         whole = 0.0_qp
         if (use_below .or. a%weight_below == 2.0_qp) then
             ! the slopes' tables only for the slopes
@@ -1822,7 +1822,7 @@ contains
         fast = .false.
         if (present(hardware)) fast = hardware
         if (fast) then
-            x = real([a%big_lambda, a%lambda_r, a%delta_r], xp)
+            x = hardware_real([a%big_lambda, a%lambda_r, a%delta_r])
             call root_scales_xp(model, both, x, bx(1), cx(1))
             call root_scales_xp(model, below, x, bx(2), cx(2))
             call root_scales_xp(model, above, x, bx(3), cx(3))
@@ -1924,7 +1924,7 @@ contains
                           shares(2), group == 1)
             if (share < negligible .or. (group == 1 .and. want_length_time .and. &
                                          shares(2) == share)) cycle
-            wanted = digits + real(min(0.0_real64, log10(max(real(share, real64), &
+            wanted = digits + real(min(0.0_real64, log10(max(double_real(share), &
                                                              1.0e-60_real64))), qp)
             p%log_rho = bernstein_log(model, big_lambda, p, digits=wanted)
             j = max(j, rule_for(p%log_rho, wanted, panel_growth(p, real(group, qp)*pi/ &
@@ -1972,24 +1972,24 @@ contains
         call arch_panels_xp(model, a, panels, count)
         theta = 0.0_real64
         last = 0.0_real64
-        big = real(a%big_lambda, real64)
+        big = double_real(a%big_lambda)
         shift = 0.0_real64
-        if (a%weight_below == 0.0_qp) shift = real(pi/model%sigma_apse*a%lambda_r, real64)
+        if (a%weight_below == 0.0_qp) shift = double_real(pi/model%sigma_apse*a%lambda_r)
         do p = 1, count
             associate (pan => panels(p))
             share = 1.0_real64
             if (p > 1 .and. theta > 0.0_real64) then
-                share = 4.0_real64*real(panel_length(pan), real64)*last/theta
+                share = 4.0_real64*double_real(panel_length(pan))*last/theta
                 if (share < 1.0e-20_real64) cycle
             end if
             pan%log_rho = bernstein_log(model, a%big_lambda, pan)
             j = rule_for(pan%log_rho, coarse_digits + &
                          real(min(0.0_real64, log10(max(share, 1.0e-30_real64))), qp), &
                          panel_growth(pan, 2.0_qp*pi/model%sigma_apse))
-            scale = real(pan%scale, real64)
+            scale = double_real(pan%scale)
             part = 0.0_real64
             do k = 1, model%gauss(j)%n
-                v = real(pan%lo, real64) + real(pan%hi - pan%lo, real64)* &
+                v = double_real(pan%lo) + double_real(pan%hi - pan%lo)* &
                     model%gauss(j)%offset64(k)
                 select case (pan%kind)
                 case (kind_apse_root)
@@ -2018,7 +2018,7 @@ contains
                 if (k == merge(1, model%gauss(j)%n, pan%kind >= kind_start .and. &
                                pan%kind <= kind_start_root)) last = g
             end do
-            theta = theta + real(pan%weight, real64)*real(pan%hi - pan%lo, real64)*part
+            theta = theta + double_real(pan%weight)*double_real(pan%hi - pan%lo)*part
             end associate
         end do
     end subroutine theta64
@@ -2344,8 +2344,8 @@ contains
         real(real64) :: f, upsilon, psi, limit, scaled, shift
         call theta64(model, setup_at64(model, prob, x), scaled, shift)
         upsilon = scaled*exp(-shift)
-        psi = real(prob%psi, real64)
-        limit = real(prob%limit, real64)
+        psi = double_real(prob%psi)
+        limit = double_real(prob%limit)
         select case (prob%form)
         case (1)
             ! log(Upsilon/psi) without forming Upsilon or psi (both may underflow double;
@@ -2353,7 +2353,7 @@ contains
             if (prob%use_u) then
                 f = log(upsilon/psi)
             else
-                f = log(max(scaled, tiny(1.0_real64))) - shift - real(log(prob%psi), real64)
+                f = log(max(scaled, tiny(1.0_real64))) - shift - double_real(log(prob%psi))
             end if
         case (2)
             f = log(max(limit - upsilon, tiny(1.0_real64))/(limit - psi))
@@ -2422,8 +2422,8 @@ contains
         integer :: n_below, n_above
         logical :: found, use_below
         shift = 0.0_xp
-        if (a%weight_below == 0.0_qp) shift = real(pi/model%sigma_apse*a%lambda_r, xp)
-        call whole_lookup_xp(model, real(a%big_lambda, xp), whole, found)
+        if (a%weight_below == 0.0_qp) shift = hardware_real(pi/model%sigma_apse*a%lambda_r)
+        call whole_lookup_xp(model, hardware_real(a%big_lambda), whole, found)
         found = found .and. a%weight_above == 1.0_qp .and. &
                 (a%weight_below == 0.0_qp .or. a%weight_below == 2.0_qp)
         if (found) then
@@ -2434,7 +2434,7 @@ contains
             ! (the hardware-precision evaluations straight to int_lambda_r^Lambda where the
             ! check below is bound to fail)
             use_below = n_below <= n_above .and. &
-                        (rough .or. .not. above_first(a, real(whole(1), qp)))
+                        (rough .or. .not. above_first(a, quad_real(whole(1))))
             if (a%weight_below == 2.0_qp) then
                 w_sign = merge(1.0_xp, 2.0_xp, use_below)
                 p_sign = merge(1.0_xp, -1.0_xp, use_below)
@@ -2466,9 +2466,10 @@ contains
         end if
         if (a%weight_below /= a%weight_above .and. a%delta_r > 0.0_qp .and. &
             a%lambda_r > 0.0_qp) then
-            call model%law%theta_terms_xp(a%cx, real(a%lambda_r, xp), real(a%delta_r, xp), &
-                                          shift, rough, g, omq, log_slope)
-            slope = slope + real(a%weight_below - a%weight_above, xp)*g
+            call model%law%theta_terms_xp(a%cx, hardware_real(a%lambda_r), &
+                                          hardware_real(a%delta_r), shift, rough, g, omq, &
+                                          log_slope)
+            slope = slope + hardware_real(a%weight_below - a%weight_above)*g
         end if
     end subroutine theta_xp
 
@@ -2520,7 +2521,7 @@ contains
             end if
             pan%log_rho = bernstein_log(model, a%big_lambda, pan)
             j = rule_for(pan%log_rho, asked_digits(rough, digits) + &
-                         real(min(0.0_xp, log10(max(share, 1.0e-30_xp))), qp), &
+                         quad_real(min(0.0_xp, log10(max(share, 1.0e-30_xp)))), &
                          panel_growth(pan, 2.0_qp*pi/model%sigma_apse))
             ! the panel's nodes, the law's terms on all of them (one call), the sums
             n = model%gauss(j)%n
@@ -2643,11 +2644,11 @@ contains
         type(arch_setup), intent(out) :: a
         real(xp), intent(out) :: lambda_slope
         real(xp) :: d, big_r, lambda_r, delta_r, big_lambda
-        delta_r = real(prob%delta_rho, xp)
+        delta_r = hardware_real(prob%delta_rho)
         if (prob%use_u) then
             ! R = rho - u^2 >= rho/2 >= r - R: lambda_r = log(1 + u^2/R)
             d = x*x
-            big_r = real(prob%rho, xp) - d
+            big_r = hardware_real(prob%rho) - d
             lambda_r = log1p_xp(d/big_r)
             big_lambda = delta_r + lambda_r
             lambda_slope = 2.0_xp*x/big_r
@@ -2656,8 +2657,8 @@ contains
             lambda_r = big_lambda - delta_r
             lambda_slope = -1.0_xp
         end if
-        a%big_lambda = real(big_lambda, qp)
-        a%lambda_r = real(lambda_r, qp)
+        a%big_lambda = quad_real(big_lambda)
+        a%lambda_r = quad_real(lambda_r)
         a%delta_r = prob%delta_rho
         a%weight_below = merge(2.0_qp, 0.0_qp, prob%second)
         a%weight_above = 1.0_qp
@@ -2690,18 +2691,18 @@ contains
             upsilon = scaled*unscale
             if (prob%use_u .or. (upsilon >= tiny(1.0_xp) .and. (shift < 11000.0_xp .or. &
                                                                shift == 0.0_xp))) then
-                f = log(upsilon/real(prob%psi, xp))
+                f = log(upsilon/hardware_real(prob%psi))
             else
-                f = log(max(scaled, tiny(1.0_xp))) - shift - log(real(prob%psi, xp))
+                f = log(max(scaled, tiny(1.0_xp))) - shift - log(hardware_real(prob%psi))
             end if
             slope = scaled_slope/scaled*lambda_slope
         case (2)
             upsilon = scaled*unscale
-            limit = real(prob%limit, xp)
-            f = log(max(limit - upsilon, tiny(1.0_xp))/real(prob%limit - prob%psi, xp))
+            limit = hardware_real(prob%limit)
+            f = log(max(limit - upsilon, tiny(1.0_xp))/hardware_real(prob%limit - prob%psi))
             slope = -scaled_slope*unscale*lambda_slope/(limit - upsilon)
         case default
-            f = scaled*unscale - real(prob%psi, xp)
+            f = scaled*unscale - hardware_real(prob%psi)
             slope = scaled_slope*unscale*lambda_slope
         end select
     end subroutine residual_xp

@@ -1782,7 +1782,7 @@ contains
         class(power_law), intent(in) :: self
         real(xp), intent(in) :: big_lambda
         real(xp) :: c(5), a
-        a = real(self%n - 1.0_qp, xp)
+        a = hardware_real(self%n - 1.0_qp)
         c = [big_lambda, 0.0_xp, a, 0.0_xp, 0.0_xp]
         call exp_and_decay_xp(a*big_lambda, c(4), c(2), .false.)
         c(5) = 0.5_xp*a*(1.0_xp/c(2))
