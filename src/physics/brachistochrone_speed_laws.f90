@@ -113,6 +113,21 @@ module brachistochrone_speed_laws
 
     !> A speed law: v^2 and its divided difference. Attractive laws here: v > 0 for
     !! 0 < r < 1, v(1) = 0.
+    !> The exponents whose exp(-a lambda) follows from exp(-lambda) (`power_node_terms`).
+    integer, parameter :: exponent_general = 0, exponent_two = 1, exponent_one = 2, &
+                          exponent_half = 3
+
+    !> What the power law's node terms take of the apse constants c once per panel: the
+    !! slopes' constants in hardware precision and the branches that do not depend on the
+    !! node (binary128 comparisons are library calls: a dozen per node before).
+    type :: power_node_setup
+        real(xp) :: cx(2) = 0.0_xp     !! [a/E(Lambda), R^a] in hardware precision
+        integer :: exponent = exponent_general  !! a = 2, 1, 1/2 (exponent_*) or other
+        logical :: r_positive = .false.    !! R > 0
+        logical :: ra_positive = .false.   !! R^a > 0
+        real(qp) :: two_offset = 0.0_qp    !! 2 c(8): exp rather than expm1 of -a lambda
+    end type power_node_setup
+
     type, abstract :: speed_law
     contains
         procedure(scalar_law), deferred :: speed_squared   !! P(x) = v(x)^2
@@ -637,12 +652,20 @@ contains
     !! relative precision (lambda >= 0);
     !! where delta < lambda (nearer the start) exp(-lambda) = R exp(delta), since lambda =
     !! Lambda - delta carries an absolute rounding error of Lambda's size.
-    elemental subroutine exp_pair(lambda, delta, big_r, e1, om1, om2, e2)
+    elemental subroutine exp_pair(lambda, delta, big_r, e1, om1, om2, e2, from_start)
         real(qp), intent(in) :: lambda, delta, big_r
         real(qp), intent(out) :: e1, om1, om2, e2
+        !> delta < lambda and R > 0, where the caller knows it
+        logical, intent(in), optional :: from_start
         real(qp) :: em1
+        logical :: start
         if (lambda > 0.5_qp) then
-            if (delta < lambda .and. big_r > 0.0_qp) then
+            if (present(from_start)) then
+                start = from_start
+            else
+                start = delta < lambda .and. big_r > 0.0_qp
+            end if
+            if (start) then
                 e1 = big_r*fast_exp(delta)
             else
                 e1 = fast_exp(-lambda)
@@ -713,58 +736,93 @@ contains
         !> d(log q)/d Lambda at fixed lambda in hardware precision (laws with
         !! has_terms_xp; 0 otherwise)
         real(xp), intent(out), optional :: log_slope
-        call power_node_terms(c, power_slope_constants(c), lambda, delta, q, one_minus_q, &
+        call power_node_terms(c, power_node_constants(c), lambda, delta, q, one_minus_q, &
                               q_over_v, r_over_x, root_q, log_slope)
     end subroutine power_arch_terms
 
-    !> [a/E(Lambda), R^a] in hardware precision, for the slopes (`power_finish_terms`).
-    pure function power_slope_constants(c) result(cx)
+    !> `power_node_setup` of the apse constants c (`power_apse_constants`).
+    pure function power_node_constants(c) result(setup)
         real(qp), intent(in) :: c(8)
-        real(xp) :: cx(2)
-        cx = [hardware_real(c(3)*c(6)), hardware_real(c(4))]
-    end function power_slope_constants
+        type(power_node_setup) :: setup
+        setup%cx = [hardware_real(c(3)*c(6)), hardware_real(c(4))]
+        if (c(3) == 2.0_qp) then
+            setup%exponent = exponent_two
+        else if (c(3) == 1.0_qp) then
+            setup%exponent = exponent_one
+        else if (c(3) == 0.5_qp) then
+            setup%exponent = exponent_half
+        end if
+        setup%r_positive = c(5) > 0.0_qp
+        setup%ra_positive = c(4) > 0.0_qp
+        setup%two_offset = 2.0_qp*c(8)
+    end function power_node_constants
 
-    !> `power_arch_terms` at one node (cx: `power_slope_constants`).
-    pure subroutine power_node_terms(c, cx, lambda, delta, q, one_minus_q, q_over_v, &
+    !> `power_arch_terms` at one node (k: `power_node_constants`).
+    pure subroutine power_node_terms(c, setup, lambda, delta, q, one_minus_q, q_over_v, &
                                      r_over_x, root_q, log_slope)
         real(qp), intent(in) :: c(8), lambda, delta
-        real(xp), intent(in) :: cx(2)
+        type(power_node_setup), intent(in) :: setup
         real(qp), intent(out) :: q, one_minus_q, q_over_v, r_over_x, root_q
         real(xp), intent(out), optional :: log_slope
         real(qp) :: a, om1, om2, e1, e2, eam1, ea, e_delta
         logical :: known  ! E(delta) already at hand
+        logical :: nearer_start, small_delta  ! delta < lambda, a delta <= 1/4
         a = c(3)
         known = .false.
         e_delta = 0.0_qp
-        call exp_pair(lambda, delta, c(5), e1, om1, om2, e2)
-        if (a == 2.0_qp) then
+        nearer_start = delta < lambda
+        small_delta = delta <= c(8)
+        call exp_pair(lambda, delta, c(5), e1, om1, om2, e2, nearer_start .and. setup%r_positive)
+        select case (setup%exponent)
+        case (exponent_two)
             ! n = 3: exp(-a lambda) = exp(-2 lambda)
             ea = e2
             eam1 = -om2
-        else if (a == 1.0_qp) then
+        case (exponent_one)
             ! n = 2: exp(-a lambda) = exp(-lambda)
             ea = e1
             eam1 = -om1
-        else if (a == 0.5_qp) then
+        case (exponent_half)
             ! n = 1.5: exp(-lambda/2) = sqrt(exp(-lambda)), 1 - it = (1 - e1)/(1 + it)
             ea = root(e1)
             eam1 = -om1/(1.0_qp + ea)
-        else if (delta <= c(8) .and. delta < lambda .and. c(4) > 0.0_qp) then
+        case default
+            call general_exponent_terms(c, setup, lambda, delta, nearer_start, small_delta, ea, &
+                                        eam1, e_delta, known)
+        end select
+        call power_finish_terms(c, setup, lambda, delta, nearer_start, small_delta, e1, om2, e2, &
+                                ea, eam1, known, e_delta, q, one_minus_q, q_over_v, &
+                                r_over_x, root_q, log_slope)
+    end subroutine power_node_terms
+
+    !> exp(-a lambda) = ea, ea - 1 and, where it is at hand (`known`), E(delta) at one node
+    !! for an exponent a other than 2, 1, 1/2 (`power_node_terms`).
+    pure subroutine general_exponent_terms(c, setup, lambda, delta, nearer_start, small_delta, &
+                                           ea, eam1, e_delta, known)
+        real(qp), intent(in) :: c(8), lambda, delta
+        type(power_node_setup), intent(in) :: setup
+        logical, intent(in) :: nearer_start, small_delta  !! delta < lambda, delta <= c(8)
+        real(qp), intent(out) :: ea, eam1
+        real(qp), intent(inout) :: e_delta
+        logical, intent(inout) :: known
+        real(qp) :: a
+        a = c(3)
+        if (small_delta .and. nearer_start .and. setup%ra_positive) then
             ! nearer the start, a delta <= 1/4: E(delta) by expm1 (below) and from it
             ! exp(-a lambda) = R^a/(1 - E(delta)), E(lambda) = (E(Lambda) - E(delta))/
             ! (1 - E(delta)) (lambda >= Lambda/2: at most two bits cancel; one
             ! transcendental for the two)
             e_delta = decay(a, delta)
             known = .true.
-            if (lambda > 2.0_qp*c(8)) then
+            if (lambda > setup%two_offset) then
                 ea = c(4)/(1.0_qp - e_delta)
                 eam1 = ea - 1.0_qp
             else
                 eam1 = (e_delta - c(2))/(1.0_qp - e_delta)
                 ea = 1.0_qp + eam1
             end if
-        else if (lambda > 2.0_qp*c(8)) then
-            if (delta < lambda .and. c(4) > 0.0_qp) then
+        else if (lambda > setup%two_offset) then
+            if (nearer_start .and. setup%ra_positive) then
                 ! nearer the start: exp(-a lambda) = R^a exp(a delta), exact arguments
                 ea = c(4)*fast_exp(a*delta)
             else
@@ -775,19 +833,17 @@ contains
             eam1 = fast_expm1(-a*lambda)
             ea = 1.0_qp + eam1
         end if
-        call power_finish_terms(c, cx, lambda, delta, e1, om2, e2, ea, eam1, known, &
-                                e_delta, q, one_minus_q, q_over_v, r_over_x, root_q, &
-                                log_slope)
-    end subroutine power_node_terms
+    end subroutine general_exponent_terms
 
     !> `power_arch_terms` from exp(-lambda) = e1, 1 - exp(-2 lambda) = om2, e2 =
     !! exp(-2 lambda), ea = exp(-a lambda), eam1 = ea - 1 and, where known, E(delta)
-    !! (cx: `power_slope_constants`; the slope's factors converted on the bits).
-    pure subroutine power_finish_terms(c, cx, lambda, delta, e1, om2, e2, ea, eam1, known, &
-                                       e_delta, q, one_minus_q, q_over_v, r_over_x, root_q, &
-                                       log_slope)
+    !! (k: `power_node_constants`; the slope's factors converted on the bits).
+    pure subroutine power_finish_terms(c, setup, lambda, delta, nearer_start, small_delta, e1, &
+                                       om2, e2, ea, eam1, known, e_delta, q, one_minus_q, &
+                                       q_over_v, r_over_x, root_q, log_slope)
         real(qp), intent(in) :: c(8), lambda, delta, e1, om2, e2, ea, eam1
-        real(xp), intent(in) :: cx(2)
+        type(power_node_setup), intent(in) :: setup
+        logical, intent(in) :: nearer_start, small_delta  !! delta < lambda, delta <= c(8)
         logical, intent(in) :: known
         real(qp), intent(inout) :: e_delta
         real(qp), intent(out) :: q, one_minus_q, q_over_v, r_over_x, root_q
@@ -795,16 +851,16 @@ contains
         real(qp) :: a, ea_e_delta
         real(xp) :: ratio_xp, e_delta_xp
         a = c(3)
-        if (delta > c(8) .and. c(4) > 0.0_qp) then
+        if (.not. small_delta .and. setup%ra_positive) then
             ! exp(-a lambda) E(delta) = exp(-a lambda) - R^a (no division; E(delta) >=
             ! 1 - e^(-1/4): at most two bits cancel, as in 1 - R^a/exp(-a lambda))
             ea_e_delta = ea - c(4)
-            if (present(log_slope)) ratio_xp = cx(2)/hardware_real(ea_e_delta)
-        else if (lambda <= delta .and. c(4) > 0.0_qp) then
+            if (present(log_slope)) ratio_xp = setup%cx(2)/hardware_real(ea_e_delta)
+        else if (.not. nearer_start .and. setup%ra_positive) then
             ! nearer the apse, a delta <= 1/4: exp(-a lambda) E(delta) = E(Lambda) -
             ! E(lambda) (delta >= Lambda/2: at most two bits cancel; no expm1)
             ea_e_delta = c(2) + eam1
-            if (present(log_slope)) ratio_xp = cx(2)/hardware_real(ea_e_delta)
+            if (present(log_slope)) ratio_xp = setup%cx(2)/hardware_real(ea_e_delta)
         else
             if (.not. known) e_delta = decay(a, delta)
             ea_e_delta = ea*e_delta
@@ -812,7 +868,7 @@ contains
                 ! exp(-a delta)/E(delta) (1 - E(delta) in hardware precision where a delta
                 ! <= 1/4, as where c(4) > 0 here)
                 e_delta_xp = hardware_real(e_delta)
-                if (c(4) > 0.0_qp) then
+                if (setup%ra_positive) then
                     ratio_xp = (1.0_xp - e_delta_xp)/e_delta_xp
                 else
                     ratio_xp = hardware_real(1.0_qp - e_delta)/e_delta_xp
@@ -825,7 +881,7 @@ contains
         q_over_v = root_q*e1*c(7)
         r_over_x = e1
         ! a E(lambda) exp(-a delta)/(E(Lambda) E(delta)) (see power_theta_terms_xp)
-        if (present(log_slope)) log_slope = cx(1)*(-hardware_real(eam1))*ratio_xp
+        if (present(log_slope)) log_slope = setup%cx(1)*(-hardware_real(eam1))*ratio_xp
     end subroutine power_finish_terms
 
     !> `power_arch_terms` on one panel. Where the panel's variable v is lambda (side 1)
@@ -846,21 +902,21 @@ contains
         real(xp), intent(out), optional :: log_slope(:)
         real(qp), dimension(size(lambda)) :: e1, em1, ea, eam1, e_delta
         real(qp) :: a
-        real(xp) :: cx(2)
+        type(power_node_setup) :: setup
         integer :: k
         logical :: known
         a = c(3)
         known = .false.
         e_delta = 0.0_qp
-        cx = power_slope_constants(c)
+        setup = power_node_constants(c)
         if (.not. pair_terms_apply(c, side, lambda, delta)) then
             ! node by node (the root panels above all)
             do k = 1, size(lambda)
                 if (present(log_slope)) then
-                    call power_node_terms(c, cx, lambda(k), delta(k), q(k), one_minus_q(k), &
+                    call power_node_terms(c, setup, lambda(k), delta(k), q(k), one_minus_q(k), &
                                           q_over_v(k), r_over_x(k), root_q(k), log_slope(k))
                 else
-                    call power_node_terms(c, cx, lambda(k), delta(k), q(k), one_minus_q(k), &
+                    call power_node_terms(c, setup, lambda(k), delta(k), q(k), one_minus_q(k), &
                                           q_over_v(k), r_over_x(k), root_q(k))
                 end if
             end do
@@ -868,12 +924,12 @@ contains
         end if
         if (side == 1) then
             call pair_exps(-1.0_qp, mid, offset, e1, em1)
-            if (.not. special_exponent(a)) call pair_exps(-a, mid, offset, ea, eam1)
+            if (setup%exponent == exponent_general) call pair_exps(-a, mid, offset, ea, eam1)
         else
             call pair_exps(1.0_qp, mid, offset, e1, em1)
             e1 = c(5)*e1
             em1 = -(1.0_qp - e1)
-            if (.not. special_exponent(a)) then
+            if (setup%exponent == exponent_general) then
                 if (minval(delta) > c(8)) then
                     call pair_exps(a, mid, offset, ea, eam1)
                     ea = c(4)*ea
@@ -894,27 +950,29 @@ contains
                 end if
             end if
         end if
-        if (a == 2.0_qp) then
+        select case (setup%exponent)
+        case (exponent_two)
             ea = e1*e1
             eam1 = em1*(2.0_qp + em1)
-        else if (a == 1.0_qp) then
+        case (exponent_one)
             ea = e1
             eam1 = em1
-        else if (a == 0.5_qp) then
+        case (exponent_half)
             ea = root(e1)
             eam1 = em1/(1.0_qp + ea)
-        end if
+        end select
         do k = 1, size(lambda)
             if (present(log_slope)) then
-                call power_finish_terms(c, cx, lambda(k), delta(k), e1(k), &
-                                        -em1(k)*(2.0_qp + em1(k)), e1(k)*e1(k), ea(k), &
-                                        eam1(k), known, e_delta(k), q(k), one_minus_q(k), &
-                                        q_over_v(k), r_over_x(k), root_q(k), log_slope(k))
+                call power_finish_terms(c, setup, lambda(k), delta(k), delta(k) < lambda(k), &
+                                        delta(k) <= c(8), e1(k), -em1(k)*(2.0_qp + em1(k)), &
+                                        e1(k)*e1(k), ea(k), eam1(k), known, e_delta(k), q(k), &
+                                        one_minus_q(k), q_over_v(k), r_over_x(k), root_q(k), &
+                                        log_slope(k))
             else
-                call power_finish_terms(c, cx, lambda(k), delta(k), e1(k), &
-                                        -em1(k)*(2.0_qp + em1(k)), e1(k)*e1(k), ea(k), &
-                                        eam1(k), known, e_delta(k), q(k), one_minus_q(k), &
-                                        q_over_v(k), r_over_x(k), root_q(k))
+                call power_finish_terms(c, setup, lambda(k), delta(k), delta(k) < lambda(k), &
+                                        delta(k) <= c(8), e1(k), -em1(k)*(2.0_qp + em1(k)), &
+                                        e1(k)*e1(k), ea(k), eam1(k), known, e_delta(k), q(k), &
+                                        one_minus_q(k), q_over_v(k), r_over_x(k), root_q(k))
             end if
         end do
     end subroutine power_panel_terms
