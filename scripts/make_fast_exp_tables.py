@@ -11,7 +11,7 @@ lo = v - hi rounded to 64 bits (the pair within 2^-128 of v, relative):
   - e^m / 2^E(m), m = -128..127, with E(m) = floor(m / log 2) (the pair in [1, 2); E(m)
     as integers);
   - e^(j/256), j = 0..255;
-  - expm1(j/65536) and expm1(-j/65536), j = 0..255;
+  - expm1(j/65536), j = -255..255;
   - log 2 in three parts: 48 bits, 48 bits, 64 bits (k times each of the first two is exact
     for |k| < 2^15; the sum within 2^-161 of log 2).
 The literals have 22 significant digits: a 64-bit significand needs 21 to round-trip, and
@@ -89,8 +89,7 @@ def main(out):
         whole.append(v)
         exponents.append(e)
     steps = [mp.exp(mp.mpf(j) / 256) for j in range(256)]
-    fine_plus = [mp.expm1(mp.mpf(j) / 65536) for j in range(256)]
-    fine_minus = [mp.expm1(-mp.mpf(j) / 65536) for j in range(256)]
+    fine = [mp.expm1(mp.mpf(j) / 65536) for j in range(-255, 256)]
     ln2_1 = round_bits(ln2, 48)
     ln2_2 = round_bits(ln2 - ln2_1, 48)
     ln2_3 = round64(ln2 - ln2_1 - ln2_2)
@@ -117,7 +116,7 @@ module brachistochrone_fast_exp_tables
     implicit none
     private
 
-    public :: whole_exponent, whole_scaled, steps, fine_plus, fine_minus, ln2_parts
+    public :: whole_exponent, whole_scaled, steps, fine, ln2_parts
 
     !> log 2 = sum of the three (48, 48 and 64 bits)
     real(xp), parameter :: ln2_parts(3) = [ &
@@ -128,8 +127,7 @@ module brachistochrone_fast_exp_tables
 {chr(10).join(wrapped)}
 {table("whole_scaled", "e^m / 2^E(m) in [1, 2), m = -128..127", whole, -128)}
 {table("steps", "e^(j/256), j = 0..255", steps, 0)}
-{table("fine_plus", "expm1(j/65536), j = 0..255", fine_plus, 0)}
-{table("fine_minus", "expm1(-j/65536), j = 0..255", fine_minus, 0)}
+{table("fine", "expm1(j/65536), j = -255..255", fine, -255)}
 
 end module brachistochrone_fast_exp_tables
 """

@@ -18,8 +18,8 @@
 !! exponentials). Where `xp` is not x87 extended: the library's exp and expm1.
 module brachistochrone_fast_exp
     use brachistochrone_kinds, only: qp, xp
-    use brachistochrone_fast_exp_tables, only: whole_exponent, whole_scaled, steps, &
-                                               fine_plus, fine_minus, ln2_parts
+    use brachistochrone_fast_exp_tables, only: whole_exponent, whole_scaled, steps, fine, &
+                                               ln2_parts
     use brachistochrone_quad_math, only: expm1
     use, intrinsic :: iso_fortran_env, only: int64, real64
     implicit none
@@ -43,6 +43,9 @@ module brachistochrone_fast_exp
                                               1.0_xp/5040]
     !> Adding and subtracting it rounds |t| < 2^62 to an integer (x87: 64 bits).
     real(xp), parameter :: round_magic = 3.0_xp*2.0_xp**62
+    !> The reductions (`reduce`): series only, one fine step, all tables; no pairs.
+    integer, parameter :: path_series = 1, path_fine = 2, path_tables = 3, &
+                          path_library = 4, path_minus_one = 5
     integer(i128), parameter :: low50 = ishft(1_i128, 50) - 1, low112 = ishft(1_i128, 112) - 1
 
 contains
@@ -52,130 +55,113 @@ contains
     elemental function fast_exp(x) result(y)
         real(qp), intent(in) :: x !! argument
         real(qp) :: y
-        real(xp) :: h, l
-        integer :: e, j, k
-        if (.not. pairs) then
-            y = exp(x)
-            return
-        end if
-        e = binary_exponent(x)
-        if (e < -113) then
-            ! (zero and subnormals included: exp(x) = 1 + x correctly rounded)
-            y = 1.0_qp + x
-        else if (e < -16) then
-            call argument_pair(x, e, h, l)
-            call series(h, l)
-            call add_one(h, l)
-            y = to_quad(h, l, 0)
-        else if (e < 7) then
-            call reduce_table(x, e, .true., j, h, l)
-            call exp_pair(j, h, l, k)
-            y = to_quad(h, l, k)
+        if (pairs) then
+            y = exponential(x, .false.)
         else
-            y = exp_large(x, e)
+            y = exp(x)
         end if
     end function fast_exp
 
-    !> expm1(x) = exp(x) - 1 to full relative precision (for x >= 128: `fast_exp`).
+    !> expm1(x) = exp(x) - 1 to full relative precision (for x >= 128: exp(x)).
     elemental function fast_expm1(x) result(y)
         real(qp), intent(in) :: x !! argument
         real(qp) :: y
-        real(xp) :: h, l
-        integer :: e, j
-        if (.not. pairs) then
-            y = expm1(x)
-            return
-        end if
-        e = binary_exponent(x)
-        if (e < -113) then
-            ! (x^2/2 is below half an ulp of x; zero and subnormals included)
-            y = x
-        else if (e < -8) then
-            if (e < -16) then
-                call argument_pair(x, e, h, l)
-                call series(h, l)
-            else
-                ! expm1(a + r) = expm1(a) + e^a expm1(r), a = +-j/65536, r of x's sign
-                call reduce_table(x, e, .false., j, h, l)
-                call series(h, l)
-                if (.not. signbit(x)) then
-                    call expm1_step(fine_plus(:, j), h, l)
-                else
-                    call expm1_step(fine_minus(:, j), h, l)
-                end if
-            end if
-            y = to_quad(h*two_to(-e), l*two_to(-e), e)
-        else if (e < 7) then
-            y = expm1_middle(x, e)
-        else if (e > 16383) then
-            ! (Inf, NaN)
-            y = expm1(x)
-        else if (.not. signbit(x)) then
-            y = fast_exp(x)
+        if (pairs) then
+            y = exponential(x, .true.)
         else
-            y = -1.0_qp
+            y = expm1(x)
         end if
     end function fast_expm1
 
-    !> expm1 for 2^-8 <= |x| < 128: exp(x) - 1 in pairs (-1 for x < -80, where e^x is
-    !! below half an ulp of 1); e: x's binary exponent.
-    elemental function expm1_middle(x, e) result(y)
+    !> exp(x), or expm1(x) with `minus_one`: the argument reduced to a pair (`reduce`),
+    !! its expm1 (`series`), the tables (`combine`), rounded once (`to_quad`). (Each step
+    !! called from here only, so the compiler inlines it: the pairs stay in registers.)
+    elemental function exponential(x, minus_one) result(y)
         real(qp), intent(in) :: x
-        integer, intent(in) :: e
+        logical, intent(in) :: minus_one
         real(qp) :: y
-        real(xp) :: h, l, s
-        integer :: j, k
-        call reduce_table(x, e, .true., j, h, l)
-        if (j < -80*65536) then
-            y = -1.0_qp
-            return
-        end if
-        call exp_pair(j, h, l, k)
-        if (.not. signbit(x)) then
-            ! (h + l) 2^k - 1 = (h + l - 2^-k) 2^k (2^-k below 2^-120 of h: dropped)
-            if (k <= 120) then
-                s = h - two_to(-k)
-                l = l + ((h - s) - two_to(-k))
-                h = s
+        real(xp) :: h, l
+        integer :: e, j, k, path
+        e = binary_exponent(x)
+        if (e < -113) then
+            ! (zero and subnormals included: x^2/2 is below half an ulp of x, of 1)
+            if (minus_one) then
+                y = x
+            else
+                y = 1.0_qp + x
             end if
-        else
-            ! (h + l) 2^k - 1 in (-1, 0), k >= -116
-            h = h*two_to(k)
-            l = l*two_to(k)
-            s = h - 1.0_xp
-            l = l + (h - (s + 1.0_xp))
-            h = s
-            k = 0
+            return
         end if
-        if (e < 0) then
-            ! (k = 0 here) the pair to [1/2, 4): times 2^-e
-            y = to_quad(h*two_to(-e), l*two_to(-e), e)
-        else
+        call reduce(x, e, minus_one, h, l, j, k, path)
+        select case (path)
+        case (path_library)
+            if (minus_one) then
+                y = expm1(x)
+            else
+                y = exp(x)
+            end if
+        case (path_minus_one)
+            y = -1.0_qp
+        case default
+            call series(h, l)
+            call combine(path, j, signbit(x), minus_one, e, h, l, k)
             y = to_quad(h, l, k)
-        end if
-    end function expm1_middle
+        end select
+    end function exponential
 
-    !> exp for 128 <= |x|: x = k log 2 + x' (|x'| <= 0.35 + 2^-40, a pair within about
-    !! 2^-128: k log 2's first two parts exact), then as for |x| < 128; beyond 11000 (and
-    !! Inf, NaN) the library's exp.
-    elemental function exp_large(x, e) result(y)
+    !> The argument x (binary exponent e >= -113) reduced: for |x| < 2^-16 r = x (path
+    !! `path_series`); for expm1 and |x| < 2^-8, |x| = j/65536 + r, r of x's sign, j
+    !! signed as x (`path_fine`); else x = J/65536 + r, J = floor(65536 x) in j (r >= 0:
+    !! `path_tables`), beyond 128 after x = k log 2 + x' (`reduce_large`; else k = 0). r
+    !! as the pair (h, l), exact below 128. Also the paths without pairs: the library's exp
+    !! (|x| >= 11000, Inf, NaN), -1 (expm1 for x < -80).
+    elemental subroutine reduce(x, e, minus_one, h, l, j, k, path)
         real(qp), intent(in) :: x
         integer, intent(in) :: e
-        real(qp) :: y
-        real(xp) :: h, l, d, s, u, ue, se, t
-        integer :: k, j, kk
-        if (e > 13) then
-            y = exp(x)
-            return
+        logical, intent(in) :: minus_one
+        real(xp), intent(out) :: h, l
+        integer, intent(out) :: j, k, path
+        j = 0
+        k = 0
+        h = 0.0_xp
+        l = 0.0_xp
+        if (e < -16) then
+            path = path_series
+            call bits_pair(significand(x), e, signbit(x), h, l)
+        else if (e < 7) then
+            ! (one call: the compiler inlines it)
+            path = merge(path_fine, path_tables, minus_one .and. e < -8)
+            call reduce_table(x, e, path == path_tables, j, h, l)
+            if (path == path_fine .and. signbit(x)) j = -j
+            if (minus_one .and. j < -80*65536) path = path_minus_one
+        else if (e > 13) then
+            path = path_library
+        else if (minus_one .and. signbit(x)) then
+            path = path_minus_one
+        else
+            call reduce_large(x, e, h, l, j, k, path)
         end if
-        call argument_pair(x, e, h, l)
-        if (abs(h) >= 11000.0_xp) then
-            y = exp(x)
-            return
-        end if
-        kk = int(real(h*(1.0_xp/ln2_parts(1)) + sign(0.5_xp, h), real64))
-        t = real(kk, xp)
-        ! h - kk ln2_1 exact (both multiples of 2^-56, the difference below 1/2); kk ln2_2
+    end subroutine reduce
+
+    !> For 128 <= |x| < 16384 (binary exponent e): x = k log 2 + x' (|x'| <= 0.35 + 2^-40,
+    !! a pair within about 2^-128: k log 2's first two parts exact), then J = floor(65536
+    !! x') and r = x' - J/65536 >= 0 as the pair (h, l) (`path_tables`); beyond 11000
+    !! `path_library`.
+    elemental subroutine reduce_large(x, e, h, l, j, k, path)
+        real(qp), intent(in) :: x
+        integer, intent(in) :: e
+        real(xp), intent(out) :: h, l
+        integer, intent(out) :: j, k, path
+        real(xp) :: d, s, u, ue, se, t
+        call bits_pair(significand(x), e, signbit(x), h, l)
+        path = path_library
+        j = 0
+        k = 0
+        if (abs(h) >= 11000.0_xp) return
+        path = path_tables
+        k = int(real(h*(1.0_xp/ln2_parts(1)) + sign(0.5_xp, h), real64))
+        t = real(k, xp)
+        ! h - k ln2_1 exact (both multiples of 2^-56, the difference below 1/2); k ln2_2
         ! exact (48 + 14 bits); Knuth's two-sums for the rest
         d = h - t*ln2_parts(1)
         call two_sum(d, l, u, ue)
@@ -190,28 +176,72 @@ contains
         l = l + se
         h = s + l
         l = l - (h - s)
-        call exp_pair(j, h, l, k)
-        y = to_quad(h, l, k + kk)
-    end function exp_large
+    end subroutine reduce_large
 
-    !> e^(J/65536 + r) = 2^k (h + l) with h + l in [1 - 2^-40, 5.5) from J (|J| < 2^23)
-    !! and the pair r (-2^-40 < r < 2^-16) in (h, l).
-    elemental subroutine exp_pair(j, h, l, k)
-        integer, intent(in) :: j
+    !> From expm1(r) in (h, l) to the result (h + l) 2^k (|h + l| in [1/2, 8)): for
+    !! `path_fine` and `path_tables`, expm1(a + r) = expm1(a) + e^a expm1(r) (a = j/65536,
+    !! j's last 8 bits with `path_tables`); for `path_tables` then the factors e^(j1/256)
+    !! (the next 8 bits) and e^m (m = floor(J/65536): 2^E(m) times a pair), k added to
+    !! E(m); exp adds 1, expm1 (x negative when `negative`, binary exponent e) subtracts it
+    !! after the tables, or scales by 2^-e.
+    elemental subroutine combine(path, j, negative, minus_one, e, h, l, k)
+        integer, intent(in) :: path, j, e
+        logical, intent(in) :: negative, minus_one
         real(xp), intent(inout) :: h, l
-        integer, intent(out) :: k
-        integer :: m
-        call series(h, l)
-        if (iand(j, 255) > 0) call expm1_step(fine_plus(:, iand(j, 255)), h, l)
+        integer, intent(inout) :: k
+        integer :: a, m
+        a = j
+        if (path == path_tables) a = iand(j, 255)
+        if (a /= 0) call expm1_step(fine(:, a), h, l)
+        if (path /= path_tables .and. minus_one) then
+            h = h*two_to(-e)
+            l = l*two_to(-e)
+            k = e
+            return
+        end if
         call add_one(h, l)
-        if (iand(shifta(j, 8), 255) > 0) call times(steps(:, iand(shifta(j, 8), 255)), h, l)
+        if (path /= path_tables) return
+        a = iand(shifta(j, 8), 255)
+        if (a > 0) call times(steps(:, a), h, l)
         m = shifta(j, 16)
-        k = 0
         if (m /= 0) then
             call times(whole_scaled(:, m), h, l)
-            k = whole_exponent(m)
+            k = k + whole_exponent(m)
         end if
-    end subroutine exp_pair
+        if (minus_one) call subtract_one(negative, e, h, l, k)
+    end subroutine combine
+
+    !> (h, l, k) <- e^x - 1 from e^x = (h + l) 2^k for 2^-8 <= |x| < 128 (binary exponent
+    !! e; x >= -80, so k >= -116), |h + l| in [1/2, 8) after.
+    elemental subroutine subtract_one(negative, e, h, l, k)
+        logical, intent(in) :: negative
+        integer, intent(in) :: e
+        real(xp), intent(inout) :: h, l
+        integer, intent(inout) :: k
+        real(xp) :: s
+        if (.not. negative) then
+            ! (h + l - 2^-k) 2^k (2^-k below 2^-120 of h: dropped)
+            if (k <= 120) then
+                s = h - two_to(-k)
+                l = l + ((h - s) - two_to(-k))
+                h = s
+            end if
+        else
+            ! (h + l) 2^k - 1 in (-1, 0)
+            h = h*two_to(k)
+            l = l*two_to(k)
+            s = h - 1.0_xp
+            l = l + (h - (s + 1.0_xp))
+            h = s
+            k = 0
+        end if
+        if (e < 0) then
+            ! (k = 0 here) the pair to [1/2, 4): times 2^-e
+            h = h*two_to(-e)
+            l = l*two_to(-e)
+            k = e
+        end if
+    end subroutine subtract_one
 
     !> expm1(r) for the pair r = h + l (|r| <= 2^-16, |l| <= ulp(h)), in place, within
     !! about 2^-115 of r: r + r^2/2 + r^3 (1/6 + r t), r^2 = p + pe and r^3 (1/6 + ...)
@@ -315,14 +345,6 @@ contains
         integer :: e
         e = int(iand(ishft(transfer(x, 0_i128), -112), 32767_i128)) - 16383
     end function binary_exponent
-
-    !> x (binary exponent e, -113 <= e <= 13) as a pair h + l, exactly.
-    elemental subroutine argument_pair(x, e, h, l)
-        real(qp), intent(in) :: x
-        integer, intent(in) :: e
-        real(xp), intent(out) :: h, l
-        call bits_pair(significand(x), e, signbit(x), h, l)
-    end subroutine argument_pair
 
     !> For 2^-16 <= |x| < 128 (binary exponent e): |x| = j/65536 + r, 0 <= r < 2^-16, on
     !! the bits (j, r exact); with `floored`, x = j/65536 + r (j = floor(65536 x), r >= 0),
