@@ -910,12 +910,15 @@ contains
     subroutine fast_exponentials_spread()
         use brachistochrone_fast_exp, only: fast_exp, fast_expm1
         use brachistochrone_quad_math, only: expm1
+        use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_positive_inf, &
+                                                 ieee_negative_inf, ieee_quiet_nan
         integer, parameter :: count = 100000
         real(qp), parameter :: switches(4) = [1.0_qp, 1.0_qp/256, 1.0_qp/65536, &
                                               2.0_qp**(-8)]
-        real(qp) :: x, worst(2), u
+        real(qp) :: x, worst(2), u, special(15)
         integer :: i, j
         integer(int64) :: state
+        logical :: same
         call section('central force: fast exp and expm1 spread, against libquadmath''s')
         worst = 0.0_qp
         state = 20261130_int64
@@ -942,6 +945,20 @@ contains
             worst
         call check(worst(1) <= 2.0_qp, 'fast exp within 2 ulp of libquadmath''s')
         call check(worst(2) <= 2.0_qp, 'fast expm1 within 2 ulp of libquadmath''s')
+        ! zeros, subnormals, overflow, underflow, infinities, NaN: as the library
+        special = [0.0_qp, -0.0_qp, tiny(1.0_qp)/1.0e10_qp, -tiny(1.0_qp), 11000.5_qp, &
+                   -11000.5_qp, 11356.6_qp, -11400.0_qp, 2.0e4_qp, -2.0e4_qp, huge(1.0_qp), &
+                   -huge(1.0_qp), ieee_value(1.0_qp, ieee_positive_inf), &
+                   ieee_value(1.0_qp, ieee_negative_inf), ieee_value(1.0_qp, ieee_quiet_nan)]
+        same = .true.
+        do i = 1, size(special)
+            x = special(i)
+            same = same .and. (fast_exp(x) == exp(x) .or. (x /= x .and. fast_exp(x) /= &
+                fast_exp(x))) .and. (fast_expm1(x) == expm1(x) .or. (x /= x .and. &
+                fast_expm1(x) /= fast_expm1(x))) .and. sign(1.0_qp, fast_expm1(x)) == &
+                sign(1.0_qp, expm1(x))
+        end do
+        call check(same, 'fast exp, expm1 at zeros, subnormals, +-Inf, NaN, over/underflow')
     end subroutine fast_exponentials_spread
 
     !> A uniform number in (0, 1) from the state of Park and Miller's minimal standard
