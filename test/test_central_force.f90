@@ -52,6 +52,7 @@ contains
         call fall_time_tables()
         call fast_exponentials()
         call fast_exponentials_spread()
+        call fast_exponentials_mpmath()
         call next_to_the_start()
         call two_root_finders()
         call next_to_the_apse_angle()
@@ -960,6 +961,36 @@ contains
         end do
         call check(same, 'fast exp, expm1 at zeros, subnormals, +-Inf, NaN, over/underflow')
     end subroutine fast_exponentials_spread
+
+    !> fast exp and expm1 against mpmath (data/reference/fast_exp_mpmath.csv, made by
+    !! scripts/make_fast_exp_reference.py: 1500 arguments, |x| 1e-30 .. 11000 and next to
+    !! the reduction's switches, the values as hi + lo pairs), errors in ulps of the value
+    !! |(y - hi) - lo|/spacing(hi): within 0.75 ulp (the rounding's 0.5 and the pairs' error;
+    !! 10^5 arguments, scripts/bench_fast_exp.sh: 0.50 and 0.60; the previous version 2.3
+    !! and 3.1, libquadmath 0.50 and 1.45).
+    subroutine fast_exponentials_mpmath()
+        use brachistochrone_fast_exp, only: fast_exp, fast_expm1
+        type(csv_table) :: table
+        logical :: ok
+        integer :: i
+        real(qp) :: x, worst(2), hi, lo
+        call section('central force: fast exp and expm1 against mpmath, in ulps')
+        call read_reference('data/reference/fast_exp_mpmath.csv', 1500, table, ok)
+        if (.not. ok) return
+        worst = 0.0_qp
+        do i = 1, table%row_count()
+            x = table%real_value(i, 'x')
+            hi = table%real_value(i, 'exp_hi')
+            lo = table%real_value(i, 'exp_lo')
+            worst(1) = max(worst(1), abs((fast_exp(x) - hi) - lo)/spacing(hi))
+            hi = table%real_value(i, 'expm1_hi')
+            lo = table%real_value(i, 'expm1_lo')
+            worst(2) = max(worst(2), abs((fast_expm1(x) - hi) - lo)/spacing(hi))
+        end do
+        write (output_unit, '(a,2f7.3)') '   worst ulps, exp and expm1: ', worst
+        call check(worst(1) <= 0.75_qp, 'fast exp within 0.75 ulp of mpmath''s')
+        call check(worst(2) <= 0.75_qp, 'fast expm1 within 0.75 ulp of mpmath''s')
+    end subroutine fast_exponentials_mpmath
 
     !> A uniform number in (0, 1) from the state of Park and Miller's minimal standard
     !! generator (state <- 48271 state mod (2^31 - 1); no overflow in 64 bits).
