@@ -2,7 +2,7 @@
 !! path, Saitoh's closed forms for the harmonic law, Keam's limit pi/(n+1), closed-form
 !! fall times.
 module test_central_force
-    use, intrinsic :: iso_fortran_env, only: output_unit
+    use, intrinsic :: iso_fortran_env, only: output_unit, int64
     use brachistochrone_kinds, only: qp, pi, eps_qp
     use brachistochrone_status, only: status_ok, status_inaccessible, &
                                       status_parameter_out_of_range
@@ -51,6 +51,8 @@ contains
         call closed_fall_times()
         call fall_time_tables()
         call fast_exponentials()
+        call fast_exponentials_spread()
+        call fast_exponentials_mpmath()
         call next_to_the_start()
         call two_root_finders()
         call next_to_the_apse_angle()
@@ -850,9 +852,9 @@ contains
     end subroutine next_to_the_start
 
     !> The engine's fast exp and expm1 against libquadmath's, on arguments next to the
-    !! table steps j/256 and j/65536 (where the table index is taken in double precision)
-    !! and e^(+-m) (m + 1/2, where m switches, and past the tables' end 127.5), and spread
-    !! over the range the integrands use.
+    !! table steps j/256 and j/65536, next to m + 1/2 (where the previous version switched
+    !! tables e^(+-m)) and up to 130.5, past the tables' end 128, and spread over the range
+    !! the integrands use.
     subroutine fast_exponentials()
         use brachistochrone_fast_exp, only: fast_exp, fast_expm1
         use brachistochrone_quad_math, only: expm1
@@ -899,6 +901,104 @@ contains
         write (output_unit, '(a,f6.2)') '   worst relative error in eps: ', worst
         call check(worst <= 4.0_qp, 'fast exp, expm1 within 4 eps of libquadmath''s')
     end subroutine fast_exponentials
+
+    !> fast exp and expm1 at 100000 arguments, |x| log-uniform over 1e-30 .. 11000 (a
+    !! fixed pseudo-random sequence), and next to the reduction's switches (whole numbers
+    !! m (0 .. 255), j/256, j/65536 = j 2^-16, j 2^-8, multiples of log 2/2), against
+    !! libquadmath's (which is within 1.5 ulp: mpmath, scripts/check_fast_exp.py): within
+    !! 2 ulp of it.
+    !! (The previous version was 3 ulp off libquadmath at some of these.)
+    subroutine fast_exponentials_spread()
+        use brachistochrone_fast_exp, only: fast_exp, fast_expm1
+        use brachistochrone_quad_math, only: expm1
+        use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_positive_inf, &
+                                                 ieee_negative_inf, ieee_quiet_nan
+        integer, parameter :: count = 100000
+        real(qp), parameter :: switches(4) = [1.0_qp, 1.0_qp/256, 1.0_qp/65536, &
+                                              2.0_qp**(-8)]
+        real(qp) :: x, worst(2), u, special(15)
+        integer :: i, j
+        integer(int64) :: state
+        logical :: same
+        call section('central force: fast exp and expm1 spread, against libquadmath''s')
+        worst = 0.0_qp
+        state = 20261130_int64
+        do i = 1, count
+            u = next_uniform(state)
+            if (mod(i, 7) == 0) then
+                ! next to a switch (j times one of them, or j log 2/2), within 20 ulps
+                j = 1 + int(next_uniform(state)*255.0_qp)
+                if (mod(i, 14) == 0) then
+                    x = real(j, qp)*switches(1 + mod(i/14, size(switches)))
+                else
+                    j = j*int(1.0_qp + next_uniform(state)*120.0_qp)
+                    x = real(j, qp)*log(2.0_qp)/2
+                end if
+                x = x + real(int(u*41.0_qp) - 20, qp)*spacing(x)
+            else
+                x = 10.0_qp**(-30.0_qp + u*(30.0_qp + log10(11000.0_qp)))
+            end if
+            if (mod(i, 2) == 0) x = -x
+            worst(1) = max(worst(1), abs(fast_exp(x) - exp(x))/spacing(exp(x)))
+            worst(2) = max(worst(2), abs(fast_expm1(x) - expm1(x))/spacing(expm1(x)))
+        end do
+        write (output_unit, '(a,2f6.2)') '   worst ulps off libquadmath, exp and expm1: ', &
+            worst
+        call check(worst(1) <= 2.0_qp, 'fast exp within 2 ulp of libquadmath''s')
+        call check(worst(2) <= 2.0_qp, 'fast expm1 within 2 ulp of libquadmath''s')
+        ! zeros, subnormals, overflow, underflow, infinities, NaN: as the library
+        special = [0.0_qp, -0.0_qp, tiny(1.0_qp)/1.0e10_qp, -tiny(1.0_qp), 11000.5_qp, &
+                   -11000.5_qp, 11356.6_qp, -11400.0_qp, 2.0e4_qp, -2.0e4_qp, huge(1.0_qp), &
+                   -huge(1.0_qp), ieee_value(1.0_qp, ieee_positive_inf), &
+                   ieee_value(1.0_qp, ieee_negative_inf), ieee_value(1.0_qp, ieee_quiet_nan)]
+        same = .true.
+        do i = 1, size(special)
+            x = special(i)
+            same = same .and. (fast_exp(x) == exp(x) .or. (x /= x .and. fast_exp(x) /= &
+                fast_exp(x))) .and. (fast_expm1(x) == expm1(x) .or. (x /= x .and. &
+                fast_expm1(x) /= fast_expm1(x))) .and. sign(1.0_qp, fast_expm1(x)) == &
+                sign(1.0_qp, expm1(x))
+        end do
+        call check(same, 'fast exp, expm1 at zeros, subnormals, +-Inf, NaN, over/underflow')
+    end subroutine fast_exponentials_spread
+
+    !> fast exp and expm1 against mpmath (data/reference/fast_exp_mpmath.csv, made by
+    !! scripts/make_fast_exp_reference.py: 1500 arguments, |x| 1e-30 .. 11000 and next to
+    !! the reduction's switches, the values as hi + lo pairs), errors in ulps of the value
+    !! |(y - hi) - lo|/spacing(hi): within 0.75 ulp (the rounding's 0.5 and the pairs' error;
+    !! 10^5 arguments, scripts/bench_fast_exp.sh: 0.50 and 0.60; the previous version 2.3
+    !! and 3.1, libquadmath 0.50 and 1.45).
+    subroutine fast_exponentials_mpmath()
+        use brachistochrone_fast_exp, only: fast_exp, fast_expm1
+        type(csv_table) :: table
+        logical :: ok
+        integer :: i
+        real(qp) :: x, worst(2), hi, lo
+        call section('central force: fast exp and expm1 against mpmath, in ulps')
+        call read_reference('data/reference/fast_exp_mpmath.csv', 1500, table, ok)
+        if (.not. ok) return
+        worst = 0.0_qp
+        do i = 1, table%row_count()
+            x = table%real_value(i, 'x')
+            hi = table%real_value(i, 'exp_hi')
+            lo = table%real_value(i, 'exp_lo')
+            worst(1) = max(worst(1), abs((fast_exp(x) - hi) - lo)/spacing(hi))
+            hi = table%real_value(i, 'expm1_hi')
+            lo = table%real_value(i, 'expm1_lo')
+            worst(2) = max(worst(2), abs((fast_expm1(x) - hi) - lo)/spacing(hi))
+        end do
+        write (output_unit, '(a,2f7.3)') '   worst ulps, exp and expm1: ', worst
+        call check(worst(1) <= 0.75_qp, 'fast exp within 0.75 ulp of mpmath''s')
+        call check(worst(2) <= 0.75_qp, 'fast expm1 within 0.75 ulp of mpmath''s')
+    end subroutine fast_exponentials_mpmath
+
+    !> A uniform number in (0, 1) from the state of Park and Miller's minimal standard
+    !! generator (state <- 48271 state mod (2^31 - 1); no overflow in 64 bits).
+    real(qp) function next_uniform(state) result(u)
+        integer(int64), intent(inout) :: state
+        state = mod(state*48271_int64, 2147483647_int64)
+        u = real(state, qp)/2147483647.0_qp
+    end function next_uniform
 
     !> The closed-form fall times (n = 2: Tee (46); n = 3: sqrt(1 - r^2); other n: the
     !! incomplete beta function's series; logarithmic: sqrt(pi/2) erf(sqrt(-log r)))

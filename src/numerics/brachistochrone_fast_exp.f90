@@ -1,191 +1,447 @@
 !> exp and expm1 in binary128, several times faster than libquadmath's, for the general
 !! engine's integrands (one or two per quadrature node).
 !!
-!! exp(x) = e^(+-m) (1 + expm1(f)), m = nint(|x|) <= 127, f = x -+ m (exact, |f| <= 1/2;
-!! e^(+-m) from tables: one rounding, no scaling); beyond, exp(x) = 2^k (1 + expm1(x - k
-!! log 2)) (k from double precision: only near x/log 2; k log 2 subtracted in two parts,
-!! log 2 split into 60 + 113 bits, so the reduction is exact to about 2^-170 for |k| <
-!! 2^14); expm1(x) = exp(x) - 1 for |x| >= 1. Below (and for the reduced argument):
-!! |x| = j1/256 + j2/65536 + r (j1, j2 from one double-precision index, |r| < 2^-16,
-!! j/65536 converted exactly on the bits, the subtraction exact) and expm1(a + r) =
-!! e^a expm1(r) + expm1(a) for each table step a (both terms of one sign: no
-!! cancellation). The tables e^a and expm1(a) are constant expressions (rounded by the
-!! compiler); expm1(r) is its Taylor series to r^7/7!, the terms from r^4/24 on (below
-!! 2^-52 of r) in hardware extended precision where there is one (converted on the bits,
-!! `hardware_real`, `quad_real`). Errors: a few units in the last place.
+!! After an exact reduction of the argument the work is done in pairs of x87 extended
+!! numbers (h + l, 64-bit significands: about 128 bits, more than binary128's 113), and
+!! only the final sum is rounded to binary128 (`to_quad`, on the bits: no binary128
+!! operation on the main paths). The reduction: for |x| < 128, x = J/65536 + r with
+!! J = floor(65536 x) = 65536 m + 256 j1 + j2 and 0 <= r < 2^-16, read off the bits of x
+!! (r exact as a pair); exp(x) = e^m e^(j1/256) (1 + expm1(j2/65536 + r)), the factors
+!! from tables of pairs within 2^-128 (`brachistochrone_fast_exp_tables`, mpmath), e^m
+!! as 2^E(m) times a pair in [1, 2). For 128 <= |x| < 11000, x = k log 2 + x' (k log 2 in
+!! three parts, the first two exact, x' within about 2^-128), then x' as above, times
+!! 2^k on the bits. expm1 for |x| < 2^-8: its series (|x| < 2^-16) or expm1(a + r) =
+!! expm1(a) + e^a expm1(r) for a = +-j/65536, r of x's sign (no cancellation); beyond,
+!! exp(x) - 1 in pairs (the cancellation, at most 2^8, leaves about 2^-118). expm1(r)
+!! (|r| <= 2^-16): Dekker's exact products for r^2 and r^3 (1/6 + ...), the rest in x87.
+!! Errors against mpmath at 10^5 arguments (|x| 1e-30 .. 11000, both signs; scripts/
+!! bench_fast_exp.sh): exp 0.50, expm1 0.60 units in the last place (the previous
+!! binary128 version 2.3 and 3.1, libquadmath 0.50 and 1.45); about 80 ns a call, a
+!! quarter of the previous version's time. Where `xp` is not x87 extended: the library's
+!! exp and expm1.
 module brachistochrone_fast_exp
     use brachistochrone_kinds, only: qp, xp
-    use brachistochrone_fast_math, only: hardware_real, quad_real
-    use, intrinsic :: iso_fortran_env, only: real64
+    use brachistochrone_fast_exp_tables, only: whole_exponent, whole_scaled, steps, fine, &
+                                               ln2_parts
+    use brachistochrone_quad_math, only: expm1
+    use, intrinsic :: iso_fortran_env, only: int64, real64
     implicit none
     private
 
     public :: fast_exp, fast_expm1
 
+    integer, parameter :: i128 = selected_int_kind(38)
+    !> The pair arithmetic needs x87 extended `xp` and binary128 `qp` bits (1.5 read back).
+    logical, parameter :: pairs = digits(1.0_xp) == 64 .and. maxexponent(1.0_xp) == 16384 &
+        .and. digits(1.0_qp) == 113 .and. &
+        transfer(1.5_qp, 0_i128) == ishft(int(z'3FFF8', i128), 108)
     integer :: j_
-    !> j/256 and -j/256, j = 0..255.
-    real(qp), parameter :: steps_plus(0:255) = [(real(j_, qp)/256.0_qp, j_ = 0, 255)]
-    real(qp), parameter :: steps_minus(0:255) = -steps_plus
-    !> e^(+-j/256) and expm1(+-j/256) = 2 e^(a/2) sinh(a/2) (exp - 1 would lose up to 2.4
-    !! digits).
-    real(qp), parameter :: exp_table(0:255) = exp(steps_plus)
-    real(qp), parameter :: expm1_table(0:255) = &
-        2.0_qp*exp(0.5_qp*steps_plus)*sinh(0.5_qp*steps_plus)
-    real(qp), parameter :: exp_table_minus(0:255) = exp(steps_minus)
-    real(qp), parameter :: expm1_table_minus(0:255) = &
-        2.0_qp*exp(0.5_qp*steps_minus)*sinh(0.5_qp*steps_minus)
-    !> The same for +-j/65536.
-    real(qp), parameter :: fine_plus(0:255) = [(real(j_, qp)/65536.0_qp, j_ = 0, 255)]
-    real(qp), parameter :: fine_minus(0:255) = -fine_plus
-    real(qp), parameter :: exp_fine(0:255) = exp(fine_plus)
-    real(qp), parameter :: expm1_fine(0:255) = &
-        2.0_qp*exp(0.5_qp*fine_plus)*sinh(0.5_qp*fine_plus)
-    real(qp), parameter :: exp_fine_minus(0:255) = exp(fine_minus)
-    real(qp), parameter :: expm1_fine_minus(0:255) = &
-        2.0_qp*exp(0.5_qp*fine_minus)*sinh(0.5_qp*fine_minus)
-    !> e^m and e^(-m), m = 0..max_whole, for |x| < max_whole + 1/2 (`fast_exp`)
-    integer, parameter :: max_whole = 127
-    real(qp), parameter :: whole_plus(0:max_whole) = [(real(j_, qp), j_ = 0, max_whole)]
-    real(qp), parameter :: exp_whole(0:max_whole) = exp(whole_plus)
-    real(qp), parameter :: exp_whole_minus(0:max_whole) = exp(-whole_plus)
-    !> log 2 in two parts: high (exact times any |k| < 2^50) and low.
-    real(qp), parameter :: ln2 = log(2.0_qp)
-    real(qp), parameter :: ln2_high = real(int(ln2*2.0_qp**60, kind=selected_int_kind(18)), &
-                                           qp)/2.0_qp**60
-    !> log 2 - ln2_high to full precision (mpmath): ln2 - ln2_high would carry the
-    !! rounding of ln2 (2^-114), k times, into the reduced argument
-    real(qp), parameter :: ln2_low = 6.39062950764503927593536380659998906464430009e-19_qp
-    !> 1/log 2 (k needs only to be near x/log 2: the reduction is exact for any k)
-    real(qp), parameter :: inverse_ln2 = 1.0_qp/ln2
-    !> The widest hardware kind (x87 extended, 64-bit significand) for the series' tail:
-    !! with |r| < 2^-16 its terms from r^4/24 on are below 2^-52 of r, so 64 bits there
-    !! leave an error below 2^-115 of r. Without such a kind the whole series in qp.
-    integer, parameter :: tail_candidate = selected_real_kind(18, 4931)
-    integer, parameter :: tail_kind = merge(tail_candidate, real64, tail_candidate > 0 &
-                                            .and. tail_candidate /= qp)
-    logical, parameter :: tail_in_hardware = precision(1.0_tail_kind) >= 18
+    !> Powers of two 2^j, j = -128..128 (exact scalings of pairs).
+    real(xp), parameter :: two_to(-128:128) = [(2.0_xp**j_, j_ = -128, 128)]
+    !> Veltkamp's splitter for 64-bit significands (two halves of 32 bits).
+    real(xp), parameter :: splitter = 2.0_xp**32 + 1.0_xp
+    !> 1/6 as a pair; the series' coefficients from 1/24 on.
+    real(xp), parameter :: sixth(2) = [1.0_xp/6, real(1.0_qp/6 - real(1.0_xp/6, qp), xp)]
+    real(xp), parameter :: coefficients(4) = [1.0_xp/24, 1.0_xp/120, 1.0_xp/720, &
+                                              1.0_xp/5040]
+    !> Adding and subtracting it rounds |t| < 2^62 to an integer (x87: 64 bits).
+    real(xp), parameter :: round_magic = 3.0_xp*2.0_xp**62
+    !> The reductions (`reduce`): series only, one fine step, all tables; no pairs.
+    integer, parameter :: path_series = 1, path_fine = 2, path_tables = 3, &
+                          path_library = 4, path_minus_one = 5
+    integer(i128), parameter :: low50 = ishft(1_i128, 50) - 1, low112 = ishft(1_i128, 112) - 1
 
 contains
 
-    !> exp(x) for binary128 x (overflow to +Inf, underflow to 0 as exp does). The range
-    !! tests on the double-precision copy of x (no binary128 comparisons; rounding to
-    !! double keeps |x| < c for the bounds c used, and the sign, zeros included).
+    !> exp(x) for binary128 x (overflow to +Inf, underflow to 0 as exp does; |x| >= 11000,
+    !! Inf and NaN: the library's exp).
     elemental function fast_exp(x) result(y)
         real(qp), intent(in) :: x !! argument
         real(qp) :: y
-        real(qp) :: reduced
-        real(real64) :: xd
-        integer :: k, m
-        xd = real(x, real64)
-        if (.not. (abs(xd) < 11000.0_real64)) then
+        if (pairs) then
+            y = exponential(x, .false.)
+        else
             y = exp(x)
-            return
         end if
-        if (abs(xd) < 0.5_real64) then
-            ! no reduction, no scaling
-            y = 1.0_qp + small_expm1(x, xd)
-            return
-        else if (abs(xd) < real(max_whole, real64) + 0.5_real64) then
-            ! x = +-m + f, m = nint(|x|) (f exact, |f| <= 1/2), e^(+-m) from the tables
-            ! (one rounding) times 1 + expm1(f); (|x| rounded to double may reach a
-            ! half-integer: f then just above 1/2)
-            m = min(nint(abs(xd)), max_whole)
-            if (xd > 0.0_real64) then
-                reduced = x - whole_plus(m)
-                y = exp_whole(m)*(1.0_qp + small_expm1(reduced, real(reduced, real64)))
-            else
-                reduced = x + whole_plus(m)
-                y = exp_whole_minus(m)*(1.0_qp + small_expm1(reduced, real(reduced, real64)))
-            end if
-            return
-        end if
-        ! k need only be near x/log 2 (the reduction below is exact for any k)
-        k = nint(xd*real(inverse_ln2, real64))
-        reduced = (x - real(k, qp)*ln2_high) - real(k, qp)*ln2_low
-        y = scale(1.0_qp + small_expm1(reduced, real(reduced, real64)), k)
     end function fast_exp
 
-    !> expm1(x) = exp(x) - 1 to full relative precision.
+    !> expm1(x) = exp(x) - 1 to full relative precision (for x >= 128: exp(x)).
     elemental function fast_expm1(x) result(y)
         real(qp), intent(in) :: x !! argument
         real(qp) :: y
-        real(real64) :: xd
-        xd = real(x, real64)
-        if (abs(xd) < 1.0_real64) then
-            y = small_expm1(x, xd)
+        if (pairs) then
+            y = exponential(x, .true.)
         else
-            y = fast_exp(x) - 1.0_qp
+            y = expm1(x)
         end if
     end function fast_expm1
 
-    !> |x| = a1 + a2 + r for |x| < 1 (a1 = j1/256, a2 = j2/65536 from one double-precision
-    !! index j = j1 256 + j2: a rounding up by one step leaves r slightly negative, which
-    !! the series takes as well; the subtraction is exact), and expm1(+-r) by its series
-    !! to r^7/7! (the remainder is below 1e-38 of it), the terms from r^4/24 on in
-    !! hardware precision where there is one (xd: x in double precision, its sign x's).
-    elemental subroutine reduce_series(x, xd, j1, j2, series)
+    !> exp(x), or expm1(x) with `minus_one`: the argument reduced to a pair (`reduce`),
+    !! its expm1 (`series`), the tables (`combine`), rounded once (`to_quad`). (Each step
+    !! called from here only, so the compiler inlines it: the pairs stay in registers.)
+    elemental function exponential(x, minus_one) result(y)
         real(qp), intent(in) :: x
-        real(real64), intent(in) :: xd
-        integer, intent(out) :: j1, j2
-        real(qp), intent(out) :: series
-        real(qp) :: r
-        real(tail_kind) :: rt, tail
-        integer :: j
-        j = max(0, min(int(abs(xd)*65536.0_real64), 65535))
-        j1 = ishft(j, -8)
-        j2 = iand(j, 255)
-        ! j/65536 = a1 + a2 exactly, converted on the bits (no binary128 addition)
-        r = abs(x) - quad_real(real(j, xp)*(1.0_xp/65536))
-        if (sign(1.0_real64, xd) < 0.0_real64) r = -r
-        if (tail_in_hardware) then
-            ! the terms from r^4/24 on in hardware precision (see tail_kind)
-            rt = to_tail(r)
-            tail = 1.0_tail_kind/24 + rt*(1.0_tail_kind/120 + rt*(1.0_tail_kind/720 &
-                   + rt*(1.0_tail_kind/5040)))
-            series = r*(1.0_qp + r*(1.0_qp/2 + r*(1.0_qp/6 + r*to_quad(tail))))
-        else
-            series = r*(1.0_qp + r*(1.0_qp/2 + r*(1.0_qp/6 + r*(1.0_qp/24 + r*(1.0_qp/120 &
-                     + r*(1.0_qp/720 + r*(1.0_qp/5040)))))))
-        end if
-    end subroutine reduce_series
-
-    !> expm1 for |x| < 1: expm1(a + r) = e^a expm1(r) + expm1(a) for
-    !! a = a2, then a1 (the terms of one sign: no cancellation); xd = real(x, real64).
-    elemental function small_expm1(x, xd) result(y)
-        real(qp), intent(in) :: x
-        real(real64), intent(in) :: xd
+        logical, intent(in) :: minus_one
         real(qp) :: y
-        integer :: j1, j2
-        call reduce_series(x, xd, j1, j2, y)
-        if (sign(1.0_real64, xd) > 0.0_real64) then
-            if (j2 > 0) y = exp_fine(j2)*y + expm1_fine(j2)
-            if (j1 > 0) y = exp_table(j1)*y + expm1_table(j1)
-        else
-            if (j2 > 0) y = exp_fine_minus(j2)*y + expm1_fine_minus(j2)
-            if (j1 > 0) y = exp_table_minus(j1)*y + expm1_table_minus(j1)
+        real(xp) :: h, l
+        integer :: e, j, k, path
+        e = binary_exponent(x)
+        if (e < -113) then
+            ! (zero and subnormals included: x^2/2 is below half an ulp of x, of 1)
+            if (minus_one) then
+                y = x
+            else
+                y = 1.0_qp + x
+            end if
+            return
         end if
-    end function small_expm1
+        call reduce(x, e, minus_one, h, l, j, k, path)
+        select case (path)
+        case (path_library)
+            if (minus_one) then
+                y = expm1(x)
+            else
+                y = exp(x)
+            end if
+        case (path_minus_one)
+            y = -1.0_qp
+        case default
+            call series(h, l)
+            call combine(path, j, signbit(x), minus_one, e, h, l, k)
+            y = to_quad(h, l, k)
+        end select
+    end function exponential
 
-    !> The series' tail in binary128 (x87 extended: on the bits).
-    elemental function to_quad(t) result(r)
-        real(tail_kind), intent(in) :: t
-        real(qp) :: r
-        if (tail_kind == xp) then
-            r = quad_real(real(t, xp))
+    !> The argument x (binary exponent e >= -113) reduced: for |x| < 2^-16 r = x (path
+    !! `path_series`); for expm1 and |x| < 2^-8, |x| = j/65536 + r, r of x's sign, j
+    !! signed as x (`path_fine`); else x = J/65536 + r, J = floor(65536 x) in j (r >= 0:
+    !! `path_tables`), beyond 128 after x = k log 2 + x' (`reduce_large`; else k = 0). r
+    !! as the pair (h, l), exact below 128. Also the paths without pairs: the library's exp
+    !! (|x| >= 11000, Inf, NaN), -1 (expm1 for x < -80).
+    elemental subroutine reduce(x, e, minus_one, h, l, j, k, path)
+        real(qp), intent(in) :: x
+        integer, intent(in) :: e
+        logical, intent(in) :: minus_one
+        real(xp), intent(out) :: h, l
+        integer, intent(out) :: j, k, path
+        j = 0
+        k = 0
+        h = 0.0_xp
+        l = 0.0_xp
+        if (e < -16) then
+            path = path_series
+            call bits_pair(significand(x), e, signbit(x), h, l)
+        else if (e < 7) then
+            ! (one call: the compiler inlines it)
+            path = merge(path_fine, path_tables, minus_one .and. e < -8)
+            call reduce_table(x, e, path == path_tables, j, h, l)
+            if (path == path_fine .and. signbit(x)) j = -j
+            if (minus_one .and. j < -80*65536) path = path_minus_one
+        else if (e > 13) then
+            path = path_library
+        else if (minus_one .and. signbit(x)) then
+            path = path_minus_one
         else
-            r = real(t, qp)
+            call reduce_large(x, e, h, l, j, k, path)
         end if
+    end subroutine reduce
+
+    !> For 128 <= |x| < 16384 (binary exponent e): x = k log 2 + x' (|x'| <= 0.35 + 2^-40,
+    !! a pair within about 2^-128: k log 2's first two parts exact), then J = floor(65536
+    !! x') and r = x' - J/65536 >= 0 as the pair (h, l) (`path_tables`); beyond 11000
+    !! `path_library`.
+    elemental subroutine reduce_large(x, e, h, l, j, k, path)
+        real(qp), intent(in) :: x
+        integer, intent(in) :: e
+        real(xp), intent(out) :: h, l
+        integer, intent(out) :: j, k, path
+        real(xp) :: d, s, u, ue, se, t
+        call bits_pair(significand(x), e, signbit(x), h, l)
+        path = path_library
+        j = 0
+        k = 0
+        if (abs(h) >= 11000.0_xp) return
+        path = path_tables
+        k = int(real(h*(1.0_xp/ln2_parts(1)) + sign(0.5_xp, h), real64))
+        t = real(k, xp)
+        ! h - k ln2_1 exact (both multiples of 2^-56, the difference below 1/2); k ln2_2
+        ! exact (48 + 14 bits); Knuth's two-sums for the rest
+        d = h - t*ln2_parts(1)
+        call two_sum(d, l, u, ue)
+        call two_sum(u, -t*ln2_parts(2), s, se)
+        l = (ue + se) - t*ln2_parts(3)
+        h = s + l
+        l = l - (h - s)
+        ! J = floor(65536 x') (or one more: r then slightly negative, which the series
+        ! takes), r = x' - J/65536 (a two-sum: for x' < 0, |r| may exceed |x'|)
+        j = int(real(h*65536.0_xp + 32768.0_xp, real64)) - 32768
+        call two_sum(h, -real(j, xp)*two_to(-16), s, se)
+        l = l + se
+        h = s + l
+        l = l - (h - s)
+    end subroutine reduce_large
+
+    !> From expm1(r) in (h, l) to the result (h + l) 2^k (|h + l| in [1/2, 8)): for
+    !! `path_fine` and `path_tables`, expm1(a + r) = expm1(a) + e^a expm1(r) (a = j/65536,
+    !! j's last 8 bits with `path_tables`); for `path_tables` then the factors e^(j1/256)
+    !! (the next 8 bits) and e^m (m = floor(J/65536): 2^E(m) times a pair), k added to
+    !! E(m); exp adds 1, expm1 (x negative when `negative`, binary exponent e) subtracts it
+    !! after the tables, or scales by 2^-e.
+    elemental subroutine combine(path, j, negative, minus_one, e, h, l, k)
+        integer, intent(in) :: path, j, e
+        logical, intent(in) :: negative, minus_one
+        real(xp), intent(inout) :: h, l
+        integer, intent(inout) :: k
+        integer :: a, m
+        a = j
+        if (path == path_tables) a = iand(j, 255)
+        if (a /= 0) call expm1_step(fine(:, a), h, l)
+        if (path /= path_tables .and. minus_one) then
+            h = h*two_to(-e)
+            l = l*two_to(-e)
+            k = e
+            return
+        end if
+        call add_one(h, l)
+        if (path /= path_tables) return
+        a = iand(shifta(j, 8), 255)
+        if (a > 0) call times(steps(:, a), h, l)
+        m = shifta(j, 16)
+        if (m /= 0) then
+            call times(whole_scaled(:, m), h, l)
+            k = k + whole_exponent(m)
+        end if
+        if (minus_one) call subtract_one(negative, e, h, l, k)
+    end subroutine combine
+
+    !> (h, l, k) <- e^x - 1 from e^x = (h + l) 2^k for 2^-8 <= |x| < 128 (binary exponent
+    !! e; x >= -80, so k >= -116), |h + l| in [1/2, 8) after.
+    elemental subroutine subtract_one(negative, e, h, l, k)
+        logical, intent(in) :: negative
+        integer, intent(in) :: e
+        real(xp), intent(inout) :: h, l
+        integer, intent(inout) :: k
+        real(xp) :: s
+        if (.not. negative) then
+            ! (h + l - 2^-k) 2^k (2^-k below 2^-120 of h: dropped)
+            if (k <= 120) then
+                s = h - two_to(-k)
+                l = l + ((h - s) - two_to(-k))
+                h = s
+            end if
+        else
+            ! (h + l) 2^k - 1 in (-1, 0)
+            h = h*two_to(k)
+            l = l*two_to(k)
+            s = h - 1.0_xp
+            l = l + (h - (s + 1.0_xp))
+            h = s
+            k = 0
+        end if
+        if (e < 0) then
+            ! (k = 0 here) the pair to [1/2, 4): times 2^-e
+            h = h*two_to(-e)
+            l = l*two_to(-e)
+            k = e
+        end if
+    end subroutine subtract_one
+
+    !> expm1(r) for the pair r = h + l (|r| <= 2^-16, |l| <= ulp(h)), in place, within
+    !! about 2^-115 of r: r + r^2/2 + r^3 (1/6 + r t), r^2 = p + pe and r^3 (1/6 + ...)
+    !! by Dekker's exact products, t = 1/24 + ... + r^3/5040 in x87 (its rounding, 2^-64
+    !! of r/24 in 1/6 + r t, is 2^-115.6 of r at most), l by e^h l.
+    elemental subroutine series(h, l)
+        real(xp), intent(inout) :: h, l
+        real(xp) :: a1, a2, b1, b2, c1, c2, p, pe, t, g, gl, q, ql, c, cl, s, se, u, ue
+        call split(h, a1, a2)
+        p = h*h
+        pe = ((a1*a1 - p) + 2.0_xp*a1*a2) + a2*a2
+        t = h*(coefficients(1) + h*(coefficients(2) + h*(coefficients(3) &
+            + h*coefficients(4))))
+        g = sixth(1) + t
+        gl = (t - (g - sixth(1))) + sixth(2)
+        ! q + ql = h (g + gl), then c + cl = (p + pe)(q + ql)
+        call split(g, b1, b2)
+        q = h*g
+        ql = ((((a1*b1 - q) + a1*b2) + a2*b1) + a2*b2) + h*gl
+        call split(p, c1, c2)
+        call split(q, b1, b2)
+        c = p*q
+        cl = ((((c1*b1 - c) + c1*b2) + c2*b1) + c2*b2) + (p*ql + pe*q)
+        ! h + p/2 + c by fast two-sums, the low parts summed
+        s = h + 0.5_xp*p
+        se = 0.5_xp*p - (s - h)
+        u = s + c
+        ue = c - (u - s)
+        l = (((se + ue) + 0.5_xp*pe) + cl) + l*(1.0_xp + h*(1.0_xp + 0.5_xp*h))
+        h = u + l
+        l = l - (h - u)
+    end subroutine series
+
+    !> (h, l) <- a + (h + l) + a (h + l), i.e. expm1(b + r) = expm1(b) + e^b expm1(r) for
+    !! the table pair a = expm1(b), (h + l) = expm1(r) (|h| < |a(1)|, a of its sign or
+    !! |h| below 2^-40).
+    pure subroutine expm1_step(a, h, l)
+        real(xp), intent(in) :: a(2)
+        real(xp), intent(inout) :: h, l
+        real(xp) :: a1, a2, b1, b2, p, pl, u, ue, w, we
+        call split(h, a1, a2)
+        call split(a(1), b1, b2)
+        p = a(1)*h
+        pl = ((((a1*b1 - p) + a1*b2) + a2*b1) + a2*b2) + (a(1)*l + a(2)*h)
+        u = a(1) + h
+        ue = h - (u - a(1))
+        w = u + p
+        we = p - (w - u)
+        l = ((ue + we) + (a(2) + l)) + pl
+        h = w + l
+        l = l - (h - w)
+    end subroutine expm1_step
+
+    !> (h, l) <- 1 + h + l for |h| < 1/2.
+    elemental subroutine add_one(h, l)
+        real(xp), intent(inout) :: h, l
+        real(xp) :: s
+        s = 1.0_xp + h
+        l = (h - (s - 1.0_xp)) + l
+        h = s
+    end subroutine add_one
+
+    !> (h, l) <- (h + l)(a(1) + a(2)) for a table pair a: Dekker's exact product of the
+    !! high parts, the cross products (l a(2), 2^-128 of the product, dropped); the result
+    !! not renormalized (|l| within about ulp(h)).
+    pure subroutine times(a, h, l)
+        real(xp), intent(in) :: a(2)
+        real(xp), intent(inout) :: h, l
+        real(xp) :: a1, a2, b1, b2, p
+        call split(h, a1, a2)
+        call split(a(1), b1, b2)
+        p = h*a(1)
+        l = ((((a1*b1 - p) + a1*b2) + a2*b1) + a2*b2) + (h*a(2) + l*a(1))
+        h = p
+    end subroutine times
+
+    !> Veltkamp's split of a into a1 + a2, each of 32 bits or fewer (exact).
+    elemental subroutine split(a, a1, a2)
+        real(xp), intent(in) :: a
+        real(xp), intent(out) :: a1, a2
+        real(xp) :: c
+        c = splitter*a
+        a1 = c - (c - a)
+        a2 = a - a1
+    end subroutine split
+
+    !> Knuth's two-sum: s + e = a + b exactly.
+    elemental subroutine two_sum(a, b, s, e)
+        real(xp), intent(in) :: a, b
+        real(xp), intent(out) :: s, e
+        real(xp) :: v
+        s = a + b
+        v = s - a
+        e = (a - (s - v)) + (b - v)
+    end subroutine two_sum
+
+    !> The unbiased binary exponent of x (floor(log2 |x|) for normal x; -16383 for zero
+    !! and subnormals, 16384 for Inf and NaN).
+    elemental function binary_exponent(x) result(e)
+        real(qp), intent(in) :: x
+        integer :: e
+        e = int(iand(ishft(transfer(x, 0_i128), -112), 32767_i128)) - 16383
+    end function binary_exponent
+
+    !> For 2^-16 <= |x| < 128 (binary exponent e): |x| = j/65536 + r, 0 <= r < 2^-16, on
+    !! the bits (j, r exact); with `floored`, x = j/65536 + r (j = floor(65536 x), r >= 0),
+    !! else j >= 0 and r of x's sign. r as the pair (h, l).
+    elemental subroutine reduce_table(x, e, floored, j, h, l)
+        real(qp), intent(in) :: x
+        integer, intent(in) :: e
+        logical, intent(in) :: floored
+        integer, intent(out) :: j
+        real(xp), intent(out) :: h, l
+        integer(i128) :: f
+        integer :: shift
+        logical :: negative
+        shift = 96 - e
+        f = significand(x)
+        j = int(ishft(f, -shift))
+        f = iand(f, ishft(1_i128, shift) - 1)
+        negative = signbit(x)
+        if (negative .and. floored) then
+            j = -j
+            negative = .false.
+            if (f /= 0) then
+                j = j - 1
+                f = ishft(1_i128, shift) - f
+            end if
+        end if
+        call bits_pair(f, e, negative, h, l)
+    end subroutine reduce_table
+
+    !> The sign bit of x (no binary128 comparison).
+    elemental logical function signbit(x)
+        real(qp), intent(in) :: x
+        signbit = transfer(x, 0_i128) < 0_i128
+    end function signbit
+
+    !> The 113-bit significand of normal x (hidden bit included) as an integer.
+    elemental function significand(x) result(f)
+        real(qp), intent(in) :: x
+        integer(i128) :: f
+        f = ior(iand(transfer(x, 0_i128), low112), ishft(1_i128, 112))
+    end function significand
+
+    !> +-f 2^(e-112) as the pair (h, l), exactly (0 <= f < 2^113, -113 <= e <= 13).
+    elemental subroutine bits_pair(f, e, negative, h, l)
+        integer(i128), intent(in) :: f
+        integer, intent(in) :: e
+        logical, intent(in) :: negative
+        real(xp), intent(out) :: h, l
+        real(xp) :: s, scale
+        scale = two_to(e)*two_to(-112)
+        s = real(int(ishft(f, -50), int64), xp)*(scale*two_to(50))
+        l = real(int(iand(f, low50), int64), xp)*scale
+        h = s + l
+        l = l - (h - s)
+        if (negative) then
+            h = -h
+            l = -l
+        end if
+    end subroutine bits_pair
+
+    !> (h + l) 2^k rounded to binary128 (to nearest) on the bits, for |h + l| in
+    !! [1/2, 8) and a normal result: the pair renormalized, h's significand (its leading
+    !! bit dropped) and l in units of the result's last place, rounded by an x87
+    !! addition; the integers through double precision (exact: each below 2^53; no
+    !! change of the x87 rounding mode).
+    elemental function to_quad(h, l, k) result(y)
+        real(xp), intent(in) :: h, l
+        integer, intent(in) :: k
+        real(qp) :: y
+        real(xp), parameter :: three_2_62 = 3.0_xp*2.0_xp**62
+        real(xp) :: a, b, t, a1, a2
+        integer :: e
+        integer(int64) :: s, n
+        integer(i128) :: bits
+        a = h + l
+        b = l - (a - h)
+        t = abs(a)
+        e = -1
+        if (t >= 1.0_xp) e = 0
+        if (t >= 2.0_xp) e = 1
+        if (t >= 4.0_xp) e = 2
+        ! s = t 2^(63-e) - 2^63 from t's halves (t's 32 high bits 2^(63-e) - 3 2^62 is
+        ! below 2^62 in size and a multiple of 2^32)
+        call split(t, a1, a2)
+        s = int(real(a1*two_to(63 - e) - three_2_62, real64), int64) + ishft(1_int64, 62) &
+            + int(real(a2*two_to(63 - e), real64), int64)
+        t = b*two_to(112 - e)
+        if (a < 0.0_xp) t = -t
+        ! (h exactly 2^e, l pulling below: the last place is half as large)
+        if (s == 0 .and. t < 0.0_xp) t = t + t
+        n = int(real((t + round_magic) - round_magic, real64), int64)
+        bits = ishft(int(e + k + 16383, i128), 112) + ishft(int(s, i128), 49) + int(n, i128)
+        if (a < 0.0_xp) bits = ibset(bits, 127)
+        y = transfer(bits, y)
     end function to_quad
-
-    !> r in the hardware kind of the series' tail (x87 extended: on the bits).
-    elemental function to_tail(r) result(t)
-        real(qp), intent(in) :: r
-        real(tail_kind) :: t
-        if (tail_kind == xp) then
-            t = real(hardware_real(r), tail_kind)
-        else
-            t = real(r, tail_kind)
-        end if
-    end function to_tail
 
 end module brachistochrone_fast_exp
