@@ -3518,7 +3518,8 @@ contains
     !! small steps), but x0 exp(dy) for dy < -1/2, where 1 + expm1(dy) keeps only the
     !! digits of exp(dy) above eps (below dy = -78 none: x0 + x0 expm1(dy) = 0, and
     !! next to the sector's edge the Newton step in log R is often -100 or more; expm1's
-    !! few ulps (`fast_expm1`) are a few ulps of x0 expm1(dy), far below x0's rounding)
+    !! rounding (`fast_expm1`, within 0.6 ulp) is below an ulp of x0 expm1(dy), far below
+    !! x0's rounding)
     elemental function log_step(x0, dy) result(x)
         real(qp), intent(in) :: x0, dy
         real(qp) :: x
