@@ -21,7 +21,7 @@ program engine_fuzz
     implicit none
     type(central_force_model) :: m
     type(endpoint_solution) :: s
-    character(len=32) :: text
+    character(len=64) :: text
     real(qp) :: n, limit, rho, psi, u(3), worst_rho, worst_psi, angle, length, time, residual
     integer :: status, checked
     real :: t0, t1

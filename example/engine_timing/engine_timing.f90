@@ -30,7 +30,7 @@ program engine_timing
     type(central_force_model) :: general
     type(inverse_square_model) :: fast
     type(endpoint_solution) :: solution
-    character(len=32) :: field, text
+    character(len=64) :: field, text
     real(qp) :: exponent, limit, rho(n_rho), frac(n_psi)
     real(qp), allocatable :: t_general(:, :), t_fast(:, :), worst(:)
     integer :: repeats, k, i, j, failed, r

@@ -24,7 +24,7 @@ program field_timing
     implicit none
     integer, parameter :: n_rho = 6, n_psi = 6, inner = 4
     class(brachistochrone_field), allocatable :: field, reference
-    character(len=32) :: name, text
+    character(len=64) :: name, text
     real(qp) :: exponent, limit, rho(n_rho), frac(n_psi), near(3)
     real(qp), parameter :: rho_fast(n_rho) = [0.05_qp, 0.25_qp, 0.5_qp, 0.8_qp, 0.95_qp, 1.0_qp]
     real(qp), allocatable :: t_field(:, :), t_fast(:, :), each(:), each_fast(:)
