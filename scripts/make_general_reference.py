@@ -8,6 +8,7 @@ Command (from the repository root), one field per run:
     .venv/bin/python scripts/make_general_reference.py logarithmic > data/reference/general_logarithmic_mpmath.csv
     .venv/bin/python scripts/make_general_reference.py harmonic > data/reference/general_harmonic_mpmath.csv
     .venv/bin/python scripts/make_general_reference.py power2 > data/reference/general_power2_mpmath.csv
+    .venv/bin/python scripts/make_general_reference.py power32 > data/reference/general_power32_mpmath.csv
 
 Speed laws v^2 = P(x) (release from rest at radius 1): power law F = 1/r^n,
 P = 2 (x^(1-n) - 1)/(n - 1) (power2 is the inverse square of the fast path);
@@ -218,10 +219,22 @@ def binary128(x):
 EDGE_RADII = {"harmonic": ["1e-6", "1e-12", "1e-20"], "power2": ["1e-6", "1e-20", "1e-30"]}
 
 
-def precisions(name, r):
-    """(low, high) digits for a row with apse radius r, as a 1-tuple, or ()."""
-    if name in ("harmonic", "power2") and mp.mpf(r) < mp.mpf("1e-15"):
+# (low, high) digits per class where a field needs more than the defaults: for n = 32
+# R-bar's conditioning at the edge of the sector grows like R^(-(n-1)/2) (about 1e31 at
+# R = 0.01), and the first half-arch's tiny psi (1e-739 at R = 1e-45) loses about 30 digits
+# in the quadrature: at 55 and 70 digits those rows agreed to only 28-40.
+CLASS_PRECISIONS = {"power32": {"complete_small_r": (110, 130), "edge_small_r": (110, 130),
+                                "first_small_r": (85, 100)}}
+
+
+def precisions(name, r, cls=None):
+    """(low, high) digits for a row with apse radius r (and class cls), as a 1-tuple,
+    or ()."""
+    if name in ("harmonic", "power2") and mp.mpf(r) < mp.mpf("1e-15") and \
+            cls in ("complete_small_r", "edge_small_r"):
         return ((85, 100),)
+    if cls in CLASS_PRECISIONS.get(name, {}):
+        return (CLASS_PRECISIONS[name][cls],)
     return ()
 
 
@@ -255,7 +268,7 @@ def cases(field):
         small = EDGE_RADII[field.name]
     for r in (["0.1", "0.03"] if steep else small):
         out.append(("complete_small_r", mp.mpf(1), mp.mpf(r), True, False)
-                   + precisions(field.name, r))
+                   + precisions(field.name, r, "complete_small_r"))
     # general endpoints, both half-arches
     for rho in [binary128(mp.mpf("0.9")), half, tenth]:
         for frac in ["0.3", "0.8"]:
@@ -271,10 +284,11 @@ def cases(field):
         edge = EDGE_RADII[field.name]
     for rho in [half, tenth]:
         for r in ["1e-12", "1e-30", "1e-45"]:
-            out.append(("first_small_r", rho, mp.mpf(r), False, False))
+            out.append(("first_small_r", rho, mp.mpf(r), False, False)
+                       + precisions(field.name, r, "first_small_r"))
         for r in edge:
             out.append(("edge_small_r", rho, mp.mpf(r), True, False)
-                       + precisions(field.name, r))
+                       + precisions(field.name, r, "edge_small_r"))
     # within 1e-17 of the apse, both sides
     for rho in [mp.mpf("0.75"), tenth]:
         for gap in ["1e-17", "1e-25"]:
@@ -314,7 +328,7 @@ def main():
         print(",".join(rows[-1]), file=sys.stderr, flush=True)
     print("# general engine references, field %s: scripts/make_general_reference.py %s"
           % (name, name))
-    print("# mpmath 55 and 70 digits (85 and 100 where marked in the script) on Tee (27), "
+    print("# mpmath 55 and 70 digits (more where precisions() says, see the script) on Tee (27), "
           "(33), (39); psi is a binary128 number")
     print("class,rho,psi,arch,R,s,t,agreement,cond_R,cond_s,cond_t")
     for row in rows:
