@@ -97,6 +97,8 @@ contains
         call check(inexact_squares == 0, 'fast_sqrt exact on perfect squares')
         call check(worst_inverse <= 3.0_qp, 'inverse_sqrt within 3 ulp of 1/sqrt(x)')
         call check(worst_inverse_exact <= 1.0_qp, 'inverse_sqrt within an ulp of the exact')
+        call check(bottom_edge_error() <= 0.51_qp, &
+                   'fast_sqrt within 0.51 ulp at binade edges, bottom of the normal range')
         ! (subnormal: the intrinsic at run time; the compiler's own is correctly rounded)
         x = tiny(x)*real(samples, qp)**(-2)
         call check(fast_sqrt(0.0_qp) == 0.0_qp .and. fast_sqrt(4.0_qp) == 2.0_qp .and. &
@@ -106,6 +108,25 @@ contains
                    ieee_is_nan(fast_sqrt(-1.0_qp)), &
                    'fast_sqrt: zero, exact, subnormal, infinity, NaN, negative (NaN)')
     end subroutine square_root_tests
+
+    !> fast_sqrt's worst error (`root_error`) next to every power of two from the smallest
+    !! normal to 2^-15982 (x = 2^e (1 + j 2^-112) and 2^e (2 - j 2^-112), j = 1 .. 6:
+    !! hardware roots at a binade's edge; their residual, about 2^-63 x or less, is below
+    !! x87's normal range there).
+    function bottom_edge_error() result(worst)
+        real(qp) :: worst
+        real(qp) :: x
+        integer :: e, j
+        worst = 0.0_qp
+        do e = minexponent(x) - 1, minexponent(x) + 400
+            do j = 1, 6
+                x = scale(1.0_qp + j*epsilon(x), e)
+                worst = max(worst, abs(root_error(x, fast_sqrt(x))))
+                x = scale(2.0_qp - j*epsilon(x), e)
+                worst = max(worst, abs(root_error(x, fast_sqrt(x))))
+            end do
+        end do
+    end function bottom_edge_error
 
     !> (s - sqrt(x))/ulp(s) from the exact residual: x and s scaled by 4^k and 2^k into
     !! [1, 4) and [1, 2) (exactly), s^2 = p + e exactly (Dekker's product), x - p exact

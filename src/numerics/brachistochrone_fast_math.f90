@@ -182,11 +182,25 @@ contains
         ! in another binade than the root's: the correction in binary128
         call add_on_bits(root_bits, root_exponent, nearest_integer(quotient), s, done)
         if (.not. done) then
-            s = quad_words(low, high)
-            s = quad_real(root) + quad_real(hardware_real(s - quad_real(root)**2) &
-                                            /(2.0_xp*root))
+            ! (x below 2^-16127: x 2^256 and its root 2^128, else the residual, 2^-63 x or
+            ! less, falls below x87's normal range and loses its last bits)
+            if (exponent < 256_int64) then
+                s = 2.0_qp**(-128)*edge_root(quad_words(low, high)*2.0_qp**256, &
+                                             root*2.0_xp**128)
+            else
+                s = edge_root(quad_words(low, high), root)
+            end if
         end if
     end function fast_sqrt
+
+    !> sqrt(x) from its hardware root s at the edge of a binade: s + (x - s^2)/(2 s), the
+    !! residual in binary128 (x - s^2 normal in x87 extended: x above 2^-16127).
+    elemental function edge_root(x, root) result(s)
+        real(qp), intent(in) :: x !! positive normal argument
+        real(xp), intent(in) :: root !! its hardware square root
+        real(qp) :: s
+        s = quad_real(root) + quad_real(hardware_real(x - quad_real(root)**2)/(2.0_xp*root))
+    end function edge_root
 
     !> (x - s^2)/(2 s) in units of 2^-112 of s's binade (below 2^51; to about 2^-10 of a
     !! unit): x positive normal (binary128 words `low`, `high`, biased exponent
