@@ -4,7 +4,7 @@
 module test_fast_math
     use brachistochrone_kinds, only: qp, xp
     use brachistochrone_fast_math, only: fast_sqrt, inverse_sqrt, quad_real, hardware_real, &
-                                         double_real
+                                         double_real, hardware_arithmetic_ok
     use, intrinsic :: iso_fortran_env, only: int64, int16, real64
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_positive_inf, ieee_quiet_nan, &
                                              ieee_negative_inf, ieee_signaling_nan, &
@@ -25,7 +25,33 @@ contains
         call quad_real_tests()
         call hardware_real_special_tests()
         call double_real_tests()
+        call rounding_mode_tests()
     end subroutine run_fast_math_tests
+
+    !> hardware_arithmetic_ok: true in the default environment, false rounding upward or
+    !! toward zero; fast_sqrt of the largest numbers rounding upward (the hardware root
+    !! rounds up to 2^8192, whose square overflowed: -Inf) positive and finite.
+    subroutine rounding_mode_tests()
+        use, intrinsic :: ieee_arithmetic, only: ieee_set_rounding_mode, ieee_up, &
+                                                 ieee_to_zero, ieee_nearest, &
+                                                 ieee_support_rounding
+        real(qp) :: roots(3)
+        logical :: default_ok, up_ok, zero_ok
+        default_ok = hardware_arithmetic_ok()
+        if (.not. (ieee_support_rounding(ieee_up, 1.0_xp) .and. &
+                   ieee_support_rounding(ieee_to_zero, 1.0_xp))) return
+        call ieee_set_rounding_mode(ieee_up)
+        up_ok = hardware_arithmetic_ok()
+        roots = fast_sqrt([huge(1.0_qp), nearest(huge(1.0_qp), -1.0_qp), &
+                           nearest(nearest(huge(1.0_qp), -1.0_qp), -1.0_qp)])
+        call ieee_set_rounding_mode(ieee_to_zero)
+        zero_ok = hardware_arithmetic_ok()
+        call ieee_set_rounding_mode(ieee_nearest)
+        call check(default_ok .and. .not. up_ok .and. .not. zero_ok, &
+                   'hardware_arithmetic_ok: true by default, false rounding up, to zero')
+        call check(all(roots > 2.0_qp**8191 .and. roots <= 2.0_qp**8192), &
+                   'fast_sqrt of the largest numbers rounding upward: positive, finite')
+    end subroutine rounding_mode_tests
 
     !> A positive argument of the draw: every binade of binary128's normal range (random
     !! significands), and next to the cases the hardware root treats apart: perfect
