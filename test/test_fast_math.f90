@@ -26,7 +26,37 @@ contains
         call hardware_real_special_tests()
         call double_real_tests()
         call rounding_mode_tests()
+        call thread_tests()
     end subroutine run_fast_math_tests
+
+    !> The primitives in four OpenMP threads (interleaved arguments) give the serial
+    !! results bit for bit (their tables are parameters: no state between calls).
+    subroutine thread_tests()
+        use brachistochrone_fast_exp, only: fast_exp, fast_expm1
+        integer, parameter :: count = 20000
+        real(qp), allocatable :: x(:), serial(:, :), threaded(:, :)
+        integer :: i
+        allocate (x(count), serial(6, count), threaded(6, count))
+        call random_number(x)
+        x = (x - 0.5_qp)*2.0_qp**int(40.0_qp*x - 10.0_qp)
+        do i = 1, count
+            serial(:, i) = primitives(x(i))
+        end do
+        !$omp parallel do num_threads(4) schedule(static, 1) default(shared) private(i)
+        do i = 1, count
+            threaded(:, i) = primitives(x(i))
+        end do
+        !$omp end parallel do
+        call check(all(transfer(serial, [0_int64]) == transfer(threaded, [0_int64])), &
+                   'fast_exp, fast_expm1, fast_sqrt, inverse_sqrt, conversions: threads')
+    contains
+        pure function primitives(v) result(values)
+            real(qp), intent(in) :: v
+            real(qp) :: values(6)
+            values = [fast_exp(v), fast_expm1(v), fast_sqrt(abs(v)), inverse_sqrt(abs(v)), &
+                      quad_real(hardware_real(v/3.0_qp)), real(double_real(v), qp)]
+        end function primitives
+    end subroutine thread_tests
 
     !> hardware_arithmetic_ok: true in the default environment, false rounding upward or
     !! toward zero; fast_sqrt of the largest numbers rounding upward (the hardware root
