@@ -4,7 +4,7 @@
 module test_fast_math
     use brachistochrone_kinds, only: qp, xp
     use brachistochrone_fast_math, only: fast_sqrt, inverse_sqrt, quad_real, hardware_real, &
-                                         double_real
+                                         double_real, hardware_arithmetic_ok
     use, intrinsic :: iso_fortran_env, only: int64, int16, real64
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_positive_inf, ieee_quiet_nan, &
                                              ieee_negative_inf, ieee_signaling_nan, &
@@ -25,7 +25,63 @@ contains
         call quad_real_tests()
         call hardware_real_special_tests()
         call double_real_tests()
+        call rounding_mode_tests()
+        call thread_tests()
     end subroutine run_fast_math_tests
+
+    !> The primitives in four OpenMP threads (interleaved arguments) give the serial
+    !! results bit for bit (their tables are parameters: no state between calls).
+    subroutine thread_tests()
+        use brachistochrone_fast_exp, only: fast_exp, fast_expm1
+        integer, parameter :: count = 20000
+        real(qp), allocatable :: x(:), serial(:, :), threaded(:, :)
+        integer :: i
+        allocate (x(count), serial(6, count), threaded(6, count))
+        call random_number(x)
+        x = (x - 0.5_qp)*2.0_qp**int(40.0_qp*x - 10.0_qp)
+        do i = 1, count
+            serial(:, i) = primitives(x(i))
+        end do
+        !$omp parallel do num_threads(4) schedule(static, 1) default(shared) private(i)
+        do i = 1, count
+            threaded(:, i) = primitives(x(i))
+        end do
+        !$omp end parallel do
+        call check(all(transfer(serial, [0_int64]) == transfer(threaded, [0_int64])), &
+                   'fast_exp, fast_expm1, fast_sqrt, inverse_sqrt, conversions: threads')
+    contains
+        pure function primitives(v) result(values)
+            real(qp), intent(in) :: v
+            real(qp) :: values(6)
+            values = [fast_exp(v), fast_expm1(v), fast_sqrt(abs(v)), inverse_sqrt(abs(v)), &
+                      quad_real(hardware_real(v/3.0_qp)), real(double_real(v), qp)]
+        end function primitives
+    end subroutine thread_tests
+
+    !> hardware_arithmetic_ok: true in the default environment, false rounding upward or
+    !! toward zero; fast_sqrt of the largest numbers rounding upward (the hardware root
+    !! rounds up to 2^8192, whose square overflowed: -Inf) positive and finite.
+    subroutine rounding_mode_tests()
+        use, intrinsic :: ieee_arithmetic, only: ieee_set_rounding_mode, ieee_up, &
+                                                 ieee_to_zero, ieee_nearest, &
+                                                 ieee_support_rounding
+        real(qp) :: roots(3)
+        logical :: default_ok, up_ok, zero_ok
+        default_ok = hardware_arithmetic_ok()
+        if (.not. (ieee_support_rounding(ieee_up, 1.0_xp) .and. &
+                   ieee_support_rounding(ieee_to_zero, 1.0_xp))) return
+        call ieee_set_rounding_mode(ieee_up)
+        up_ok = hardware_arithmetic_ok()
+        roots = fast_sqrt([huge(1.0_qp), nearest(huge(1.0_qp), -1.0_qp), &
+                           nearest(nearest(huge(1.0_qp), -1.0_qp), -1.0_qp)])
+        call ieee_set_rounding_mode(ieee_to_zero)
+        zero_ok = hardware_arithmetic_ok()
+        call ieee_set_rounding_mode(ieee_nearest)
+        call check(default_ok .and. .not. up_ok .and. .not. zero_ok, &
+                   'hardware_arithmetic_ok: true by default, false rounding up, to zero')
+        call check(all(roots > 2.0_qp**8191 .and. roots <= 2.0_qp**8192), &
+                   'fast_sqrt of the largest numbers rounding upward: positive, finite')
+    end subroutine rounding_mode_tests
 
     !> A positive argument of the draw: every binade of binary128's normal range (random
     !! significands), and next to the cases the hardware root treats apart: perfect
@@ -97,6 +153,8 @@ contains
         call check(inexact_squares == 0, 'fast_sqrt exact on perfect squares')
         call check(worst_inverse <= 3.0_qp, 'inverse_sqrt within 3 ulp of 1/sqrt(x)')
         call check(worst_inverse_exact <= 1.0_qp, 'inverse_sqrt within an ulp of the exact')
+        call check(bottom_edge_error() <= 0.51_qp, &
+                   'fast_sqrt within 0.51 ulp at binade edges, bottom of the normal range')
         ! (subnormal: the intrinsic at run time; the compiler's own is correctly rounded)
         x = tiny(x)*real(samples, qp)**(-2)
         call check(fast_sqrt(0.0_qp) == 0.0_qp .and. fast_sqrt(4.0_qp) == 2.0_qp .and. &
@@ -106,6 +164,25 @@ contains
                    ieee_is_nan(fast_sqrt(-1.0_qp)), &
                    'fast_sqrt: zero, exact, subnormal, infinity, NaN, negative (NaN)')
     end subroutine square_root_tests
+
+    !> fast_sqrt's worst error (`root_error`) next to every power of two from the smallest
+    !! normal to 2^-15982 (x = 2^e (1 + j 2^-112) and 2^e (2 - j 2^-112), j = 1 .. 6:
+    !! hardware roots at a binade's edge; their residual, about 2^-63 x or less, is below
+    !! x87's normal range there).
+    function bottom_edge_error() result(worst)
+        real(qp) :: worst
+        real(qp) :: x
+        integer :: e, j
+        worst = 0.0_qp
+        do e = minexponent(x) - 1, minexponent(x) + 400
+            do j = 1, 6
+                x = scale(1.0_qp + j*epsilon(x), e)
+                worst = max(worst, abs(root_error(x, fast_sqrt(x))))
+                x = scale(2.0_qp - j*epsilon(x), e)
+                worst = max(worst, abs(root_error(x, fast_sqrt(x))))
+            end do
+        end do
+    end function bottom_edge_error
 
     !> (s - sqrt(x))/ulp(s) from the exact residual: x and s scaled by 4^k and 2^k into
     !! [1, 4) and [1, 2) (exactly), s^2 = p + e exactly (Dekker's product), x - p exact

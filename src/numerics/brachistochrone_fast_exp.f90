@@ -18,7 +18,11 @@
 !! bench_fast_exp.sh): exp 0.50, expm1 0.60 units in the last place (the previous
 !! binary128 version 2.3 and 3.1, libquadmath 0.50 and 1.45); about 80 ns a call, a
 !! quarter of the previous version's time. Where `xp` is not x87 extended: the library's
-!! exp and expm1.
+!! exp and expm1. The pairs need x87 arithmetic at 64 bits, rounding to nearest (the
+!! defaults; `brachistochrone_fast_math`'s `hardware_arithmetic_ok` checks them): at 53
+!! bits (gfortran -mpc64, fldcw) the results are wrong by up to 10^22 ulp, rounding
+!! toward zero or upward by about an ulp. The tables are parameters (no state: safe in
+!! threads).
 module brachistochrone_fast_exp
     use brachistochrone_kinds, only: qp, xp
     use brachistochrone_fast_exp_tables, only: whole_exponent, whole_scaled, steps, fine, &

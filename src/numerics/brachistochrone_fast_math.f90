@@ -26,13 +26,23 @@
 !! within 0.5 ulp and a few thousandths (test_fast_math measures them against the exact
 !! residuals; libquadmath's sqrtq is up to 0.75 ulp off), each about 2.5 times faster than
 !! the binary128 corrections they replace.
+!!
+!! Assumptions (x86-64): the x87 precision control at 64 bits and rounding to nearest,
+!! the defaults, which `hardware_arithmetic_ok` checks. A program linked with gfortran's
+!! -mpc64 or -mpc32, or one that loads the x87 control word (fldcw, fesetround, a
+!! library doing so) breaks them, and then the results are silently wrong (measured:
+!! `fast_sqrt` and `fast_exp` by up to 10^22 ulp at 53 bits, `fast_sqrt` of the largest
+!! numbers -Inf rounding upward; libquadmath's sqrtq, seeded by sqrtl, itself 32 ulp at
+!! 53 bits and 9e18 at 24), as are the engines' pairs of x87 numbers. The conversions
+!! on the bits round to nearest in every rounding mode (the library's follow it).
 module brachistochrone_fast_math
     use brachistochrone_kinds, only: qp, xp
     use, intrinsic :: iso_fortran_env, only: real64, int64, int16
     implicit none
     private
 
-    public :: inverse_sqrt, hardware_real, fast_sqrt, quad_real, double_real
+    public :: inverse_sqrt, hardware_real, fast_sqrt, quad_real, double_real, &
+              hardware_arithmetic_ok
 
     !> Widest hardware real kind below quad (x87 extended where available).
     integer, parameter :: seed_kind_candidate = selected_real_kind(18, 4931)
@@ -182,11 +192,29 @@ contains
         ! in another binade than the root's: the correction in binary128
         call add_on_bits(root_bits, root_exponent, nearest_integer(quotient), s, done)
         if (.not. done) then
-            s = quad_words(low, high)
-            s = quad_real(root) + quad_real(hardware_real(s - quad_real(root)**2) &
-                                            /(2.0_xp*root))
+            ! (x below 2^-16127: x 2^256 and its root 2^128, else the residual, 2^-63 x or
+            ! less, falls below x87's normal range and loses its last bits; x above
+            ! 2^16127: 2^-256 and 2^-128, s^2 not to overflow where s rounds up to 2^8192)
+            if (exponent < 256_int64) then
+                s = 2.0_qp**(-128)*edge_root(quad_words(low, high)*2.0_qp**256, &
+                                             root*2.0_xp**128)
+            else if (exponent > 32766_int64 - 256_int64) then
+                s = 2.0_qp**128*edge_root(quad_words(low, high)*2.0_qp**(-256), &
+                                          root*2.0_xp**(-128))
+            else
+                s = edge_root(quad_words(low, high), root)
+            end if
         end if
     end function fast_sqrt
+
+    !> sqrt(x) from its hardware root s at the edge of a binade: s + (x - s^2)/(2 s), the
+    !! residual in binary128 (x - s^2 normal in x87 extended: x above 2^-16127).
+    elemental function edge_root(x, root) result(s)
+        real(qp), intent(in) :: x !! positive normal argument
+        real(xp), intent(in) :: root !! its hardware square root
+        real(qp) :: s
+        s = quad_real(root) + quad_real(hardware_real(x - quad_real(root)**2)/(2.0_xp*root))
+    end function edge_root
 
     !> (x - s^2)/(2 s) in units of 2^-112 of s's binade (below 2^51; to about 2^-10 of a
     !! unit): x positive normal (binary128 words `low`, `high`, biased exponent
@@ -217,6 +245,20 @@ contains
         reciprocal = two_52/real(shiftr(root_bits, 1), xp)
         quotient = real(int(shifta(residual, 3), int64), xp)*reciprocal
     end subroutine root_quotient
+
+    !> Whether the hardware arithmetic of kind `xp` rounds to its full precision (x87:
+    !! 64 bits) and to nearest, as this module, `brachistochrone_fast_exp` and the
+    !! engines' pairs of x87 numbers assume (see the module's header): a check for a
+    !! program to make once before it solves (it costs four additions).
+    logical function hardware_arithmetic_ok() result(ok)
+        real(xp), volatile :: one, step
+        one = 1.0_xp
+        step = 2.0_xp**(1 - digits(one))
+        ! 1 + ulp, 1 + 3/4 ulp to 1 + ulp and 1 + 1/4 ulp to 1 (nearest), 1 - 1/2 ulp
+        ! exact (2^-64 is the spacing below 1)
+        ok = one + step /= one .and. one + 0.75_xp*step == one + step .and. &
+             one + 0.25_xp*step == one .and. one - 0.5_xp*step /= one
+    end function hardware_arithmetic_ok
 
     !> v (|v| < 2^62) rounded to an integer by the hardware addition of 1.5 2^63 (to
     !! nearest, ties to even), read from the sum's significand.
