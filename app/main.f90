@@ -15,7 +15,7 @@ program main
     use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
     !$ use omp_lib, only: omp_set_num_threads, omp_get_max_threads
     use brachistochrone, only: brachistochrone_field, new_field, endpoint_solution, &
-                               status_ok, status_message
+                               status_ok, status_message, hardware_arithmetic_ok
     use brachistochrone_version, only: program_name, program_version
     use brachistochrone_endpoint_input, only: endpoint_table, message
     use brachistochrone_command_line, only: run_options, parse_command_line, write_usage, &
@@ -54,6 +54,10 @@ program main
     else if (status /= exit_ok) then
         call fail(exit_input, problem)
     end if
+    if (.not. hardware_arithmetic_ok()) call fail(exit_input, 'the x87 arithmetic is not '// &
+        'at its defaults (64-bit precision, rounding to nearest): a library or the link '// &
+        '(gfortran -mpc64, fldcw, fesetround) changed its control word, and the quad-'// &
+        'precision results would be wrong; run without that setting')
     !$ if (options%threads > 0) call omp_set_num_threads(options%threads)
     !$ if (options%threads == 0 .and. omp_get_max_threads() > max_threads) &
     !$     call fail(exit_input, 'OMP_NUM_THREADS asks for more than '// &

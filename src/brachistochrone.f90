@@ -57,6 +57,7 @@ module brachistochrone
             isochrone_time, isochrone_time_quadrature, joined_arches_period, &
             joined_arches_period_quadrature, complete_elliptic_k, pendulum_period, &
             pendulum_period_quadrature
+    use brachistochrone_fast_math, only: hardware_arithmetic_ok
     implicit none
     private
 
@@ -100,5 +101,7 @@ module brachistochrone
     public :: uniform_brachistochrone, cycloid_point, isochrone_time, &
               isochrone_time_quadrature, joined_arches_period, joined_arches_period_quadrature, &
               complete_elliptic_k, pendulum_period, pendulum_period_quadrature
+    ! the machine's arithmetic as the library assumes it (x87 at 64 bits, to nearest)
+    public :: hardware_arithmetic_ok
 
 end module brachistochrone
