@@ -69,6 +69,13 @@ int brachistochrone_solve_many(const char *force, double exponent, long n,
    "unknown status" for a number that is not a status code. */
 const char *brachistochrone_status_message(int status);
 
+/* 1 where the machine's x87 arithmetic is at its defaults (precision control at 64 bits,
+   rounding to nearest), as the library's quad-precision arithmetic assumes; 0 where the
+   program or a library changed them (gcc/gfortran -mpc64, fldcw, fesetround): the
+   results would then be wrong (by up to 1e22 ulp at 53 bits). Check it once before
+   solving. */
+int brachistochrone_arithmetic_ok(void);
+
 #ifdef __cplusplus
 }
 #endif

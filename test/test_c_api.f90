@@ -13,7 +13,8 @@ module test_c_api
                                       status_bad_exponent
     use brachistochrone_c_api, only: brachistochrone_solve, brachistochrone_solve_q, &
                                      brachistochrone_solve_many, &
-                                     brachistochrone_status_message
+                                     brachistochrone_status_message, &
+                                     brachistochrone_arithmetic_ok
     use testing, only: check, check_digits, section
     implicit none
     private
@@ -107,6 +108,8 @@ contains
                    message_of(-3_c_int) == 'unknown status' .and. &
                    index(message_of(int(status_unknown_field, c_int)), 'inverse_square') > 0, &
                    'brachistochrone_status_message: solved, unknown status, the force names')
+        call check(brachistochrone_arithmetic_ok() == 1_c_int, &
+                   'brachistochrone_arithmetic_ok: 1 at the x87 defaults')
     end subroutine check_single
 
     !> Harmonic field, surface to surface at angle pi/3: R_m = 1 - 1/3, t = pi sqrt(1 - R_m^2)

@@ -127,6 +127,7 @@ int main(void)
     code = brachistochrone_solve("inverse_square", 0.0, 1.5, 1.0, NULL, NULL, &c);
     check(code != 0 && isnan(c), "rho > 1 is an error");
     check(strcmp(brachistochrone_status_message(0), "solved") == 0, "message of status 0");
+    check(brachistochrone_arithmetic_ok() == 1, "the x87 arithmetic at its defaults");
     check(strcmp(brachistochrone_status_message(-7), "unknown status") == 0,
           "message of a number that is no status");
     check(brachistochrone_solve_many("inverse_square", 0.0, -1, rho, psi, NULL, NULL, NULL,

@@ -1,8 +1,8 @@
 !> The C interface of the library, declared in include/brachistochrone.h.
 !!
-!! Four functions with C linkage (bind(C)): solve one endpoint in double or in quad
-!! precision (`__float128`), solve many in parallel (OpenMP inside), and a message per
-!! status. The field is named by a string: 'inverse_square', 'power' (with `exponent`),
+!! Five functions with C linkage (bind(C)): solve one endpoint in double or in quad
+!! precision (`__float128`), solve many in parallel (OpenMP inside), a message per
+!! status, and whether the machine's x87 arithmetic is as the library assumes it. The field is named by a string: 'inverse_square', 'power' (with `exponent`),
 !! 'logarithmic', 'harmonic', 'repulsive' (the least-time brachistochrone, as the batch
 !! program's CSV). Values that do not exist are NaN: R-bar for radial fall and for
 !! unbounded (repulsive) curves, R-bar and s when the endpoint is inaccessible (t is then
@@ -32,12 +32,12 @@ module brachistochrone_c_api
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_finite
     use brachistochrone, only: qp, endpoint_solution, brachistochrone_field, new_field, &
                                field_names, status_ok, status_unknown_field, &
-                               status_message, arch_radial
+                               status_message, arch_radial, hardware_arithmetic_ok
     implicit none
     private
 
     public :: brachistochrone_solve, brachistochrone_solve_q, brachistochrone_solve_many, &
-              brachistochrone_status_message
+              brachistochrone_status_message, brachistochrone_arithmetic_ok
 
     !> Longest force name accepted (longer strings are unknown names).
     integer, parameter :: max_name_length = 32
@@ -160,6 +160,17 @@ contains
         !$omp end parallel do
         failures = int(min(count, int(huge(failures), c_long)), c_int)
     end function brachistochrone_solve_many
+
+    !> int brachistochrone_arithmetic_ok(void): 1 where the x87 arithmetic is at its
+    !! defaults (precision control at 64 bits, rounding to nearest), as the library's
+    !! quad-precision arithmetic assumes, 0 where the program or a library changed them
+    !! (gfortran -mpc64, fldcw, fesetround: results would be wrong, by up to 1e22 ulp at
+    !! 53 bits). A check to make once, before solving.
+    function brachistochrone_arithmetic_ok() result(ok) &
+            bind(C, name='brachistochrone_arithmetic_ok')
+        integer(c_int) :: ok
+        ok = merge(1_c_int, 0_c_int, hardware_arithmetic_ok())
+    end function brachistochrone_arithmetic_ok
 
     !> const char *brachistochrone_status_message(int status): one sentence per status
     !! code, NUL-terminated, in static storage (never freed by the caller); "unknown
