@@ -224,7 +224,8 @@ EDGE_RADII = {"harmonic": ["1e-6", "1e-12", "1e-20"], "power2": ["1e-6", "1e-20"
 # R = 0.01), and the first half-arch's tiny psi (1e-739 at R = 1e-45) loses about 30 digits
 # in the quadrature: at 55 and 70 digits those rows agreed to only 28-40.
 CLASS_PRECISIONS = {"power32": {"complete_small_r": (110, 130), "edge_small_r": (110, 130),
-                                "first_small_r": (85, 100)}}
+                                "first_small_r": (85, 100)},
+                    "power6": {"first_small_r": (85, 100)}}
 
 
 def precisions(name, r, cls=None):

@@ -3,8 +3,8 @@ module test_numerics
     use brachistochrone_kinds, only: qp, pi, eps_qp
     use brachistochrone_status, only: status_ok
     use brachistochrone_quadrature, only: gauss_legendre_rule, gauss_legendre, &
-            computed_gauss_legendre, univariate_integrand, integrate, integrate_adaptive, even_periodic_rule, &
-            even_periodic_trapezoid
+            computed_gauss_legendre, univariate_integrand, integrate, integrate_adaptive, &
+            even_periodic_rule, even_periodic_trapezoid
     use brachistochrone_roots, only: root_function, newton_bracketed, secant
     use brachistochrone_chebyshev, only: chebyshev_table, chebyshev_points, chebyshev_fit
     use brachistochrone_summation, only: compensated_sum

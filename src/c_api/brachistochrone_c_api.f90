@@ -2,7 +2,8 @@
 !!
 !! Five functions with C linkage (bind(C)): solve one endpoint in double or in quad
 !! precision (`__float128`), solve many in parallel (OpenMP inside), a message per
-!! status, and whether the machine's x87 arithmetic is as the library assumes it. The field is named by a string: 'inverse_square', 'power' (with `exponent`),
+!! status, and whether the machine's x87 arithmetic is as the library assumes it. The
+!! field is named by a string: 'inverse_square', 'power' (with `exponent`),
 !! 'logarithmic', 'harmonic', 'repulsive' (the least-time brachistochrone, as the batch
 !! program's CSV). Values that do not exist are NaN: R-bar for radial fall and for
 !! unbounded (repulsive) curves, R-bar and s when the endpoint is inaccessible (t is then

@@ -1405,7 +1405,8 @@ contains
         ! theta - target below what the hardware phase resolves next to the apse
         from_law = arch > near_apse .and. abs(f_top) <= apse_resolution*target
         if (from_law) then
-            ! the root from the square-root law (f = f_top -+ 2 A u + O(u^2): f there is 0 to O(u^2))
+            ! the root from the square-root law (f = f_top -+ 2 A u + O(u^2): f there is 0
+            ! to O(u^2))
             lo = 0.0_qp
             hi = sqrt(0.25_qp*(3.0_qp - 2.0_qp*rho))
             x0 = min(abs(f_top)/(2.0_qp*sqrt((rho - 1.0_qp)/(rho*(3.0_qp - 2.0_qp*rho)))), &

@@ -19,7 +19,8 @@ module brachistochrone_batch_run
             commit_outputs, discard_outputs, same_file, same_name, standard_output, safe_ok, &
             safe_refused
     use brachistochrone_version, only: program_name
-    use brachistochrone_command_line, only: run_options, exit_ok, exit_input, exit_unsolved, exit_io
+    use brachistochrone_command_line, only: run_options, exit_ok, exit_input, exit_unsolved, &
+                                            exit_io
     use brachistochrone_run_support, only: progress_type, timestamp
     use brachistochrone_strings, only: integer_text, escape_text
     implicit none

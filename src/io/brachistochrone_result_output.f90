@@ -11,7 +11,8 @@
 module brachistochrone_result_output
     use, intrinsic :: iso_fortran_env, only: compiler_version, compiler_options, int64
     use brachistochrone_kinds, only: qp
-    use brachistochrone_status, only: status_word, status_word_fixed, status_ok, status_inaccessible
+    use brachistochrone_status, only: status_word, status_word_fixed, status_ok, &
+                                      status_inaccessible
     use brachistochrone_version, only: program_name, program_version
     use brachistochrone_solution, only: endpoint_solution
     use brachistochrone_field_interface, only: brachistochrone_field
