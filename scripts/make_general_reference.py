@@ -9,6 +9,7 @@ Command (from the repository root), one field per run:
     .venv/bin/python scripts/make_general_reference.py harmonic > data/reference/general_harmonic_mpmath.csv
     .venv/bin/python scripts/make_general_reference.py power2 > data/reference/general_power2_mpmath.csv
     .venv/bin/python scripts/make_general_reference.py power32 > data/reference/general_power32_mpmath.csv
+    .venv/bin/python scripts/make_general_reference.py power6 > data/reference/general_power6_mpmath.csv
 
 Speed laws v^2 = P(x) (release from rest at radius 1): power law F = 1/r^n,
 P = 2 (x^(1-n) - 1)/(n - 1) (power2 is the inverse square of the fast path);
@@ -222,7 +223,8 @@ EDGE_RADII = {"harmonic": ["1e-6", "1e-12", "1e-20"], "power2": ["1e-6", "1e-20"
 # (low, high) digits per class where a field needs more than the defaults: for n = 32
 # R-bar's conditioning at the edge of the sector grows like R^(-(n-1)/2) (about 1e31 at
 # R = 0.01), and the first half-arch's tiny psi (1e-739 at R = 1e-45) loses about 30 digits
-# in the quadrature: at 55 and 70 digits those rows agreed to only 28-40.
+# in the quadrature: at 55 and 70 digits those rows agreed to only 28-40 (n = 6: one
+# first-half-arch row, R = 1e-45 at rho = 0.1, to 38.9).
 CLASS_PRECISIONS = {"power32": {"complete_small_r": (110, 130), "edge_small_r": (110, 130),
                                 "first_small_r": (85, 100)},
                     "power6": {"first_small_r": (85, 100)}}

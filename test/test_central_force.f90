@@ -64,6 +64,7 @@ contains
         call general_references('power3', power_law(n=3.0_qp))
         call general_references('logarithmic', logarithmic_law())
         call general_references('power10', power_law(n=10.0_qp))
+        call general_references('power6', power_law(n=6.0_qp))
         call general_references('power32', power_law(n=32.0_qp))
         ! (the inverse-square table through the general engine: its edge rows, R-bar = 1e-20
         ! and 1e-30, ended with R-bar = 0 and s to 30 digits before branch i11-edge)
