@@ -271,6 +271,55 @@ def roots(N):
     print(len(bad)); print('\n'.join(bad[:20]))
 
 
+def check_exponentials(args):
+    """exp and expm1 of the binary128 bit patterns args through the harness, against
+    mpmath (exact bits where the result is infinite, zero or subnormal; else in ulps,
+    bound 0.75) and libquadmath's special values; prints the counts and the worst."""
+    M112 = (1 << 112) - 1
+    def qb(s, e, f): return (s << 127) | (e << 112) | (f & M112)
+    def enc(v):  # mpf/Fraction -> nearest binary128 bits
+        if isinstance(v, mpmath.mpf):
+            m, e = mpmath.frexp(v)
+            v = Fraction(int(mpmath.ldexp(m, 400))) * Fraction(2) ** (e - 400)
+        v = Fraction(v)
+        return q_encode(1 if v < 0 else 0, abs(v))
+    lines = ['ex %032X' % b for b in args] + ['em %032X' % b for b in args]
+    out = run(lines)
+    worst = {}; n = {}; bad = []; nint = {}
+    for ln in out:
+        if not ln: continue
+        tag, a, r, i = ln.split()
+        b = int(a, 16); rb = int(r, 16); ib = int(i, 16)
+        n[tag] = n.get(tag, 0) + 1
+        d = q_decode(b)
+        if d[0] != 'num':
+            if rb != ib and not (q_decode(rb)[0] == 'nan' and q_decode(ib)[0] == 'nan'):
+                bad.append('special ' + ln)
+            continue
+        x = q_value_mpf(b)
+        if x == 0:
+            if rb != ib: bad.append('zero ' + ln)
+            continue
+        if abs(x) > 12000:
+            cr = qb(0, 0x7FFF, 0) if x > 0 else (0 if tag == 'ex' else qb(1, 16383, 0))
+            if rb != cr: bad.append('big %s exp %032X' % (ln, cr))
+            continue
+        ex = mpmath.exp(x) if tag == 'ex' else mpmath.expm1(x)
+        cr = enc(ex)
+        dc = q_decode(cr)
+        if dc[0] != 'num' or (cr & (0x7FFF << 112)) == 0:   # inf, zero or subnormal: exact bits
+            if rb != cr:
+                bad.append('range %s exp %032X' % (ln, cr))
+            continue
+        err = q_ulp_error(rb, ex)
+        if rb != ib: nint[tag] = nint.get(tag, 0) + 1
+        if err > worst.get(tag, (0,))[0]: worst[tag] = (float(err), ln)
+        if err > 0.75: bad.append('%.4f %s' % (err, ln))
+    print('counts', n, 'differ from libquadmath', nint)
+    for k, v in worst.items(): print(k, v)
+    print(len(bad)); print('\n'.join(bad[:30]))
+
+
 def exps(N, edges_only=False):
     mpmath.mp.prec = 320
     M112 = (1 << 112) - 1
@@ -325,41 +374,7 @@ def exps(N, edges_only=False):
     for _ in range(N // 2):
         v = mpmath.mpf(2) ** random.uniform(-120, 13.48) * random.choice([1, -1])
         args.append(enc(v) ^ random.getrandbits(40))
-    lines = ['ex %032X' % b for b in args] + ['em %032X' % b for b in args]
-    out = run(lines)
-    worst = {}; n = {}; bad = []; nint = {}
-    for ln in out:
-        if not ln: continue
-        tag, a, r, i = ln.split()
-        b = int(a, 16); rb = int(r, 16); ib = int(i, 16)
-        n[tag] = n.get(tag, 0) + 1
-        d = q_decode(b)
-        if d[0] != 'num':
-            if rb != ib and not (q_decode(rb)[0] == 'nan' and q_decode(ib)[0] == 'nan'):
-                bad.append('special ' + ln)
-            continue
-        x = q_value_mpf(b)
-        if x == 0:
-            if rb != ib: bad.append('zero ' + ln)
-            continue
-        if abs(x) > 12000:
-            cr = qb(0, 0x7FFF, 0) if x > 0 else (0 if tag == 'ex' else qb(1, 16383, 0))
-            if rb != cr: bad.append('big %s exp %032X' % (ln, cr))
-            continue
-        ex = mpmath.exp(x) if tag == 'ex' else mpmath.expm1(x)
-        cr = enc(ex)
-        dc = q_decode(cr)
-        if dc[0] != 'num' or (cr & (0x7FFF << 112)) == 0:   # inf, zero or subnormal: exact bits
-            if rb != cr:
-                bad.append('range %s exp %032X' % (ln, cr))
-            continue
-        err = q_ulp_error(rb, ex)
-        if rb != ib: nint[tag] = nint.get(tag, 0) + 1
-        if err > worst.get(tag, (0,))[0]: worst[tag] = (float(err), ln)
-        if err > 0.75: bad.append('%.4f %s' % (err, ln))
-    print('counts', n, 'differ from libquadmath', nint)
-    for k, v in worst.items(): print(k, v)
-    print(len(bad)); print('\n'.join(bad[:30]))
+    check_exponentials(args)
 
 
 def exp_edges(N):
@@ -388,41 +403,7 @@ def exp_edges(N):
             args.append(b0 + k)
         args.append(enc(Fraction(J, 65536) + Fraction(random.randrange(1, 1 << 20), 1 << 120)))
         args.append(enc(Fraction(J, 65536) - Fraction(random.randrange(1, 1 << 20), 1 << 120)))
-    lines = ['ex %032X' % b for b in args] + ['em %032X' % b for b in args]
-    out = run(lines)
-    worst = {}; n = {}; bad = []; nint = {}
-    for ln in out:
-        if not ln: continue
-        tag, a, r, i = ln.split()
-        b = int(a, 16); rb = int(r, 16); ib = int(i, 16)
-        n[tag] = n.get(tag, 0) + 1
-        d = q_decode(b)
-        if d[0] != 'num':
-            if rb != ib and not (q_decode(rb)[0] == 'nan' and q_decode(ib)[0] == 'nan'):
-                bad.append('special ' + ln)
-            continue
-        x = q_value_mpf(b)
-        if x == 0:
-            if rb != ib: bad.append('zero ' + ln)
-            continue
-        if abs(x) > 12000:
-            cr = qb(0, 0x7FFF, 0) if x > 0 else (0 if tag == 'ex' else qb(1, 16383, 0))
-            if rb != cr: bad.append('big %s exp %032X' % (ln, cr))
-            continue
-        ex = mpmath.exp(x) if tag == 'ex' else mpmath.expm1(x)
-        cr = enc(ex)
-        dc = q_decode(cr)
-        if dc[0] != 'num' or (cr & (0x7FFF << 112)) == 0:   # inf, zero or subnormal: exact bits
-            if rb != cr:
-                bad.append('range %s exp %032X' % (ln, cr))
-            continue
-        err = q_ulp_error(rb, ex)
-        if rb != ib: nint[tag] = nint.get(tag, 0) + 1
-        if err > worst.get(tag, (0,))[0]: worst[tag] = (float(err), ln)
-        if err > 0.75: bad.append('%.4f %s' % (err, ln))
-    print('counts', n, 'differ from libquadmath', nint)
-    for k, v in worst.items(): print(k, v)
-    print(len(bad)); print('\n'.join(bad[:30]))
+    check_exponentials(args)
 
 
 if __name__ == '__main__':
