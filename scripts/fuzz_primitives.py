@@ -98,6 +98,23 @@ def d_encode(s, v):
     if M >> 52 == 0: return (s << 63) | M
     return (s << 63) | ((q + 52 + 1023) << 52) | (M - (1 << 52))
 
+M112 = (1 << 112) - 1
+
+
+def qb(s, e, f):
+    """binary128 bits of sign s, biased exponent e, fraction f."""
+    return (s << 127) | (e << 112) | (f & M112)
+
+
+def enc(v):
+    """mpf or Fraction -> the nearest binary128's bits."""
+    if isinstance(v, mpmath.mpf):
+        m, e = mpmath.frexp(v)
+        v = Fraction(int(mpmath.ldexp(m, 400))) * Fraction(2) ** (e - 400)
+    v = Fraction(v)
+    return q_encode(1 if v < 0 else 0, abs(v))
+
+
 def q_value_mpf(b):
     d = q_decode(b)
     if d[0] != 'num': return None
@@ -120,8 +137,6 @@ def run(lines):
 
 
 def conversions(N):
-    M112 = (1 << 112) - 1
-    def qb(s, e, f): return (s << 127) | (e << 112) | (f & M112)
     lines = []
     # hardware_real: low 49 bits patterns x bit 49 parity x high fraction patterns x exponents
     lows = [0, 1, 2, (1 << 48) - 1, 1 << 48, (1 << 48) + 1, (1 << 49) - 1, (1 << 47), 3 << 47]
@@ -208,8 +223,6 @@ def conversions(N):
 
 def roots(N):
     mpmath.mp.prec = 300
-    M112 = (1 << 112) - 1
-    def qb(s, e, f): return (s << 127) | (e << 112) | (f & M112)
     def qf(v):  # Fraction/int -> bits
         return q_encode(0, Fraction(v))
     args = []
@@ -275,14 +288,6 @@ def check_exponentials(args):
     """exp and expm1 of the binary128 bit patterns args through the harness, against
     mpmath (exact bits where the result is infinite, zero or subnormal; else in ulps,
     bound 0.75) and libquadmath's special values; prints the counts and the worst."""
-    M112 = (1 << 112) - 1
-    def qb(s, e, f): return (s << 127) | (e << 112) | (f & M112)
-    def enc(v):  # mpf/Fraction -> nearest binary128 bits
-        if isinstance(v, mpmath.mpf):
-            m, e = mpmath.frexp(v)
-            v = Fraction(int(mpmath.ldexp(m, 400))) * Fraction(2) ** (e - 400)
-        v = Fraction(v)
-        return q_encode(1 if v < 0 else 0, abs(v))
     lines = ['ex %032X' % b for b in args] + ['em %032X' % b for b in args]
     out = run(lines)
     worst = {}; n = {}; bad = []; nint = {}
@@ -322,16 +327,6 @@ def check_exponentials(args):
 
 def exps(N, edges_only=False):
     mpmath.mp.prec = 320
-    M112 = (1 << 112) - 1
-    def qb(s, e, f): return (s << 127) | (e << 112) | (f & M112)
-    def enc(v):  # mpf/Fraction -> nearest binary128 bits
-        if isinstance(v, mpmath.mpf):
-            m, e = mpmath.frexp(v)
-            v = Fraction(int(mpmath.ldexp(m, 400))) * Fraction(2) ** (e - 400)
-        v = Fraction(v)
-        return q_encode(1 if v < 0 else 0, abs(v))
-    def nb(b, k):  # k-th neighbour in the ordering of magnitudes (same sign)
-        return b + k
     args = []
     specials = [0, 1 << 127, qb(0, 0x7FFF, 0), qb(1, 0x7FFF, 0), qb(0, 0x7FFF, 1 << 111),
                 qb(1, 0x7FFF, (1 << 111) | 77), qb(0, 0x7FFF, 5), qb(0, 0, 1), qb(1, 0, 1),
@@ -379,16 +374,6 @@ def exps(N, edges_only=False):
 
 def exp_edges(N):
     mpmath.mp.prec = 320
-    M112 = (1 << 112) - 1
-    def qb(s, e, f): return (s << 127) | (e << 112) | (f & M112)
-    def enc(v):  # mpf/Fraction -> nearest binary128 bits
-        if isinstance(v, mpmath.mpf):
-            m, e = mpmath.frexp(v)
-            v = Fraction(int(mpmath.ldexp(m, 400))) * Fraction(2) ** (e - 400)
-        v = Fraction(v)
-        return q_encode(1 if v < 0 else 0, abs(v))
-    def nb(b, k):  # k-th neighbour in the ordering of magnitudes (same sign)
-        return b + k
     args = []
     for e in range(-120, 15):       # every binade's edges, both signs
         b0 = enc(Fraction(2) ** e)
